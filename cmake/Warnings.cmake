@@ -1,0 +1,10 @@
+add_library(hullinspect_warnings INTERFACE)
+target_compile_options(hullinspect_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                       -Wno-sign-conversion)
+if(HULLINSPECT_WERROR)
+  target_compile_options(hullinspect_warnings INTERFACE -Werror)
+endif()
+if(HULLINSPECT_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()

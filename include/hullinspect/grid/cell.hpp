@@ -1,0 +1,26 @@
+#pragma once
+
+#include <compare>
+#include <cstdlib>
+
+namespace hullinspect::grid {
+
+/// A grid cell. x runs along the hull (0 = stern), y upward (0 = bottom).
+struct Cell {
+  int x = 0;
+  int y = 0;
+  friend constexpr bool operator==(Cell, Cell) = default;
+  /// Orders by (y, x): the model's tie-break order ("lowest (y, x)").
+  friend constexpr std::strong_ordering operator<=>(Cell a, Cell b) {
+    if (auto c = a.y <=> b.y; c != 0) return c;
+    return a.x <=> b.x;
+  }
+};
+
+constexpr int manhattan(Cell a, Cell b) { return std::abs(a.x - b.x) + std::abs(a.y - b.y); }
+
+/// The four neighbour offsets in a fixed order: east, west, north (up), south (down).
+inline constexpr int kNeighbourDx[4] = {1, -1, 0, 0};
+inline constexpr int kNeighbourDy[4] = {0, 0, 1, -1};
+
+}  // namespace hullinspect::grid

@@ -1,0 +1,62 @@
+#pragma once
+// The Partitioner stage: divides the hull among the UAVs (the assignment matrix A, eq. 3).
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hullinspect/core/options.hpp"
+#include "hullinspect/grid/grid.hpp"
+#include "hullinspect/world/hull.hpp"
+
+namespace hullinspect::partition {
+
+struct PartitionRequest {
+  const world::HullMask* hull = nullptr;
+  std::vector<grid::Cell> starts;  ///< one hull cell per UAV (already snapped), distinct
+  /// Optional weight per cell (size of the grid; > 0 on hull cells). Empty = every cell weighs 1.
+  grid::Grid<double> weights;
+  /// Optional share per UAV (positive, any scale). Empty = equal shares.
+  std::vector<double> shares;
+  std::uint64_t seed = 0;
+};
+
+struct Partition {
+  /// A: -1 not hull, k = cell assigned to UAV k.
+  grid::Grid<std::int16_t> owner;
+  std::vector<int> region_cells;       ///< cells per UAV
+  std::vector<double> region_weight;   ///< weight per UAV (= cells when unweighted)
+  std::vector<double> desired_weight;  ///< what each UAV should get
+  int iterations = 0;                  ///< partitioner iterations (0 for one-shot partitioners)
+  bool converged = true;               ///< met its balance goal with connected regions
+  double tolerance = 0;                ///< balance tolerance reached (weight units; cells if unweighted)
+  double seconds = 0;
+  std::vector<std::string> warnings;   ///< e.g. "returned the best connected partition found"
+};
+
+class Partitioner {
+ public:
+  virtual ~Partitioner() = default;
+  /// Returns a partition in which every hull cell has one owner and every region is 4-connected.
+  /// Throws Error when none can be produced.
+  virtual Partition partition(const PartitionRequest& request) const = 0;
+};
+
+struct PartitionerInfo {
+  std::string name;
+  std::string description;
+  std::vector<OptionSpec> options;
+  std::unique_ptr<Partitioner> (*make)(const OptionMap& options);
+};
+
+/// Every partitioner by name ("darp", "stripes").
+std::span<const PartitionerInfo> partitioner_registry();
+/// Throws ParameterError("partitioner", …) for an unknown name.
+std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const OptionMap& options = {});
+/// The default partitioner's name.
+inline constexpr std::string_view kDefaultPartitioner = "stripes";
+
+}  // namespace hullinspect::partition

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/waypoint_follower.hpp"
+
+namespace hullinspect::planners {
+
+struct LawnmowerOptions {
+  std::string partitioner{partition::kDefaultPartitioner};  ///< by name
+  OptionMap partitioner_options;
+  std::uint64_t partition_seed = 0;  ///< seed of the partitioner (not of the instance)
+};
+
+/// The baseline of SPEC §5.2: descend to z = 1 once, then sweep the UAV's region strip by strip
+/// (strips of s1 rows from the bottom, flown along their centre rows, bottom to top, each from its
+/// nearer end). Ignores the prior and everything sensed.
+class LawnmowerPlanner final : public Planner {
+ public:
+  explicit LawnmowerPlanner(LawnmowerOptions options) : options_(std::move(options)) {}
+  void start(const PlannerContext& context) override;
+  void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override;
+  const partition::Partition* partition() const override { return partition_.get(); }
+  void annotate(AnnotationSink& sink) const override;
+
+  /// The sweep of one region: the waypoints (strip ends) from `from`.
+  static std::vector<grid::Cell> sweep(const grid::Grid<std::int16_t>& owner, int uav, int s1,
+                                       grid::Cell from);
+
+ private:
+  LawnmowerOptions options_;
+  std::shared_ptr<const partition::Partition> partition_;
+  std::vector<WaypointFollower> followers_;
+  std::vector<sim::UavState> last_;
+};
+
+}  // namespace hullinspect::planners

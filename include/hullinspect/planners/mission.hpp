@@ -1,0 +1,39 @@
+#pragma once
+// Runs one mission: a simulator and a planner stepped together until completion or the time limit.
+
+#include <vector>
+
+#include "hullinspect/planners/planner.hpp"
+#include "hullinspect/sim/mission_result.hpp"
+#include "hullinspect/sim/simulator.hpp"
+#include "hullinspect/world/instance.hpp"
+
+namespace hullinspect::planners {
+
+/// Watches a mission step by step (trace recorders, invariant checkers).
+class MissionObserver {
+ public:
+  virtual ~MissionObserver() = default;
+  /// After t = 0's sensing and planner start.
+  virtual void on_start(const sim::Simulator& sim, const Planner& planner) = 0;
+  /// After every step (the simulator is at the new t).
+  virtual void on_step(const sim::Simulator& sim, const Planner& planner) = 0;
+};
+
+struct UavFailure {
+  int uav = 0;
+  int time = 0;  ///< from this step on the UAV neither moves nor senses
+};
+
+struct MissionOptions {
+  std::vector<MissionObserver*> observers;
+  std::vector<UavFailure> failures;  ///< test hook for robustness experiments
+  PartitionSource* partitions = nullptr;  ///< nullptr: compute partitions directly
+};
+
+/// Validates the parameters, runs the mission and returns its result.
+sim::MissionResult run_mission(const world::HullMask& hull, const world::Instance& instance,
+                               const world::MissionParams& params, Planner& planner,
+                               const MissionOptions& options = {});
+
+}  // namespace hullinspect::planners

@@ -1,0 +1,85 @@
+#pragma once
+// The Planner stage: one action per UAV per step, from what the UAVs know (never the ground truth).
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hullinspect/core/options.hpp"
+#include "hullinspect/grid/grid.hpp"
+#include "hullinspect/partition/partitioner.hpp"
+#include "hullinspect/sim/mission_result.hpp"
+#include "hullinspect/sim/planner_view.hpp"
+#include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/mission_params.hpp"
+
+namespace hullinspect::planners {
+
+/// Supplies partitions; the experiment runner passes a cache so that missions sharing hull, starts,
+/// n and partition seed compute the partition once.
+class PartitionSource {
+ public:
+  virtual ~PartitionSource() = default;
+  virtual std::shared_ptr<const partition::Partition> get(std::string_view partitioner,
+                                                          const OptionMap& options,
+                                                          const partition::PartitionRequest& request) = 0;
+};
+
+/// Computes every partition afresh.
+class DirectPartitionSource final : public PartitionSource {
+ public:
+  std::shared_ptr<const partition::Partition> get(std::string_view partitioner, const OptionMap& options,
+                                                  const partition::PartitionRequest& request) override;
+};
+
+/// What a planner knows before take-off.
+struct PlannerContext {
+  const world::HullMask& hull;
+  const world::MissionParams& params;
+  const grid::Grid<std::int8_t>& prior;  ///< C' (−1 not hull, 0, 1)
+  std::span<const grid::Cell> starts;    ///< the UAVs' start cells
+  PartitionSource& partitions;
+};
+
+/// Receives what a planner wants shown in traces and the viewer; only called when tracing.
+class AnnotationSink {
+ public:
+  virtual ~AnnotationSink() = default;
+  /// A UAV's mode (e.g. "cover", "inspect", "explore"), current target (x < 0: none) and plan
+  /// (waypoints still ahead).
+  virtual void uav(int k, std::string_view mode, grid::Cell target, std::span<const grid::Cell> plan) = 0;
+  /// A named set of cells (e.g. "frontiers"), as flat indices.
+  virtual void cells(std::string_view layer, std::span<const int> indices) = 0;
+};
+
+class Planner {
+ public:
+  virtual ~Planner() = default;
+  /// Called once before t = 0's decision.
+  virtual void start(const PlannerContext& context) = 0;
+  /// The main hook: fills one action per UAV from the view at time t.
+  virtual void decide(const sim::PlannerView& view, std::span<sim::Action> actions) = 0;
+  /// Counters for the mission result.
+  virtual sim::PlannerStats stats() const { return {}; }
+  /// The partition used, for partitioned planners (traces and viewer).
+  virtual const partition::Partition* partition() const { return nullptr; }
+  /// Reports modes, targets and plans; called after decide() when tracing.
+  virtual void annotate(AnnotationSink& /*sink*/) const {}
+};
+
+struct PlannerInfo {
+  std::string name;
+  std::string description;
+  std::vector<OptionSpec> options;
+  std::unique_ptr<Planner> (*make)(const OptionMap& options);
+};
+
+/// Every planner by name.
+std::span<const PlannerInfo> planner_registry();
+/// Throws ParameterError("algorithm", …) for an unknown name, or ("<name>.<option>", …).
+std::unique_ptr<Planner> make_planner(std::string_view name, const OptionMap& options = {});
+
+}  // namespace hullinspect::planners

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace hullinspect::sim {
+
+struct UavCounters {
+  int moves = 0;
+  int hovers = 0;
+  int plane_changes = 0;
+  int steps_z1 = 0;       ///< steps ending on plane 1 (not in transit)
+  int steps_z2 = 0;
+  int steps_transit = 0;  ///< steps spent changing plane
+};
+
+/// Counters that planners report (zeros where a planner has no such thing).
+struct PlannerStats {
+  long long tsp_solves = 0;
+  double tsp_seconds = 0;
+  double tsp_max_seconds = 0;
+  long long replans = 0;
+  long long assignments = 0;  ///< frontier assignments (Coop-Frontier)
+};
+
+struct MissionResult {
+  bool complete = false;   ///< m reached 100 before the time limit
+  std::optional<int> t_c;  ///< first t with c(t) = 100; empty if never reached
+  std::optional<int> t_m;  ///< first t with m(t) = 100; empty when incomplete
+  int steps = 0;           ///< last simulated t
+  int hull_cells = 0;
+  int corroded_cells = 0;  ///< #{C = 1}
+  /// Per t = 0..steps: corroded cells inspected and hull cells known (M ∈ {1, 3}).
+  std::vector<int> inspected_series;
+  std::vector<int> known_series;
+  std::vector<UavCounters> uavs;
+  long long observations = 0;            ///< hull-cell readings
+  long long redundant_observations = 0;  ///< readings that changed nothing and detected nothing
+  long long detections = 0;
+  double planner_seconds = 0;            ///< CPU time in the planner (start + decide)
+  PlannerStats planner;
+
+  double c_percent(int t) const;  ///< c(t), 100 when there is no corrosion
+  double m_percent(int t) const;  ///< m(t)
+  UavCounters totals() const;
+};
+
+}  // namespace hullinspect::sim

@@ -1,0 +1,82 @@
+#pragma once
+// The simulator owns the ground truth C and the mission map M. It applies one action per UAV per
+// step, senses (SPEC §3) and records the metrics incrementally (SPEC §4). It never rescans the grid
+// after construction and allocates nothing per step.
+
+#include <span>
+#include <vector>
+
+#include "hullinspect/grid/grid.hpp"
+#include "hullinspect/sim/mission_result.hpp"
+#include "hullinspect/sim/planner_view.hpp"
+#include "hullinspect/sim/types.hpp"
+#include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/mission_params.hpp"
+
+namespace hullinspect::sim {
+
+class Simulator {
+ public:
+  /// Places the UAVs on their start cells at start_z and senses (t = 0). `params` must be valid.
+  Simulator(const world::HullMask& hull, const world::Instance& instance,
+            const world::MissionParams& params);
+
+  /// Applies one action per UAV (ignored for UAVs in transit or failed), senses, advances t.
+  /// Throws LogicError if an action would leave the grid or the mission is already finished.
+  void step(std::span<const Action> actions);
+
+  /// Test hook: from step `from_time` on, UAV `uav` fails (stays put, never senses).
+  void fail_uav_at(int uav, int from_time);
+
+  int time() const { return time_; }
+  bool complete() const { return known_ == hull_cells_; }
+  bool finished() const { return complete() || time_ >= params_.time_limit; }
+  const world::MissionParams& params() const { return params_; }
+  const world::HullMask& hull() const { return hull_; }
+  int plane_change_steps() const { return uz_; }
+
+  /// What the UAVs know — the only thing planners see.
+  PlannerView view() const { return {time_, uavs_, map_, seen_, log_}; }
+  std::span<const UavState> uavs() const { return uavs_; }
+  const grid::Grid<std::int8_t>& map() const { return map_; }
+  /// Flat indices of the cells whose M changed in the last step (or at t = 0).
+  std::span<const int> changed_cells() const { return changed_; }
+  /// Actions applied in the last step (after ignoring busy and failed UAVs: those read kHover).
+  std::span<const Action> applied_actions() const { return applied_; }
+
+  double c_percent() const;
+  double m_percent() const;
+  int inspected_corroded() const { return inspected_; }
+  int known_cells() const { return known_; }
+
+  /// The mission's result so far (complete when finished()).
+  MissionResult result() const;
+
+ private:
+  void sense_all();
+  void sense(int uav);
+  void record_metrics();
+
+  const world::HullMask& hull_;
+  const grid::Grid<std::int8_t>& truth_;
+  world::MissionParams params_;
+  int uz_ = 1;
+  int time_ = 0;
+
+  grid::Grid<std::int8_t> map_;
+  grid::Grid<std::uint8_t> seen_;
+  std::vector<UavState> uavs_;
+  std::vector<int> fail_time_;
+  std::vector<Action> applied_;
+  SensingLog log_;
+  std::vector<int> changed_;
+
+  int hull_cells_ = 0;
+  int corroded_ = 0;
+  int inspected_ = 0;
+  int known_ = 0;
+  MissionResult result_;  // series and counters, filled as the mission runs
+};
+
+}  // namespace hullinspect::sim

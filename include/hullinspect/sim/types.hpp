@@ -1,0 +1,60 @@
+#pragma once
+// Mission-state vocabulary: map values (eq. 2), UAV state, actions and sensor readings.
+
+#include <cstdint>
+#include <string_view>
+
+#include "hullinspect/grid/cell.hpp"
+
+namespace hullinspect::sim {
+
+/// Values of the mission map M (eq. 2).
+inline constexpr std::int8_t kNotHull = -1;
+inline constexpr std::int8_t kUnknown = 0;
+inline constexpr std::int8_t kClean = 1;          ///< non-corroded, seen at z = 1 or 2
+inline constexpr std::int8_t kCorrosionSeen = 2;  ///< corroded, expected (prior) or detected at z = 2
+inline constexpr std::int8_t kInspected = 3;      ///< corroded, inspected at z = 1
+
+/// Bits of the `seen` flags the simulator keeps per cell.
+inline constexpr std::uint8_t kSeenAtZ2 = 1;
+inline constexpr std::uint8_t kSeenAtZ1 = 2;
+
+enum class Action : std::uint8_t {
+  kHover,
+  kNorth,  ///< y + 1 (up)
+  kSouth,  ///< y − 1 (down)
+  kEast,   ///< x + 1 (towards the bow)
+  kWest,   ///< x − 1 (towards the stern)
+  kChangePlane,
+};
+
+std::string_view to_string(Action a);
+
+/// The move that takes `from` one step towards `to` under the project's fixed Manhattan rule:
+/// first along x, then along y. kHover when from == to.
+Action step_towards(grid::Cell from, grid::Cell to);
+/// `c` moved by `a` (unchanged for hover and plane change).
+grid::Cell moved(grid::Cell c, Action a);
+
+struct UavState {
+  grid::Cell pos;
+  int z = 2;             ///< plane: 1 close-up, 2 detection (the departure plane during a change)
+  int transit_left = 0;  ///< steps left in a plane change; 0 = on a plane
+  bool active = true;    ///< false once the UAV failed (a frozen UAV neither moves nor senses)
+  bool in_transit() const { return transit_left > 0; }
+};
+
+/// Event bits of a reading.
+inline constexpr std::uint8_t kEventFirstSeen = 1;   ///< first observation of the cell by anyone
+inline constexpr std::uint8_t kEventDetection = 2;   ///< first sight of this corroded cell at z = 2
+inline constexpr std::uint8_t kEventInspection = 4;  ///< the cell turned to 3
+inline constexpr std::uint8_t kEventRedundant = 8;   ///< nothing new: M unchanged and no detection
+
+/// One hull cell in one UAV's footprint: what that UAV's camera reported.
+struct Reading {
+  int index = 0;                ///< flat cell index
+  std::int8_t value = 0;        ///< 1 clean, 2 corrosion seen from z = 2, 3 corrosion seen at z = 1
+  std::uint8_t events = 0;      ///< kEvent* bits
+};
+
+}  // namespace hullinspect::sim

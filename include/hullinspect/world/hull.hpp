@@ -1,0 +1,62 @@
+#pragma once
+// Hull masks: which cells of the a × b grid are part of the hull, and their loaders.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hullinspect/grid/grid.hpp"
+
+namespace hullinspect::world {
+
+/// Largest accepted grid side; larger masks are rejected as absurd.
+inline constexpr int kMaxGridSide = 4096;
+
+class HullMask {
+ public:
+  /// Validates the mask: non-empty, sides within [1, kMaxGridSide], hull cells 4-connected.
+  /// Throws InputError naming `source` on failure.
+  HullMask(grid::Grid<std::uint8_t> is_hull, std::string source);
+
+  int width() const { return mask_.width(); }
+  int height() const { return mask_.height(); }
+  bool is_hull(int x, int y) const { return mask_(x, y) != 0; }
+  bool is_hull(grid::Cell c) const { return mask_[c] != 0; }
+  bool is_hull(int index) const { return mask_[index] != 0; }
+  /// 1 for hull cells, 0 otherwise.
+  const grid::Grid<std::uint8_t>& mask() const { return mask_; }
+  int cell_count() const { return cell_count_; }
+  /// Flat indices of the hull cells in increasing (y, x) order.
+  const std::vector<int>& cells() const { return cells_; }
+  /// Where the mask came from (a path, or "builtin:default").
+  const std::string& source() const { return source_; }
+  /// The nearest hull cell to c by Manhattan distance; ties: lowest y, then lowest x.
+  grid::Cell snap(grid::Cell c) const;
+
+ private:
+  grid::Grid<std::uint8_t> mask_;
+  std::vector<int> cells_;
+  int cell_count_ = 0;
+  std::string source_;
+};
+
+/// The built-in 230 × 30 ship side profile (data/hulls/default.txt, compiled in).
+const HullMask& default_hull();
+
+/// Loads a hull by file name: "default" (or "builtin:default"), a text mask (see docs/formats.md),
+/// or an ASCII (P2) / binary (P5) PGM image. Throws InputError naming the file and line.
+HullMask load_hull(const std::filesystem::path& path);
+
+/// Parses a text mask: rows top (y = b-1) first, 'X' or '#' hull, '.' non-hull, lines starting
+/// with ';' are comments. `source` names the text in errors.
+HullMask parse_text_mask(std::string_view text, const std::string& source);
+
+/// Parses a P2 or P5 PGM; pixels with value > maxval/2 are hull; the first image row is y = b-1.
+HullMask parse_pgm_mask(std::string_view bytes, const std::string& source);
+
+/// Writes the mask in the text format (round-trips through parse_text_mask).
+std::string to_text_mask(const HullMask& hull);
+
+}  // namespace hullinspect::world

@@ -1,0 +1,69 @@
+#include "hullinspect/planners/lawnmower_planner.hpp"
+
+#include <algorithm>
+
+namespace hullinspect::planners {
+
+std::vector<grid::Cell> LawnmowerPlanner::sweep(const grid::Grid<std::int16_t>& owner, int uav,
+                                                int s1, grid::Cell from) {
+  std::vector<grid::Cell> waypoints;
+  const int b = owner.height();
+  grid::Cell at = from;
+  for (int y_begin = 0; y_begin < b; y_begin += s1) {
+    const int y_end = std::min(b, y_begin + s1);
+    int x_min = owner.width();
+    int x_max = -1;
+    for (int y = y_begin; y < y_end; ++y) {
+      for (int x = 0; x < owner.width(); ++x) {
+        if (owner(x, y) == uav) {
+          x_min = std::min(x_min, x);
+          x_max = std::max(x_max, x);
+        }
+      }
+    }
+    if (x_max < 0) continue;
+    const int row = std::min(y_begin + (s1 - 1) / 2, b - 1);
+    grid::Cell left{x_min, row};
+    grid::Cell right{x_max, row};
+    if (grid::manhattan(at, right) < grid::manhattan(at, left)) std::swap(left, right);
+    waypoints.push_back(left);
+    waypoints.push_back(right);
+    at = right;
+  }
+  return waypoints;
+}
+
+void LawnmowerPlanner::start(const PlannerContext& context) {
+  partition::PartitionRequest request;
+  request.hull = &context.hull;
+  request.starts.assign(context.starts.begin(), context.starts.end());
+  request.seed = options_.partition_seed;
+  partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
+  const int n = context.params.uavs;
+  followers_.assign(static_cast<std::size_t>(n), WaypointFollower{});
+  for (int k = 0; k < n; ++k) {
+    followers_[static_cast<std::size_t>(k)].assign(
+        sweep(partition_->owner, k, context.params.s1, context.starts[static_cast<std::size_t>(k)]));
+  }
+}
+
+void LawnmowerPlanner::decide(const sim::PlannerView& view, std::span<sim::Action> actions) {
+  last_.assign(view.uavs.begin(), view.uavs.end());
+  for (std::size_t k = 0; k < view.uavs.size(); ++k) {
+    const sim::UavState& u = view.uavs[k];
+    if (!u.active || u.in_transit()) continue;
+    actions[k] = u.z == 2 ? sim::Action::kChangePlane : followers_[k].next_action(u.pos);
+  }
+}
+
+void LawnmowerPlanner::annotate(AnnotationSink& sink) const {
+  for (std::size_t k = 0; k < followers_.size(); ++k) {
+    const auto& f = followers_[k];
+    const bool descending = k < last_.size() && (last_[k].z == 2 || last_[k].in_transit());
+    const auto plan = f.remaining();
+    sink.uav(static_cast<int>(k), descending ? "descend" : (plan.empty() ? "done" : "cover"),
+             f.target(), plan);
+  }
+}
+
+}  // namespace hullinspect::planners

@@ -1,0 +1,27 @@
+#include "hullinspect/sim/mission_result.hpp"
+
+namespace hullinspect::sim {
+
+double MissionResult::c_percent(int t) const {
+  if (corroded_cells == 0) return 100.0;
+  return 100.0 * inspected_series[static_cast<std::size_t>(t)] / corroded_cells;
+}
+
+double MissionResult::m_percent(int t) const {
+  return 100.0 * known_series[static_cast<std::size_t>(t)] / hull_cells;
+}
+
+UavCounters MissionResult::totals() const {
+  UavCounters total;
+  for (const auto& u : uavs) {
+    total.moves += u.moves;
+    total.hovers += u.hovers;
+    total.plane_changes += u.plane_changes;
+    total.steps_z1 += u.steps_z1;
+    total.steps_z2 += u.steps_z2;
+    total.steps_transit += u.steps_transit;
+  }
+  return total;
+}
+
+}  // namespace hullinspect::sim

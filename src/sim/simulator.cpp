@@ -1,0 +1,181 @@
+#include "hullinspect/sim/simulator.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::sim {
+
+Simulator::Simulator(const world::HullMask& hull, const world::Instance& instance,
+                     const world::MissionParams& params)
+    : hull_(hull), truth_(instance.truth), params_(params), uz_(params.plane_change_steps()) {
+  const int n = params.uavs;
+  map_ = grid::Grid<std::int8_t>(hull.width(), hull.height(), kNotHull);
+  seen_ = grid::Grid<std::uint8_t>(hull.width(), hull.height(), 0);
+  for (int i : hull.cells()) {
+    map_[i] = instance.prior[i] == 1 ? kCorrosionSeen : kUnknown;
+    if (truth_[i] == 1) ++corroded_;
+  }
+  hull_cells_ = hull.cell_count();
+
+  const auto starts = world::start_cells(params, hull);
+  uavs_.resize(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    uavs_[static_cast<std::size_t>(k)] = UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, true};
+  }
+  fail_time_.assign(static_cast<std::size_t>(n), -1);
+  applied_.assign(static_cast<std::size_t>(n), Action::kHover);
+
+  const int s = std::max(params.s1, params.s2);
+  log_.readings_.reserve(static_cast<std::size_t>(n) * s * s);
+  log_.begin_.assign(static_cast<std::size_t>(n) + 1, 0);
+  changed_.reserve(static_cast<std::size_t>(n) * s * s);
+
+  result_.hull_cells = hull_cells_;
+  result_.corroded_cells = corroded_;
+  result_.uavs.assign(static_cast<std::size_t>(n), UavCounters{});
+  const auto series_capacity = static_cast<std::size_t>(std::min(params.time_limit, 1 << 20)) + 1;
+  result_.inspected_series.reserve(series_capacity);
+  result_.known_series.reserve(series_capacity);
+
+  sense_all();
+  record_metrics();
+}
+
+void Simulator::fail_uav_at(int uav, int from_time) {
+  fail_time_.at(static_cast<std::size_t>(uav)) = from_time;
+  if (from_time <= time_) uavs_[static_cast<std::size_t>(uav)].active = false;
+}
+
+void Simulator::step(std::span<const Action> actions) {
+  if (finished()) throw LogicError(fmt::format("step() called on a finished mission (t = {})", time_));
+  if (actions.size() != uavs_.size()) {
+    throw LogicError(fmt::format("planner returned {} actions for {} UAVs", actions.size(), uavs_.size()));
+  }
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    UavState& u = uavs_[k];
+    UavCounters& count = result_.uavs[k];
+    if (fail_time_[k] >= 0 && time_ >= fail_time_[k]) u.active = false;
+    applied_[k] = Action::kHover;
+    if (!u.active) continue;
+    if (u.in_transit()) {
+      ++count.steps_transit;
+      if (--u.transit_left == 0) u.z = 3 - u.z;
+      continue;
+    }
+    const Action a = actions[k];
+    applied_[k] = a;
+    switch (a) {
+      case Action::kHover:
+        ++count.hovers;
+        break;
+      case Action::kChangePlane:
+        ++count.plane_changes;
+        ++count.steps_transit;
+        u.transit_left = uz_ - 1;
+        if (u.transit_left == 0) u.z = 3 - u.z;
+        break;
+      default: {
+        const grid::Cell next = moved(u.pos, a);
+        if (!map_.contains(next)) {
+          throw LogicError(fmt::format("UAV {} at ({}, {}) was told to move {} off the {} × {} grid at "
+                                       "t = {}",
+                                       k, u.pos.x, u.pos.y, to_string(a), map_.width(),
+                                       map_.height(), time_));
+        }
+        u.pos = next;
+        ++count.moves;
+      }
+    }
+    if (!u.in_transit()) ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
+  }
+  ++time_;
+  sense_all();
+  record_metrics();
+}
+
+void Simulator::sense_all() {
+  log_.readings_.clear();
+  changed_.clear();
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    log_.begin_[k] = static_cast<int>(log_.readings_.size());
+    const UavState& u = uavs_[k];
+    if (u.active && !u.in_transit()) sense(static_cast<int>(k));
+  }
+  log_.begin_[uavs_.size()] = static_cast<int>(log_.readings_.size());
+}
+
+void Simulator::sense(int uav) {
+  const UavState& u = uavs_[static_cast<std::size_t>(uav)];
+  const int half = (params_.footprint(u.z) - 1) / 2;
+  const int x0 = std::max(0, u.pos.x - half);
+  const int x1 = std::min(map_.width() - 1, u.pos.x + half);
+  const int y0 = std::max(0, u.pos.y - half);
+  const int y1 = std::min(map_.height() - 1, u.pos.y + half);
+  const std::uint8_t seen_bit = u.z == 2 ? kSeenAtZ2 : kSeenAtZ1;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const int i = map_.index(x, y);
+      const std::int8_t before = map_[i];
+      if (before == kNotHull) continue;
+      const bool corroded = truth_[i] == 1;
+      Reading r{i, kClean, 0};
+      if (seen_[i] == 0) r.events |= kEventFirstSeen;
+      std::int8_t after = before;
+      if (!corroded) {
+        after = kClean;
+      } else if (u.z == 1) {
+        after = kInspected;
+        r.value = kInspected;
+      } else {
+        r.value = kCorrosionSeen;
+        if (before != kInspected) after = kCorrosionSeen;
+        if ((seen_[i] & kSeenAtZ2) == 0) {
+          r.events |= kEventDetection;
+          ++result_.detections;
+        }
+      }
+      seen_[i] |= seen_bit;
+      if (after != before) {
+        if (after == kInspected) {
+          ++inspected_;
+          r.events |= kEventInspection;
+        }
+        if ((after == kClean || after == kInspected) && before != kClean && before != kInspected) {
+          ++known_;
+        }
+        map_[i] = after;
+        changed_.push_back(i);
+      } else if ((r.events & kEventDetection) == 0) {
+        r.events |= kEventRedundant;
+        ++result_.redundant_observations;
+      }
+      ++result_.observations;
+      log_.readings_.push_back(r);
+    }
+  }
+}
+
+void Simulator::record_metrics() {
+  result_.inspected_series.push_back(inspected_);
+  result_.known_series.push_back(known_);
+  if (!result_.t_c && inspected_ == corroded_) result_.t_c = time_;
+  if (!result_.t_m && known_ == hull_cells_) result_.t_m = time_;
+}
+
+double Simulator::c_percent() const {
+  return corroded_ == 0 ? 100.0 : 100.0 * inspected_ / corroded_;
+}
+
+double Simulator::m_percent() const { return 100.0 * known_ / hull_cells_; }
+
+MissionResult Simulator::result() const {
+  MissionResult r = result_;
+  r.steps = time_;
+  r.complete = complete();
+  return r;
+}
+
+}  // namespace hullinspect::sim

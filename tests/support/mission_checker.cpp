@@ -1,0 +1,83 @@
+#include "support/mission_checker.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace hullinspect::testing {
+
+void MissionChecker::fail(const std::string& what) {
+  if (failures_.size() < 10) failures_.push_back(what);
+}
+
+void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner&) {
+  last_map_ = sim.map();
+  last_uavs_.assign(sim.uavs().begin(), sim.uavs().end());
+  last_c_ = sim.c_percent();
+  last_m_ = sim.m_percent();
+  for (const auto& u : sim.uavs()) {
+    if (!sim.hull().is_hull(u.pos)) fail(fmt::format("UAV starts off the hull at ({}, {})", u.pos.x, u.pos.y));
+  }
+}
+
+namespace {
+bool forward(std::int8_t before, std::int8_t after) {
+  if (before == after) return true;
+  switch (before) {
+    case sim::kUnknown: return after == sim::kClean || after == sim::kCorrosionSeen || after == sim::kInspected;
+    case sim::kCorrosionSeen: return after == sim::kClean || after == sim::kInspected;
+    default: return false;
+  }
+}
+}  // namespace
+
+void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&) {
+  ++steps_;
+  const int t = sim.time();
+  const auto uavs = sim.uavs();
+  for (std::size_t k = 0; k < uavs.size(); ++k) {
+    const auto& before = last_uavs_[k];
+    const auto& after = uavs[k];
+    const int moved = grid::manhattan(before.pos, after.pos);
+    if (moved > 1) fail(fmt::format("t={} UAV {} jumped {} cells", t, k, moved));
+    if (moved == 1 && (before.in_transit() || !before.active)) {
+      fail(fmt::format("t={} UAV {} moved while changing plane or failed", t, k));
+    }
+    if (moved == 1 && before.z != after.z) fail(fmt::format("t={} UAV {} moved and changed plane", t, k));
+    if (!sim.map().contains(after.pos)) fail(fmt::format("t={} UAV {} off the grid", t, k));
+    if (after.z != 1 && after.z != 2) fail(fmt::format("t={} UAV {} on plane {}", t, k, after.z));
+    if (after.transit_left < 0 || after.transit_left >= sim.plane_change_steps()) {
+      fail(fmt::format("t={} UAV {} has {} transit steps left", t, k, after.transit_left));
+    }
+  }
+  const auto& map = sim.map();
+  std::set<int> changed(sim.changed_cells().begin(), sim.changed_cells().end());
+  int known = 0;
+  for (int i = 0; i < map.size(); ++i) {
+    if (!forward(last_map_[i], map[i])) {
+      fail(fmt::format("t={} cell ({}, {}) went back from M={} to M={}", t, map.cell(i).x,
+                       map.cell(i).y, last_map_[i], map[i]));
+    }
+    if ((last_map_[i] != map[i]) != (changed.count(i) == 1)) {
+      fail(fmt::format("t={} changed-cell list wrong at ({}, {})", t, map.cell(i).x, map.cell(i).y));
+    }
+    if (map[i] == sim::kClean || map[i] == sim::kInspected) ++known;
+  }
+  if (known != sim.known_cells()) fail(fmt::format("t={} known cells {} but rescan finds {}", t, sim.known_cells(), known));
+  if (sim.c_percent() < last_c_) fail(fmt::format("t={} c decreased", t));
+  if (sim.m_percent() < last_m_) fail(fmt::format("t={} m decreased", t));
+  last_c_ = sim.c_percent();
+  last_m_ = sim.m_percent();
+  last_map_ = map;
+  last_uavs_.assign(uavs.begin(), uavs.end());
+}
+
+::testing::AssertionResult MissionChecker::ok() const {
+  if (failures_.empty()) return ::testing::AssertionSuccess() << steps_ << " steps checked";
+  auto r = ::testing::AssertionFailure();
+  for (const auto& f : failures_) r << f << "\n";
+  return r;
+}
+
+}  // namespace hullinspect::testing

@@ -1,0 +1,34 @@
+#pragma once
+// Shared invariant checker for whole missions: attach it as a MissionObserver, then assert ok().
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "hullinspect/planners/mission.hpp"
+
+namespace hullinspect::testing {
+
+/// Checks after every step: each UAV moved at most one cell (none while changing plane or failed),
+/// stayed on the grid with z ∈ {1, 2}; M only moved forward (0 → 1/2/3, 2 → 1/3, 1 and 3 final,
+/// −1 fixed); the simulator's changed-cell list is exactly the set of cells that changed; c and m
+/// never decrease; the simulator's counters agree with a rescan of M.
+class MissionChecker final : public planners::MissionObserver {
+ public:
+  void on_start(const sim::Simulator& sim, const planners::Planner& planner) override;
+  void on_step(const sim::Simulator& sim, const planners::Planner& planner) override;
+  ::testing::AssertionResult ok() const;
+  int steps_checked() const { return steps_; }
+
+ private:
+  void fail(const std::string& what);
+  grid::Grid<std::int8_t> last_map_;
+  std::vector<sim::UavState> last_uavs_;
+  double last_c_ = 0;
+  double last_m_ = 0;
+  int steps_ = 0;
+  std::vector<std::string> failures_;
+};
+
+}  // namespace hullinspect::testing
