@@ -1,1 +1,61 @@
-int main() { return 0; }
+// hullinspect: plan and simulate multi-UAV two-resolution hull inspection missions.
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "commands.hpp"
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::cli {
+
+std::string option_name(const std::string& parameter) {
+  std::string name = parameter;
+  if (auto dot = name.rfind('.'); dot != std::string::npos) name = name.substr(dot + 1);
+  for (char& c : name) {
+    if (c == '_') c = '-';
+  }
+  return "--" + name;
+}
+
+}  // namespace hullinspect::cli
+
+int main(int argc, char** argv) {
+  using namespace hullinspect;
+  CLI::App app{"hullinspect: multi-UAV two-resolution hull inspection planner and simulator"};
+  app.set_version_flag("--version", std::string("hullinspect ") + HULLINSPECT_VERSION);
+  app.require_subcommand(1);
+  cli::CommandAction action;
+  cli::add_run_command(app, action);
+  cli::add_partition_command(app, action);
+  cli::add_tsp_command(app, action);
+  cli::add_experiment_commands(app, action);
+  cli::add_view_command(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string message = e.what();
+    if (auto nl = message.find('\n'); nl != std::string::npos) message.resize(nl);
+    std::cerr << "hullinspect: " << message << " (see --help)\n";
+    return cli::kExitBadInput;
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const ParameterError& e) {
+    std::cerr << "hullinspect: " << cli::option_name(e.name()) << ": " << e.problem() << "\n";
+    return cli::kExitBadInput;
+  } catch (const InputError& e) {
+    std::cerr << "hullinspect: " << e.what() << "\n";
+    return cli::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "hullinspect: " << e.what() << "\n";
+    return cli::kExitFailure;
+  }
+}

@@ -1,0 +1,41 @@
+#pragma once
+// Mission options shared by `run` and `view`-style commands: fleet, camera, instance, planner.
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/world/hull.hpp"
+
+namespace hullinspect::cli {
+
+struct MissionArgs {
+  std::string algorithm = "lawnmower";
+  std::string hull = "default";
+  std::string scenario;
+  int uavs = 4;
+  int s1 = 5;
+  int s2 = 7;
+  double theta = 90.0;
+  int start_z = 2;
+  std::vector<std::string> starts;
+  std::uint64_t seed = 1;
+  std::optional<double> p_c, p_tp, p_fp, front_p_c;
+  std::optional<int> l_c, front_l_c;
+  int time_limit = 20000;
+  std::optional<std::string> partitioner, partition_seed, tsp_solver, r1, r2, alpha, beta;
+  std::vector<std::string> planner_options;  // key=value
+};
+
+void add_mission_options(CLI::App& cmd, MissionArgs& args);
+world::HullMask load_mission_hull(const MissionArgs& args);
+/// Turns the arguments into a spec; throws ParameterError naming the option.
+planners::MissionSpec build_spec(const MissionArgs& args, const world::HullMask& hull);
+
+/// Writes the HTML replay viewer for a trace (implemented with the view command).
+void write_viewer_html(const nlohmann::json& trace, const std::string& path);
+
+}  // namespace hullinspect::cli

@@ -1,0 +1,96 @@
+// hullinspect run: one mission, printed as a summary or one JSON object, optionally traced.
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <optional>
+
+#include "commands.hpp"
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/result_json.hpp"
+#include "hullinspect/io/trace_recorder.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/planners/scenario.hpp"
+#include "mission_options.hpp"
+
+namespace hullinspect::cli {
+
+namespace {
+
+struct RunArgs {
+  MissionArgs mission;
+  bool json = false;
+  std::string trace_path;
+  std::string html_path;
+};
+
+void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
+  const auto total = r.totals();
+  std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
+                           spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
+                           r.complete ? "complete" : "INCOMPLETE (time limit reached)");
+  auto time = [](const std::optional<int>& t) { return t ? fmt::format("{} s", *t) : std::string("—"); };
+  std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
+                           time(r.t_m), r.corroded_cells, r.hull_cells);
+  std::cout << fmt::format(
+      "  moves {}, plane changes {}, hovers {}, redundant observations {} of {}\n", total.moves,
+      total.plane_changes, total.hovers, r.redundant_observations, r.observations);
+  std::cout << fmt::format("  planner time {:.2f} ms", r.planner_seconds * 1e3);
+  if (r.planner.tsp_solves > 0) {
+    std::cout << fmt::format(", {} TSP solves ({:.2f} ms, max {:.3f} ms)", r.planner.tsp_solves,
+                             r.planner.tsp_seconds * 1e3, r.planner.tsp_max_seconds * 1e3);
+  }
+  if (r.planner.replans > 0) std::cout << fmt::format(", {} re-plans", r.planner.replans);
+  std::cout << "\n";
+}
+
+int run(const RunArgs& args) {
+  const world::HullMask hull = load_mission_hull(args.mission);
+  const planners::MissionSpec spec = build_spec(args.mission, hull);
+  planners::validate(spec, hull);
+  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
+  const bool tracing = !args.trace_path.empty() || !args.html_path.empty();
+  std::optional<io::TraceRecorder> recorder;
+  planners::MissionOptions options;
+  if (tracing) {
+    recorder.emplace(instance, io::spec_json(spec, hull.source()));
+    options.observers.push_back(&*recorder);
+  }
+  const sim::MissionResult result = planners::run_mission(hull, instance, spec.params, *planner, options);
+  if (tracing) {
+    const auto trace = recorder->finish(result);
+    if (!args.trace_path.empty()) io::write_file_atomic(args.trace_path, trace.dump() + "\n");
+    if (!args.html_path.empty()) write_viewer_html(trace, args.html_path);
+  }
+  if (args.json) {
+    std::cout << io::result_json(spec, result).dump() << "\n";
+  } else {
+    print_summary(spec, result);
+  }
+  return result.complete ? 0 : 3;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, CommandAction& action) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* cmd = app.add_subcommand("run", "Simulate one mission and print its result");
+  cmd->footer(
+      "Exit status: 0 complete, 3 incomplete (time limit), 2 invalid input, 1 other failure.\n"
+      "Example: hullinspect run --algorithm lawnmower --uavs 4 --s2 9 --seed 7 --json");
+  add_mission_options(*cmd, args->mission);
+  cmd->add_flag("--json", args->json,
+                "Print one JSON object (algorithm, uavs, s1, s2, seed, complete, T_c, T_m, moves, "
+                "plane_changes, hovers, redundant_observations, planner_seconds, …)");
+  cmd->add_option("--trace", args->trace_path,
+                  "Write the mission trace (JSON, see docs/formats.md) to FILE")
+      ->type_name("FILE");
+  cmd->add_option("--html", args->html_path,
+                  "Write a self-contained HTML replay of the mission to FILE")
+      ->type_name("FILE");
+  cmd->callback([args, &action] { action = [args] { return run(*args); }; });
+}
+
+}  // namespace hullinspect::cli

@@ -1,0 +1,30 @@
+#pragma once
+// Everything that defines one mission, as the CLI and the experiment runner state it.
+
+#include <cstdint>
+#include <string>
+
+#include "hullinspect/core/options.hpp"
+#include "hullinspect/planners/mission.hpp"
+#include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/mission_params.hpp"
+
+namespace hullinspect::planners {
+
+struct MissionSpec {
+  std::string algorithm = "lawnmower";
+  OptionMap planner_options;
+  world::MissionParams params;
+  world::CorrosionParams corrosion;  ///< zones empty = one default zone
+  std::uint64_t seed = 1;
+};
+
+/// Validates `spec` against `hull` (ParameterError naming the field) — params, corrosion, the
+/// algorithm name and its options — without running anything.
+void validate(const MissionSpec& spec, const world::HullMask& hull);
+
+/// Draws the instance, builds the planner and runs the mission.
+sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
+                               const MissionOptions& options = {});
+
+}  // namespace hullinspect::planners

@@ -1,0 +1,5 @@
+#pragma once
+
+namespace hullinspect {
+inline constexpr const char* kVersion = HULLINSPECT_VERSION;
+}

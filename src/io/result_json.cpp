@@ -1,0 +1,57 @@
+#include "hullinspect/io/result_json.hpp"
+
+namespace hullinspect::io {
+
+using nlohmann::json;
+
+json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r) {
+  const auto total = r.totals();
+  json j;
+  j["algorithm"] = spec.algorithm;
+  j["uavs"] = spec.params.uavs;
+  j["s1"] = spec.params.s1;
+  j["s2"] = spec.params.s2;
+  j["seed"] = spec.seed;
+  j["complete"] = r.complete;
+  j["T_c"] = r.t_c ? json(*r.t_c) : json(nullptr);
+  j["T_m"] = r.t_m ? json(*r.t_m) : json(nullptr);
+  j["steps"] = r.steps;
+  j["moves"] = total.moves;
+  j["plane_changes"] = total.plane_changes;
+  j["hovers"] = total.hovers;
+  j["redundant_observations"] = r.redundant_observations;
+  j["observations"] = r.observations;
+  j["corroded_cells"] = r.corroded_cells;
+  j["hull_cells"] = r.hull_cells;
+  j["planner_seconds"] = r.planner_seconds;
+  j["tsp_solves"] = r.planner.tsp_solves;
+  j["tsp_seconds"] = r.planner.tsp_seconds;
+  j["tsp_max_seconds"] = r.planner.tsp_max_seconds;
+  j["replans"] = r.planner.replans;
+  j["assignments"] = r.planner.assignments;
+  return j;
+}
+
+json spec_json(const planners::MissionSpec& spec, const std::string& hull_source) {
+  json j;
+  j["algorithm"] = spec.algorithm;
+  j["planner_options"] = spec.planner_options;
+  j["uavs"] = spec.params.uavs;
+  j["s1"] = spec.params.s1;
+  j["s2"] = spec.params.s2;
+  j["theta"] = spec.params.theta_deg;
+  j["start_z"] = spec.params.start_z;
+  j["time_limit"] = spec.params.time_limit;
+  j["seed"] = spec.seed;
+  j["hull"] = hull_source;
+  json zones = json::array();
+  for (const auto& z : spec.corrosion.zones) {
+    zones.push_back({{"x_begin", z.x_begin}, {"x_end", z.x_end}, {"p_c", z.p_c}, {"l_c", z.l_c}});
+  }
+  j["zones"] = std::move(zones);
+  j["p_tp"] = spec.corrosion.p_tp;
+  j["p_fp"] = spec.corrosion.p_fp;
+  return j;
+}
+
+}  // namespace hullinspect::io

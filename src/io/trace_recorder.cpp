@@ -1,0 +1,149 @@
+#include "hullinspect/io/trace_recorder.hpp"
+
+#include <algorithm>
+
+#include "hullinspect/version.hpp"
+
+namespace hullinspect::io {
+
+using nlohmann::json;
+
+namespace {
+
+// Rows of a matrix as strings, rows[y] with y = 0 the bottom; `symbol` maps a value to a character.
+template <class T, class F>
+json rows(const grid::Grid<T>& m, F symbol) {
+  json out = json::array();
+  for (int y = 0; y < m.height(); ++y) {
+    std::string row;
+    row.reserve(static_cast<std::size_t>(m.width()));
+    for (int x = 0; x < m.width(); ++x) row += symbol(m(x, y));
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+char matrix_symbol(std::int8_t v) { return v < 0 ? '.' : static_cast<char>('0' + v); }
+
+json uav_states(const sim::Simulator& sim) {
+  json u = json::array();
+  for (const auto& s : sim.uavs()) {
+    u.push_back(s.pos.x);
+    u.push_back(s.pos.y);
+    u.push_back(s.z);
+    u.push_back(s.transit_left);
+    u.push_back(s.active ? 1 : 0);
+  }
+  return u;
+}
+
+}  // namespace
+
+TraceRecorder::TraceRecorder(const world::Instance& instance, json parameters) : instance_(instance) {
+  trace_["format"] = "hullinspect-trace";
+  trace_["version"] = 1;
+  trace_["generator"] = std::string("hullinspect ") + kVersion;
+  trace_["parameters"] = std::move(parameters);
+}
+
+void TraceRecorder::uav(int k, std::string_view mode, grid::Cell target, std::span<const grid::Cell> plan) {
+  json a;
+  a["mode"] = mode;
+  a["target"] = target.x < 0 ? json(nullptr) : json::array({target.x, target.y});
+  json p = json::array();
+  for (const auto& c : plan) p.push_back(json::array({c.x, c.y}));
+  a["plan"] = std::move(p);
+  auto uk = static_cast<std::size_t>(k);
+  if (last_uav_.size() <= uk) last_uav_.resize(uk + 1);
+  if (last_uav_[uk] != a) {
+    pending_uavs_[std::to_string(k)] = a;
+    last_uav_[uk] = std::move(a);
+  }
+}
+
+void TraceRecorder::cells(std::string_view layer, std::span<const int> indices) {
+  std::vector<int> sorted(indices.begin(), indices.end());
+  std::sort(sorted.begin(), sorted.end());
+  auto it = std::find_if(last_layers_.begin(), last_layers_.end(),
+                         [&](const auto& l) { return l.first == layer; });
+  if (it == last_layers_.end()) {
+    last_layers_.emplace_back(std::string(layer), std::vector<int>{});
+    it = std::prev(last_layers_.end());
+  }
+  if (it->second != sorted) {
+    pending_layers_[std::string(layer)] = sorted;
+    it->second = std::move(sorted);
+  }
+}
+
+json TraceRecorder::frame(const sim::Simulator& sim, const planners::Planner& planner) {
+  json f;
+  f["t"] = sim.time();
+  f["u"] = uav_states(sim);
+  json changes = json::array();
+  for (int i : sim.changed_cells()) {
+    changes.push_back(i);
+    changes.push_back(sim.map()[i]);
+  }
+  f["c"] = std::move(changes);
+  pending_uavs_ = json::object();
+  pending_layers_ = json::object();
+  planner.annotate(*this);
+  if (!pending_uavs_.empty()) f["p"] = std::move(pending_uavs_);
+  if (!pending_layers_.empty()) f["l"] = std::move(pending_layers_);
+  return f;
+}
+
+void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner& planner) {
+  const auto& hull = sim.hull();
+  trace_["grid"] = {{"width", hull.width()}, {"height", hull.height()},
+                    {"cell_size_m", sim.params().cell_size_m}};
+  trace_["plane_change_steps"] = sim.plane_change_steps();
+  trace_["footprint"] = {sim.params().s1, sim.params().s2};
+  trace_["truth"] = rows(instance_.truth, matrix_symbol);
+  trace_["prior"] = rows(instance_.prior, matrix_symbol);
+  if (const auto* p = planner.partition()) {
+    trace_["partition"] = rows(p->owner, [](std::int16_t v) {
+      return v < 0 ? '.' : static_cast<char>(v < 10 ? '0' + v : 'A' + (v - 10));
+    });
+  } else {
+    trace_["partition"] = nullptr;
+  }
+  // The map before t = 0's sensing is the prior; frame 0 holds the changes of t = 0's sensing.
+  json map0 = rows(sim.map(), matrix_symbol);
+  for (int i : sim.changed_cells()) {
+    const auto c = sim.map().cell(i);
+    map0[static_cast<std::size_t>(c.y)].get_ref<std::string&>()[static_cast<std::size_t>(c.x)] =
+        matrix_symbol(instance_.prior[i] == 1 ? sim::kCorrosionSeen : sim::kUnknown);
+  }
+  trace_["initial_map"] = std::move(map0);
+  steps_ = json::array();
+  steps_.push_back(frame(sim, planner));
+}
+
+void TraceRecorder::on_step(const sim::Simulator& sim, const planners::Planner& planner) {
+  steps_.push_back(frame(sim, planner));
+}
+
+json TraceRecorder::finish(const sim::MissionResult& result) const {
+  json t = trace_;
+  t["uav_fields"] = {"x", "y", "z", "transit_left", "active"};
+  t["frames"] = steps_;
+  t["series"] = {{"inspected", result.inspected_series}, {"known", result.known_series}};
+  json r;
+  r["complete"] = result.complete;
+  r["T_c"] = result.t_c ? json(*result.t_c) : json(nullptr);
+  r["T_m"] = result.t_m ? json(*result.t_m) : json(nullptr);
+  r["steps"] = result.steps;
+  r["hull_cells"] = result.hull_cells;
+  r["corroded_cells"] = result.corroded_cells;
+  const auto total = result.totals();
+  r["moves"] = total.moves;
+  r["plane_changes"] = total.plane_changes;
+  r["hovers"] = total.hovers;
+  r["redundant_observations"] = result.redundant_observations;
+  t["result"] = std::move(r);
+  return t;
+}
+
+}  // namespace hullinspect::io

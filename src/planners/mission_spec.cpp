@@ -1,0 +1,19 @@
+#include "hullinspect/planners/mission_spec.hpp"
+
+namespace hullinspect::planners {
+
+void validate(const MissionSpec& spec, const world::HullMask& hull) {
+  world::validate(spec.params, hull);
+  world::validate(spec.corrosion, hull);
+  make_planner(spec.algorithm, spec.planner_options);
+}
+
+sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
+                               const MissionOptions& options) {
+  validate(spec, hull);
+  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto planner = make_planner(spec.algorithm, spec.planner_options);
+  return run_mission(hull, instance, spec.params, *planner, options);
+}
+
+}  // namespace hullinspect::planners
