@@ -27,7 +27,7 @@
   ];
   const REGION_TINT = 0.62; // share of white mixed into a region's colour for explored cells
   // UAV k is drawn in a dark shade of region k's colour.
-  const UAV_SHADE = 0.45;
+  const UAV_SHADE = 0.3;
   const FOOTPRINT_FILL = 'rgba(40, 120, 255, 0.22)';
   const LAYER_COLORS = {frontiers: 'rgba(255, 105, 97, 0.62)'};
   const EXTRA_LAYER_COLORS = [
