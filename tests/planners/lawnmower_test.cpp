@@ -76,6 +76,7 @@ TEST(Lawnmower, MissionTimeIsDescentPlusSweep) {
   // n = 1 on the default hull: the sweep is u_z + the waypoint path; T_m cannot exceed it.
   MissionSpec spec;
   spec.params.uavs = 1;
+  spec.planner_options["partitioner"] = "stripes";
   const auto r = run_mission(spec, world::default_hull());
   partition::PartitionRequest request;
   request.hull = &world::default_hull();
