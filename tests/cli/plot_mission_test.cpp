@@ -2,13 +2,14 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "support/cli_runner.hpp"
 
 namespace {
 
@@ -29,15 +30,10 @@ int shell(const std::string& command) {
 class PlotMission : public ::testing::Test {
  protected:
   void SetUp() override {
-    const char* cli = std::getenv("HULLINSPECT_CLI");
     const char* source = std::getenv("HULLINSPECT_SOURCE_DIR");
-    ASSERT_NE(cli, nullptr) << "set HULLINSPECT_CLI (CTest does)";
-    ASSERT_NE(source, nullptr) << "set HULLINSPECT_SOURCE_DIR (CTest does)";
-    cli_ = cli;
-    script_ = fs::path(source) / "tools" / "plot_mission.py";
-    dir_ = fs::temp_directory_path() / ("hullinspect-plot-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    cli_ = hullinspect::testing::cli_path();
+    script_ = fs::path(source != nullptr ? source : HULLINSPECT_SOURCE_DIR) / "tools" / "plot_mission.py";
+    dir_ = hullinspect::testing::make_temp_dir("plot-mission");
   }
   void TearDown() override { fs::remove_all(dir_); }
 

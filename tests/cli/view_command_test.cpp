@@ -1,120 +1,106 @@
-// `hullinspect view` and `run --html` end to end: the built CLI (HULLINSPECT_CLI) on real files.
+// `hullinspect view` and `run --html` end to end: the built CLI on real files.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "support/cli_runner.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
+using hullinspect::testing::make_temp_dir;
+using hullinspect::testing::run_cli;
 
-struct Outcome {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
-class ViewCommand : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const char* cli = std::getenv("HULLINSPECT_CLI");
-    ASSERT_NE(cli, nullptr) << "set HULLINSPECT_CLI to the hullinspect binary (CTest does)";
-    cli_ = cli;
-    dir_ = fs::temp_directory_path() /
-           ("hullinspect-view-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+std::size_t files_in(const fs::path& dir) {
+  return static_cast<std::size_t>(
+      std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
+}
 
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
-  Outcome run(const std::string& args) const {
-    const auto out = dir_ / "stdout.txt";
-    const auto err = dir_ / "stderr.txt";
-    const std::string command =
-        "'" + cli_ + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-    const int raw = std::system(command.c_str());
-    Outcome o;
-    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    o.out = slurp(out);
-    o.err = slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return o;
-  }
-
-  // Files in the test folder, to see that a failed command left nothing behind.
-  std::size_t files() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}));
-  }
-
-  std::string cli_;
-  fs::path dir_;
-};
-
-TEST_F(ViewCommand, WritesTheSamePageAsRunHtml) {
-  const auto trace = dir_ / "m.json";
-  const auto direct = dir_ / "direct.html";
-  auto r = run("run -n 3 --seed 4 --trace '" + trace.string() + "' --html '" + direct.string() + "'");
+TEST(ViewCommand, WritesTheSamePageAsRunHtml) {
+  const fs::path dir = make_temp_dir("view-same");
+  const auto trace = (dir / "m.json").string();
+  const auto direct = (dir / "direct.html").string();
+  const auto viewed = (dir / "v.html").string();
+  auto r = run_cli({"run", "-n", "3", "--seed", "4", "--trace", trace, "--html", direct});
   ASSERT_EQ(r.status, 0) << r.err;
-  r = run("view '" + trace.string() + "' --out '" + (dir_ / "v.html").string() + "'");
+  r = run_cli({"view", trace, "--out", viewed});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  EXPECT_EQ(r.out.rfind("wrote " + (dir_ / "v.html").string() + " (", 0), 0u) << r.out;
-  const std::string html = slurp(dir_ / "v.html");
+  EXPECT_EQ(r.out.rfind("wrote " + viewed + " (", 0), 0u) << r.out;
+  const std::string html = slurp(viewed);
   EXPECT_EQ(html, slurp(direct));
   EXPECT_NE(html.find(R"("format":"hullinspect-trace")"), std::string::npos);
   // Without --out the page goes beside the trace.
-  r = run("view '" + trace.string() + "'");
+  r = run_cli({"view", trace});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(slurp(dir_ / "m.html"), html);
+  EXPECT_EQ(slurp(dir / "m.html"), html);
+  fs::remove_all(dir);
 }
 
-TEST_F(ViewCommand, MissingTraceIsOneLineAndExit2) {
-  const auto missing = dir_ / "missing.json";
-  const auto r = run("view '" + missing.string() + "' --out '" + (dir_ / "x.html").string() + "'");
+TEST(ViewCommand, MissingTraceIsOneLineAndExit2) {
+  const fs::path dir = make_temp_dir("view-missing");
+  const auto missing = (dir / "missing.json").string();
+  const auto r = run_cli({"view", missing, "--out", (dir / "x.html").string()});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + missing.string() + ": cannot open the file\n");
-  EXPECT_EQ(files(), 0u);
+  EXPECT_EQ(r.err, "hullinspect: " + missing + ": cannot open the file\n");
+  EXPECT_EQ(files_in(dir), 0u);
+  fs::remove_all(dir);
 }
 
-TEST_F(ViewCommand, MalformedTraceIsOneLineAndWritesNothing) {
-  const auto bad = dir_ / "bad.json";
+TEST(ViewCommand, MalformedTraceIsOneLineAndWritesNothing) {
+  const fs::path dir = make_temp_dir("view-malformed");
+  const auto bad = (dir / "bad.json").string();
+  const auto out = (dir / "x.html").string();
   std::ofstream(bad) << "{\"format\": \"hullinspect-trace\", \"version\": 1}\n";
-  auto r = run("view '" + bad.string() + "' --out '" + (dir_ / "x.html").string() + "'");
+  auto r = run_cli({"view", bad, "--out", out});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + bad.string() + ": parameters: missing\n");
+  EXPECT_EQ(r.err, "hullinspect: " + bad + ": parameters: missing\n");
 
   std::ofstream(bad) << "[1, 2,";
-  r = run("view '" + bad.string() + "' --out '" + (dir_ / "x.html").string() + "'");
+  r = run_cli({"view", bad, "--out", out});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + bad.string() +
+  EXPECT_EQ(r.err, "hullinspect: " + bad +
                        ":1: not a JSON trace: syntax error while parsing value - unexpected end of "
                        "input; expected '[', '{', or a literal\n");
-  EXPECT_EQ(files(), 1u);  // only bad.json: no page, no temporary file
+  EXPECT_EQ(files_in(dir), 1u);  // only bad.json: no page, no temporary file
+  fs::remove_all(dir);
 }
 
-TEST_F(ViewCommand, UnwritableOutputIsOneLineAndExit2) {
-  const auto trace = dir_ / "m.json";
-  ASSERT_EQ(run("run -n 2 --trace '" + trace.string() + "'").status, 0);
-  const auto out = dir_ / "no-such-folder" / "x.html";
-  const auto r = run("view '" + trace.string() + "' --out '" + out.string() + "'");
+TEST(ViewCommand, UnwritableOutputIsOneLineAndExit2) {
+  const fs::path dir = make_temp_dir("view-unwritable");
+  const auto trace = (dir / "m.json").string();
+  ASSERT_EQ(run_cli({"run", "-n", "2", "--trace", trace}).status, 0);
+  const auto out = (dir / "no-such-folder" / "x.html").string();
+  const auto r = run_cli({"view", trace, "--out", out});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err.rfind("hullinspect: " + out.string() + ": cannot write", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("hullinspect: " + out + ": cannot write", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  fs::remove_all(dir);
+}
+
+TEST(ViewCommand, RefusesToOverwriteTheTrace) {
+  const fs::path dir = make_temp_dir("view-overwrite");
+  const auto trace = (dir / "m.html").string();
+  ASSERT_EQ(run_cli({"run", "-n", "2", "--trace", trace}).status, 0);
+  const std::string before = slurp(trace);
+  const auto r = run_cli({"view", trace});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + trace +
+                       ": the output would overwrite the trace; choose --out FILE\n");
+  EXPECT_EQ(slurp(trace), before);
+  fs::remove_all(dir);
 }
 
 }  // namespace
