@@ -307,7 +307,8 @@
                          'marker'), 'UAV changing plane']);
       items.push([swatch(`border-color:${c0}`, 'line'), 'recent path at z = 1']);
       items.push([swatch(`border-color:${c0}`, 'line dashed'), 'recent path at z = 2']);
-      items.push([swatch(`border-color:${c0};opacity:0.7`, 'line dashed'), 'plan (x first, then y)']);
+      items.push([swatch(`border-color:${c0};border-top-width:1px;opacity:0.6`, 'line'),
+        'plan: waypoints ahead (x first, then y)']);
       if (this.replay.owner && this.show.regions) {
         items.push([swatch('border-color:#111', 'line'), 'region boundary']);
       }
@@ -677,25 +678,35 @@
 
     markerRadius() { return Math.max(4.5, Math.min(10, this.cellPx * 0.9)); }
 
-    // The last PATH_LENGTH steps: solid where the UAV was at z = 1, dashed at z = 2, fading out.
+    // The last PATH_LENGTH steps: solid where the UAV was at z = 1, dashed at z = 2, older steps
+    // fainter. Segments are batched into one path per (age bucket, plane) to keep strokes few.
     drawPaths(ctx, t) {
       const r = this.replay;
       const from = Math.max(0, t - PATH_LENGTH);
+      const buckets = 4;
       ctx.lineCap = 'round';
       for (let k = 0; k < r.uavCount; ++k) {
         ctx.strokeStyle = uavColor(k);
-        for (let i = from; i < t; ++i) {
-          const a = r.uavState(i, k);
-          const b = r.uavState(i + 1, k);
-          if (a.x === b.x && a.y === b.y) continue;
-          const closeUp = a.z === 1 && a.transit === 0 && b.z === 1;
-          ctx.globalAlpha = 0.25 + 0.75 * ((i - from + 1) / (t - from));
-          ctx.lineWidth = closeUp ? 2.5 : 1.5;
-          ctx.setLineDash(closeUp ? [] : [3, 2]);
-          ctx.beginPath();
-          ctx.moveTo(this.cx(a.x), this.cy(a.y));
-          ctx.lineTo(this.cx(b.x), this.cy(b.y));
-          ctx.stroke();
+        for (let b = 0; b < buckets; ++b) {
+          for (const closeUp of [false, true]) {
+            ctx.beginPath();
+            let any = false;
+            for (let i = from; i < t; ++i) {
+              if (Math.min(buckets - 1, Math.floor(((i - from) * buckets) / (t - from))) !== b) continue;
+              const a = r.uavState(i, k);
+              const c = r.uavState(i + 1, k);
+              if (a.x === c.x && a.y === c.y) continue;
+              if ((a.z === 1 && a.transit === 0 && c.z === 1) !== closeUp) continue;
+              ctx.moveTo(this.cx(a.x), this.cy(a.y));
+              ctx.lineTo(this.cx(c.x), this.cy(c.y));
+              any = true;
+            }
+            if (!any) continue;
+            ctx.globalAlpha = 0.3 + (0.7 * (b + 1)) / buckets;
+            ctx.lineWidth = closeUp ? 2.5 : 1.5;
+            ctx.setLineDash(closeUp ? [] : [3, 2]);
+            ctx.stroke();
+          }
         }
       }
       ctx.globalAlpha = 1;
@@ -704,10 +715,10 @@
 
     // Waypoints joined the way UAVs fly between them (along x first, then along y).
     drawPlan(ctx, s, plan, k) {
+      // Solid and thin: a dashed pattern over long plans costs more than the rest of the frame.
       ctx.strokeStyle = uavColor(k);
-      ctx.globalAlpha = 0.7;
-      ctx.lineWidth = 1.25;
-      ctx.setLineDash([4, 3]);
+      ctx.globalAlpha = 0.6;
+      ctx.lineWidth = 1;
       ctx.beginPath();
       let x = s.x;
       let y = s.y;
@@ -719,7 +730,6 @@
         y = wy;
       }
       ctx.stroke();
-      ctx.setLineDash([]);
       ctx.fillStyle = uavColor(k);
       const d = Math.max(2, this.cellPx * 0.4);
       for (const [wx, wy] of plan) ctx.fillRect(this.cx(wx) - d / 2, this.cy(wy) - d / 2, d, d);
@@ -982,7 +992,8 @@
   // ---------------------------------------------------------------------------------------------
   // Start-up: the embedded trace, or a trace file chosen or dropped by the user.
 
-  const api = {ready: false, error: null};
+  // Timings (ms since navigation) are kept for the browser test's measurements.
+  const api = {ready: false, error: null, scriptAt: performance.now()};
   window.hullViewer = api;
 
   function start(trace) {
@@ -1001,7 +1012,7 @@
         play: () => viewer.play(),
         pause: () => viewer.pause(),
         mapAt: (t) => { viewer.seek(t); return Array.from(replay.map); },
-        startMs: performance.now() - t0,
+        setupMs: performance.now() - t0,
         readyAt: performance.now(),
         ready: true,
       });
@@ -1036,7 +1047,9 @@
   if (embedded) {
     let trace = null;
     try {
+      const parseStart = performance.now();
       trace = JSON.parse(embedded);
+      api.parseMs = performance.now() - parseStart;
     } catch (e) {
       showError(`The embedded trace is not JSON: ${e.message}`);
     }
