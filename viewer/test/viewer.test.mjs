@@ -234,6 +234,11 @@ test('the slider and the arrow keys move in time, play advances it', async () =>
   await page.waitForTimeout(300);
   assert.equal(await page.evaluate(() => window.hullViewer.time()), paused);
   assert.match(await page.textContent('#time-display'), new RegExp(`^t = ${paused} s`));
+  // The play button does the same.
+  await page.click('#btn-play');
+  await page.waitForFunction((p) => window.hullViewer.time() > p, paused, {timeout: 5000});
+  await page.click('#btn-play');
+  assert.equal(await page.evaluate(() => window.hullViewer.viewer.playing), false);
   await page.close();
 });
 
