@@ -15,6 +15,9 @@ namespace {
 std::atomic<long> g_allocations{0};
 }
 
+// The replacement pair below is malloc/free on purpose; GCC cannot see that both sides match.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 void* operator new(std::size_t size) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
