@@ -44,8 +44,8 @@ void write_viewer_html(const nlohmann::json& trace, const std::string& path) {
 
 void add_view_command(CLI::App& app, CommandAction& action) {
   auto args = std::make_shared<ViewArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "view", "Write a self-contained HTML replay (viewer) of a mission trace");
+  CLI::App* cmd =
+      app.add_subcommand("view", "Write a self-contained HTML replay (viewer) of a mission trace");
   cmd->footer(
       "Exit status: 0 written, 2 unreadable or malformed trace, 1 other failure.\n"
       "Example: hullinspect run -n 8 --trace mission.json && hullinspect view mission.json "

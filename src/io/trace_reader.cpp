@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <limits>
 #include <string_view>
@@ -16,7 +17,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr int kUavFields = 5;  // x, y, z, transit_left, active
+constexpr std::size_t kUavFields = 5;  // x, y, z, transit_left, active
 
 // Checks one trace; every failure names the field, e.g. "frames[3].u[7]: expected 1 or 2".
 class TraceChecker {
@@ -67,7 +68,8 @@ class TraceChecker {
       }
       for (std::size_t x = 0; x < row.size(); ++x) {
         if (alphabet.find(row[x]) == std::string_view::npos) {
-          fail(at, fmt::format("character {} is '{}', expected one of \"{}\"", x, row[x], alphabet));
+          fail(at,
+               fmt::format("character {} is '{}', expected one of \"{}\"", x, row[x], alphabet));
         }
       }
     }
@@ -96,15 +98,11 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
     check.fail(where + ".u", fmt::format("expected {} numbers ({} per UAV), got {}", uav_values,
                                          kUavFields, u.size()));
   }
+  // Bounds of x, y, z, transit_left, active.
+  const std::array<std::int64_t, kUavFields> lo = {0, 0, 1, 0, 0};
+  const std::array<std::int64_t, kUavFields> hi = {width - 1, height - 1, 2, 1 << 20, 1};
   for (std::size_t j = 0; j < u.size(); ++j) {
-    const auto at = fmt::format("{}.u[{}]", where, j);
-    switch (j % kUavFields) {
-      case 0: check.integer(u[j], at, 0, width - 1); break;
-      case 1: check.integer(u[j], at, 0, height - 1); break;
-      case 2: check.integer(u[j], at, 1, 2); break;
-      case 3: check.integer(u[j], at, 0, 1 << 20); break;
-      default: check.integer(u[j], at, 0, 1); break;
-    }
+    check.integer(u[j], fmt::format("{}.u[{}]", where, j), lo[j % kUavFields], hi[j % kUavFields]);
   }
 
   const auto& c = check.array(check.field(f, where, "c"), where + ".c");
@@ -173,10 +171,10 @@ void validate_trace(const json& trace, const std::string& source) {
   check.object(check.field(trace, "", "parameters"), "parameters");
 
   const auto& grid = check.object(check.field(trace, "", "grid"), "grid");
-  const int width = static_cast<int>(check.integer(check.field(grid, "grid", "width"),
-                                                   "grid.width", 1, 1 << 15));
-  const int height = static_cast<int>(check.integer(check.field(grid, "grid", "height"),
-                                                    "grid.height", 1, 1 << 15));
+  const int width =
+      static_cast<int>(check.integer(check.field(grid, "grid", "width"), "grid.width", 1, 1 << 15));
+  const int height = static_cast<int>(
+      check.integer(check.field(grid, "grid", "height"), "grid.height", 1, 1 << 15));
   check.integer(check.field(trace, "", "plane_change_steps"), "plane_change_steps", 0, 1 << 20);
   const auto& footprint = check.array(check.field(trace, "", "footprint"), "footprint");
   if (footprint.size() != 2) check.fail("footprint", "expected [s1, s2]");
@@ -196,8 +194,8 @@ void validate_trace(const json& trace, const std::string& source) {
   const auto& u0 = check.array(check.field(check.object(frames[0], "frames[0]"), "frames[0]", "u"),
                                "frames[0].u");
   if (u0.empty() || u0.size() % kUavFields != 0) {
-    check.fail("frames[0].u", fmt::format("expected {} numbers per UAV, got {} in all", kUavFields,
-                                          u0.size()));
+    check.fail("frames[0].u",
+               fmt::format("expected {} numbers per UAV, got {} in all", kUavFields, u0.size()));
   }
   for (std::size_t i = 0; i < frames.size(); ++i) {
     check_frame(check, frames[i], i, width, height, u0.size());
@@ -209,8 +207,8 @@ void validate_trace(const json& trace, const std::string& source) {
     const auto where = std::string("series.") + name;
     const auto& s = check.array(check.field(series, "series", name), where);
     if (s.size() != frames.size()) {
-      check.fail(where, fmt::format("expected one value per frame ({}), got {}", frames.size(),
-                                    s.size()));
+      check.fail(where,
+                 fmt::format("expected one value per frame ({}), got {}", frames.size(), s.size()));
     }
     for (std::size_t t = 0; t < s.size(); ++t) {
       check.integer(s[t], fmt::format("{}[{}]", where, t), 0,
@@ -241,7 +239,8 @@ json read_trace(const std::filesystem::path& path) {
     trace = json::parse(text);
   } catch (const json::parse_error& e) {
     const auto end = std::min(static_cast<std::size_t>(e.byte), text.size());
-    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+    const int line = 1 + static_cast<int>(std::count(
+                             text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
     throw InputError(path.string(), line, "not a JSON trace: " + parse_problem(e));
   }
   validate_trace(trace, path.string());

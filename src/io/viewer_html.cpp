@@ -22,7 +22,8 @@ namespace {
 constexpr std::string_view kStyleLink = R"(<link rel="stylesheet" href="viewer.css">)";
 constexpr std::string_view kScriptsBegin = "<!-- viewer scripts";
 constexpr std::string_view kScriptsEnd = "<!-- end of viewer scripts -->";
-constexpr std::string_view kTraceSlot = R"(<script type="application/json" id="trace-data"></script>)";
+constexpr std::string_view kTraceSlot =
+    R"(<script type="application/json" id="trace-data"></script>)";
 
 // JSON text that is safe inside a <script> element: '<' only occurs inside JSON strings, where the
 // escape \u003c means the same character, so "</script>" or "<!--" can never appear.
@@ -54,8 +55,10 @@ std::string viewer_html(const nlohmann::json& trace) {
   std::array<Slot, 3> slots{{
       {kStyleLink, {}, "<style>\n" + std::string(detail::kViewerCss) + "</style>"},
       {kScriptsBegin, kScriptsEnd, "<script>\n" + std::string(detail::kViewerJs) + "</script>"},
-      {kTraceSlot, {}, R"(<script type="application/json" id="trace-data">)" +
-                           script_safe_json(trace) + "</script>"},
+      {kTraceSlot,
+       {},
+       R"(<script type="application/json" id="trace-data">)" + script_safe_json(trace) +
+           "</script>"},
   }};
   const std::string_view page = detail::kViewerHtml;
   for (auto& slot : slots) {

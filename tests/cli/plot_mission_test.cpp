@@ -32,7 +32,8 @@ class PlotMission : public ::testing::Test {
   void SetUp() override {
     const char* source = std::getenv("HULLINSPECT_SOURCE_DIR");
     cli_ = hullinspect::testing::cli_path();
-    script_ = fs::path(source != nullptr ? source : HULLINSPECT_SOURCE_DIR) / "tools" / "plot_mission.py";
+    script_ =
+        fs::path(source != nullptr ? source : HULLINSPECT_SOURCE_DIR) / "tools" / "plot_mission.py";
     dir_ = hullinspect::testing::make_temp_dir("plot-mission");
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -49,7 +50,9 @@ class PlotMission : public ::testing::Test {
 
 TEST_F(PlotMission, WritesPngAndPdfOfARealMission) {
   const auto trace = dir_ / "m.json";
-  ASSERT_EQ(shell("'" + cli_ + "' run -n 3 --s2 9 --seed 5 --trace '" + trace.string() + "' >/dev/null"), 0);
+  ASSERT_EQ(
+      shell("'" + cli_ + "' run -n 3 --s2 9 --seed 5 --trace '" + trace.string() + "' >/dev/null"),
+      0);
   ASSERT_EQ(plot("'" + trace.string() + "' --time 60"), 0) << slurp(dir_ / "err.txt");
   // Default outputs: the trace's name with .png and .pdf.
   EXPECT_EQ(slurp(dir_ / "m.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
@@ -70,7 +73,8 @@ TEST_F(PlotMission, BadTraceOrTimeIsOneLineAndExit2) {
   const auto trace = dir_ / "m.json";
   ASSERT_EQ(shell("'" + cli_ + "' run -n 8 --trace '" + trace.string() + "' >/dev/null"), 0);
   EXPECT_EQ(plot("'" + trace.string() + "' --time 100000"), 2);
-  EXPECT_EQ(slurp(dir_ / "err.txt").rfind("plot_mission.py: --time: 100000 is outside [0, ", 0), 0u);
+  EXPECT_EQ(slurp(dir_ / "err.txt").rfind("plot_mission.py: --time: 100000 is outside [0, ", 0),
+            0u);
 }
 
 }  // namespace

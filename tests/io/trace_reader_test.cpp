@@ -107,8 +107,9 @@ TEST(TraceReader, ReadsAFileAndNamesItOnFailure) {
     FAIL() << "accepted a truncated file";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              broken.string() + ":3: not a JSON trace: syntax error while parsing object key - "
-                                "unexpected end of input; expected string literal");
+              broken.string() +
+                  ":3: not a JSON trace: syntax error while parsing object key - "
+                  "unexpected end of input; expected string literal");
   }
   try {
     read_trace(dir / "missing.json");
@@ -157,18 +158,22 @@ TEST(TraceReader, NamesTheDamagedField) {
   EXPECT_EQ(problem_after([](json& t) { t["frames"][0]["c"][1] = -1; }),
             "mission.json: frames[0].c[1]: -1 is outside [0, 3]");
   EXPECT_EQ(problem_after([](json& t) {
-              t["frames"][2]["p"] = {{"4", {{"mode", "x"}, {"target", nullptr}, {"plan", json::array()}}}};
+              t["frames"][2]["p"] = {
+                  {"4", {{"mode", "x"}, {"target", nullptr}, {"plan", json::array()}}}};
             }),
             "mission.json: frames[2].p.4: the key must be a UAV index in [0, 3]");
   EXPECT_EQ(problem_after([](json& t) {
-              t["frames"][2]["p"] = {{"1", {{"mode", "x"}, {"target", {1, 30}}, {"plan", json::array()}}}};
+              t["frames"][2]["p"] = {
+                  {"1", {{"mode", "x"}, {"target", {1, 30}}, {"plan", json::array()}}}};
             }),
             "mission.json: frames[2].p.1.target[1]: 30 is outside [0, 29]");
   EXPECT_EQ(problem_after([](json& t) {
               t["frames"][2]["p"] = {{"1", {{"mode", "x"}, {"target", nullptr}, {"plan", {{1}}}}}};
             }),
             "mission.json: frames[2].p.1.plan[0]: expected [x, y]");
-  EXPECT_EQ(problem_after([](json& t) { t["frames"][2]["l"] = {{"frontiers", {1, 2, -3}}}; }),
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["l"] = {{"frontiers", {1, 2, -3}}};
+            }),
             "mission.json: frames[2].l.frontiers[2]: -3 is outside [0, 6899]");
   EXPECT_EQ(problem_after([](json& t) { t["series"]["known"].erase(0); }),
             "mission.json: series.known: expected one value per frame (" +
@@ -183,8 +188,8 @@ TEST(TraceReader, NamesTheDamagedField) {
 
 TEST(TraceReader, AcceptsOptionalAnnotationsAndLayers) {
   EXPECT_EQ(problem_after([](json& t) {
-              t["frames"][2]["p"] = {{"1", {{"mode", "explore"}, {"target", {3, 4}},
-                                            {"plan", {{3, 4}, {5, 6}}}}}};
+              t["frames"][2]["p"] = {
+                  {"1", {{"mode", "explore"}, {"target", {3, 4}}, {"plan", {{3, 4}, {5, 6}}}}}};
               t["frames"][2]["l"] = {{"frontiers", {1, 2, 3}}, {"claimed", json::array()}};
               t["partition"] = nullptr;
             }),

@@ -46,11 +46,11 @@ TEST(ViewerHtml, IsOneSelfContainedPage) {
 }
 
 TEST(ViewerHtml, TraceStringsCannotCloseTheScriptElement) {
-  const json trace = {
-      {"parameters",
-       {{"hull", "</script><script>alert(1)</script>"}, {"note", "<!-- <script> -->"},
-        {"unicode", "Zürich — 5 µm ≤ 2 m"}}},
-      {"format", "hullinspect-trace"}};
+  const json trace = {{"parameters",
+                       {{"hull", "</script><script>alert(1)</script>"},
+                        {"note", "<!-- <script> -->"},
+                        {"unicode", "Zürich — 5 µm ≤ 2 m"}}},
+                      {"format", "hullinspect-trace"}};
   const std::string html = viewer_html(trace);
   EXPECT_EQ(count(html, "</script"), 2u);
   EXPECT_EQ(count(html, "<!--"), count(viewer_html(json::object()), "<!--"));

@@ -14,7 +14,8 @@ inline constexpr const char* kTraceFormat = "hullinspect-trace";
 inline constexpr int kTraceVersion = 1;
 
 /// Parses and validates a trace file. Throws InputError naming the file (and the JSON line, or the
-/// offending field such as "frames[12].u") when it cannot be read, is not JSON or breaks the format.
+/// offending field such as "frames[12].u") when it cannot be read, is not JSON or breaks the
+/// format.
 nlohmann::json read_trace(const std::filesystem::path& path);
 
 /// Checks that `trace` follows the format: every required field present with the right type, rows
