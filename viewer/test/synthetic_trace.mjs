@@ -1,7 +1,7 @@
 // A synthetic but well-formed trace (docs/trace-format.md) for load and playback measurements:
 // `uavs` UAVs random-walking for `steps` steps over the hull of a real trace, sensing by the rules
 // of SPEC §3, with an annotation for every UAV at every step and a "frontiers" layer that changes
-// every step — heavier than any planner's trace of the same length.
+// every step: meant as a worst case for a trace of that length.
 
 // Small deterministic PRNG (mulberry32), so the trace is the same on every run.
 export function prng(seed) {
