@@ -1,5 +1,5 @@
 #pragma once
-// Records a mission as a JSON trace (docs/formats.md#trace): instance, parameters, partition, the
+// Records a mission as a JSON trace (docs/trace-format.md): instance, parameters, partition, the
 // UAV states of every step, the cells each step changed and the planner's annotations (only when
 // they change), so a viewer can rebuild any time step.
 
