@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/partition/darp_partitioner.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/partition/stripes_partitioner.hpp"
 
@@ -14,16 +15,28 @@ std::unique_ptr<Partitioner> make_stripes(const OptionMap& options) {
   return std::make_unique<StripesPartitioner>();
 }
 
+std::unique_ptr<Partitioner> make_darp(const OptionMap& options) {
+  return std::make_unique<DarpPartitioner>(read_darp_options(options));
+}
+
 const std::vector<PartitionerInfo>& registry() {
   static const std::vector<PartitionerInfo> entries = {
-      {"stripes", "equal-area vertical bands, in the order of the start cells' x", {}, &make_stripes},
+      {"darp",
+       "DARP (SPEC 5.1): connected regions balanced within a tolerance, from the start cells",
+       darp_option_specs(), &make_darp},
+      {"stripes",
+       "equal-area vertical bands, in the order of the start cells' x",
+       {},
+       &make_stripes},
   };
   return entries;
 }
 
 }  // namespace
 
-std::span<const PartitionerInfo> partitioner_registry() { return registry(); }
+std::span<const PartitionerInfo> partitioner_registry() {
+  return registry();
+}
 
 std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const OptionMap& options) {
   std::string names;
@@ -31,7 +44,8 @@ std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const Optio
     if (info.name == name) return info.make(options);
     names += (names.empty() ? "" : ", ") + info.name;
   }
-  throw ParameterError("partitioner", fmt::format("unknown partitioner '{}' (known: {})", name, names));
+  throw ParameterError("partitioner",
+                       fmt::format("unknown partitioner '{}' (known: {})", name, names));
 }
 
 }  // namespace hullinspect::partition
