@@ -21,22 +21,16 @@ std::unique_ptr<Partitioner> make_darp(const OptionMap& options) {
 
 const std::vector<PartitionerInfo>& registry() {
   static const std::vector<PartitionerInfo> entries = {
-      {"darp",
-       "DARP (SPEC 5.1): connected regions balanced within a tolerance, from the start cells",
+      {"darp", "DARP (SPEC 5.1): connected, balanced regions grown from the start cells",
        darp_option_specs(), &make_darp},
-      {"stripes",
-       "equal-area vertical bands, in the order of the start cells' x",
-       {},
-       &make_stripes},
+      {"stripes", "equal-area vertical bands, in the order of the start cells' x", {}, &make_stripes},
   };
   return entries;
 }
 
 }  // namespace
 
-std::span<const PartitionerInfo> partitioner_registry() {
-  return registry();
-}
+std::span<const PartitionerInfo> partitioner_registry() { return registry(); }
 
 std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const OptionMap& options) {
   std::string names;
@@ -44,8 +38,7 @@ std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const Optio
     if (info.name == name) return info.make(options);
     names += (names.empty() ? "" : ", ") + info.name;
   }
-  throw ParameterError("partitioner",
-                       fmt::format("unknown partitioner '{}' (known: {})", name, names));
+  throw ParameterError("partitioner", fmt::format("unknown partitioner '{}' (known: {})", name, names));
 }
 
 }  // namespace hullinspect::partition
