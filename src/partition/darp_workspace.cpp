@@ -16,6 +16,9 @@ constexpr double kMaxFairSpread = 64.0;
 // share (say five times too large) would otherwise swing every ratio at once and the regions of
 // nearby starts would trade the whole hull back and forth.
 constexpr double kMaxFairStep = 0.1;
+// Distance-transform cell states in the padded grid.
+constexpr int kBlocked = -2;
+constexpr int kUnreached = std::numeric_limits<int>::max();
 // The adaptive fairness gain never drops below this fraction of DarpOptions::fairness_gain.
 constexpr double kMinGainFraction = 1e-3;
 }  // namespace
@@ -86,6 +89,16 @@ DarpWorkspace::DarpWorkspace(const world::HullMask& hull, std::span<const int> s
   for (std::size_t y = row_first_.size() - 1; y-- > 0;) {
     row_first_[y] = std::min(row_first_[y], row_first_[y + 1]);  // rows without hull cells
   }
+  // The padded grid for the distance transforms: a ring of blocked cells around the grid, so a
+  // neighbour is ±1 or ±width and needs no bounds check.
+  padded_width_ = mask.width() + 2;
+  pad_of_.resize(cells);
+  padded_blank_.assign(static_cast<std::size_t>(padded_width_) * (mask.height() + 2), kBlocked);
+  for (std::size_t j = 0; j < cells; ++j) {
+    const grid::Cell c = mask.cell(cell_flat_[j]);
+    pad_of_[j] = (c.y + 1) * padded_width_ + c.x + 1;
+    padded_blank_[static_cast<std::size_t>(pad_of_[j])] = kUnreached;
+  }
   start_.resize(n);
   for (std::size_t r = 0; r < n; ++r) {
     start_[r] = hull_index[static_cast<std::size_t>(start_index[r])];
@@ -99,19 +112,23 @@ DarpWorkspace::DarpWorkspace(const world::HullMask& hull, std::span<const int> s
 
   // Evaluation matrices: log of the 4-neighbour BFS distance through hull cells from each start.
   queue_.resize(cells);
-  dist_near_.resize(cells);
-  dist_far_.resize(cells);
+  pad_queue_.resize(cells);
+  pad_near_.resize(padded_blank_.size());
+  pad_far_.resize(padded_blank_.size());
+  mark_.resize(cells);
   eval_.resize(n * cells);
   std::vector<float> log_of;  // log_of[d] = log d, as far as the distances reach
   for (std::size_t r = 0; r < n; ++r) {
     queue_[0] = start_[r];
-    const int reach = hull_bfs(dist_near_, 1);
+    const int reach = hull_bfs(pad_near_, 1);
     while (static_cast<int>(log_of.size()) <= reach) {
       const auto d = static_cast<double>(log_of.size());
       log_of.push_back(d == 0 ? kStartValue : static_cast<float>(portable_log(d)));
     }
     float* e = &eval_[r * cells];
-    for (std::size_t j = 0; j < cells; ++j) e[j] = log_of[static_cast<std::size_t>(dist_near_[j])];
+    for (std::size_t j = 0; j < cells; ++j) {
+      e[j] = log_of[static_cast<std::size_t>(pad_near_[static_cast<std::size_t>(pad_of_[j])])];
+    }
   }
 
   fair_.assign(n, 0.0);
@@ -149,23 +166,27 @@ DarpWorkspace::DarpWorkspace(const world::HullMask& hull, std::span<const int> s
 }
 
 int DarpWorkspace::hull_bfs(std::vector<int>& dist, int sources) {
-  std::fill(dist.begin(), dist.end(), std::numeric_limits<int>::max());
+  std::copy(padded_blank_.begin(), padded_blank_.end(), dist.begin());
+  int* __restrict d = dist.data();
+  int* __restrict queue = pad_queue_.data();
   for (int q = 0; q < sources; ++q) {
-    dist[static_cast<std::size_t>(queue_[static_cast<std::size_t>(q)])] = 0;
+    const int p = pad_of_[static_cast<std::size_t>(queue_[static_cast<std::size_t>(q)])];
+    queue[q] = p;
+    d[p] = 0;
   }
-  std::size_t head = 0;
-  auto tail = static_cast<std::size_t>(sources);
+  const int offsets[4] = {1, -1, padded_width_, -padded_width_};
+  int head = 0;
+  int tail = sources;
   int last = 0;
   while (head < tail) {
-    const auto j = static_cast<std::size_t>(queue_[head++]);
-    last = dist[j];
+    const int p = queue[head++];
+    last = d[p];
     const int next = last + 1;
-    const int* nb = &neighbours_[4 * j];
-    for (int d = 0; d < 4; ++d) {
-      const int k = nb[d];
-      if (k < 0 || dist[static_cast<std::size_t>(k)] <= next) continue;
-      dist[static_cast<std::size_t>(k)] = next;
-      queue_[tail++] = k;
+    for (int off : offsets) {
+      const int k = p + off;
+      if (d[k] <= next) continue;  // reached already, or blocked (kBlocked < 0)
+      d[k] = next;
+      queue[tail++] = k;
     }
   }
   return last;
@@ -333,7 +354,7 @@ void DarpWorkspace::build_correction(int uav) {
       queue_[static_cast<std::size_t>(sources++)] = static_cast<int>(j);
     }
   }
-  const double near_max = hull_bfs(dist_near_, sources);
+  const double near_max = hull_bfs(pad_near_, sources);
   // … and to the region's other components.
   sources = 0;
   for (std::size_t j = 0; j < cells; ++j) {
@@ -341,7 +362,7 @@ void DarpWorkspace::build_correction(int uav) {
       queue_[static_cast<std::size_t>(sources++)] = static_cast<int>(j);
     }
   }
-  const double far_max = hull_bfs(dist_far_, sources);
+  const double far_max = hull_bfs(pad_far_, sources);
   // Both normalised to [0, 1] as in the reference; their difference is low near the start's
   // component and far from the stray parts (there the UAV should keep cells) and high near the
   // stray parts (there it should give them up).
@@ -351,7 +372,8 @@ void DarpWorkspace::build_correction(int uav) {
   float lo = std::numeric_limits<float>::max();
   float hi = std::numeric_limits<float>::lowest();
   for (std::size_t j = 0; j < cells; ++j) {
-    const auto diff = static_cast<float>(dist_near_[j] * near_scale - dist_far_[j] * far_scale);
+    const auto p = static_cast<std::size_t>(pad_of_[j]);
+    const auto diff = static_cast<float>(pad_near_[p] * near_scale - pad_far_[p] * far_scale);
     c[j] = diff;
     lo = std::min(lo, diff);
     hi = std::max(hi, diff);
@@ -432,7 +454,7 @@ double DarpWorkspace::repair_best_balanced() {
   if (best_balanced_score_ < 0) return -1;
   std::vector<std::int32_t>& owner = best_balanced_;
   // Mark the start components (BFS inside each region from its start) and queue them.
-  std::vector<int>& mark = dist_near_;
+  std::vector<int>& mark = mark_;
   std::fill(mark.begin(), mark.end(), 0);
   std::size_t tail = 0;
   for (std::size_t r = 0; r < start_.size(); ++r) {

@@ -75,8 +75,8 @@ class DarpWorkspace {
   void add_noise_and_compare(int uav);
   void update_fairness(double tolerance_weight);
   void build_correction(int uav);
-  /// Multi-source BFS over the hull graph from the cells of queue_[0, sources); returns the largest
-  /// distance reached.
+  /// Multi-source BFS through hull cells from the cells queue_[0, sources) into the padded grid
+  /// `dist`; returns the largest distance reached.
   int hull_bfs(std::vector<int>& dist, int sources);
   int find_root(int run);
   void totals_of(const std::vector<std::int32_t>& owner, std::vector<int>& cells,
@@ -123,9 +123,14 @@ class DarpWorkspace {
   int split_count_ = 0;
   double stray_weight_ = 0;  // weight outside the start components
 
-  std::vector<int> queue_;               // N
-  std::vector<int> dist_near_;           // N: distance to the start's component
-  std::vector<int> dist_far_;            // N: distance to the other components
+  std::vector<int> queue_;               // N: hull cell indices
+  int padded_width_ = 0;                 // grid width + 2
+  std::vector<int> pad_of_;              // hull cell j → index in the padded grid
+  std::vector<int> padded_blank_;        // padded grid: unreached on hull cells, blocked elsewhere
+  std::vector<int> pad_queue_;           // N: padded indices
+  std::vector<int> pad_near_;            // padded: distance to the start's component
+  std::vector<int> pad_far_;             // padded: distance to the other components
+  std::vector<int> mark_;                // N: repair marks
   std::unique_ptr<float[]> correction_;  // n × N cached log-corrections (written before read)
 
   std::vector<float> noise_;       // N log random factors, read at a random rotation
