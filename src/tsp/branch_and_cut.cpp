@@ -14,6 +14,13 @@ constexpr double kIntegral = 1e-6;   // |x − round(x)| below this counts as in
 constexpr double kSupport = 1e-9;    // edges below this are absent from the support graph
 constexpr double kViolation = 1e-6;  // a cut must be violated by more than this
 constexpr double kBoundSlack = 1e-6;
+constexpr double kPricing = 1e-9;      // columns whose reduced cost is below −kPricing enter
+constexpr int kNearest = 6;            // initial columns: each end's nearest ends
+constexpr int kStrongCandidates = 8;   // strong branching: edges tried per node
+constexpr int kStrongIterations = 50;  // strong branching: dual pivots per child
+// CLP options for many small warm-started re-solves: keep work regions and factorization between
+// solves, and do not "crunch" the model into a copy each time (1 + 8 + 2048 + 65536).
+constexpr unsigned kClpSpecialOptions = 1u | 8u | 2048u | 65536u;
 }  // namespace
 
 BranchAndCut::BranchAndCut() = default;
@@ -33,9 +40,11 @@ BranchAndCutStats BranchAndCut::solve(const EndCosts& costs, std::vector<int>& b
   stopped_ = false;
   trouble_ = false;
   stats_ = {};
+  cuts_.clear();
   known_cuts_.clear();
+  enumerate_edges();
   build_lp();
-  branch(0);
+  if (solve_root()) branch();
   stats_.optimal = !stopped_ && !trouble_;
   costs_ = nullptr;
   best_ = nullptr;
@@ -43,101 +52,294 @@ BranchAndCutStats BranchAndCut::solve(const EndCosts& costs, std::vector<int>& b
   return stats_;
 }
 
-void BranchAndCut::build_lp() {
+void BranchAndCut::enumerate_edges() {
   const int artificial = 2 * g_ + 1;
   edge_u_.clear();
   edge_v_.clear();
-  column_of_.assign(static_cast<std::size_t>(nodes_) * static_cast<std::size_t>(nodes_), -1);
-  std::vector<double> objective;
+  edge_cost_.clear();
+  edge_of_pair_.assign(static_cast<std::size_t>(nodes_) * static_cast<std::size_t>(nodes_), -1);
   for (int u = 0; u < nodes_; ++u) {
     for (int v = u + 1; v < nodes_; ++v) {
       if (super_of(u) == super_of(v)) continue;  // forced edges are not variables
-      const int column = static_cast<int>(edge_u_.size());
-      column_of_[static_cast<std::size_t>(u * nodes_ + v)] = column;
-      column_of_[static_cast<std::size_t>(v * nodes_ + u)] = column;
+      const int e = static_cast<int>(edge_u_.size());
+      edge_of_pair_[static_cast<std::size_t>(u * nodes_ + v)] = e;
+      edge_of_pair_[static_cast<std::size_t>(v * nodes_ + u)] = e;
       edge_u_.push_back(u);
       edge_v_.push_back(v);
-      objective.push_back(v == artificial ? 0.0 : static_cast<double>((*costs_)(u, v)));
+      edge_cost_.push_back(v == artificial ? 0.0 : static_cast<double>((*costs_)(u, v)));
     }
   }
-  const int columns = static_cast<int>(edge_u_.size());
-  std::vector<CoinBigIndex> starts(static_cast<std::size_t>(columns) + 1);
-  std::vector<int> rows(2 * static_cast<std::size_t>(columns));
-  for (int j = 0; j < columns; ++j) {
-    starts[static_cast<std::size_t>(j)] = 2 * j;
-    rows[2 * static_cast<std::size_t>(j)] = edge_u_[static_cast<std::size_t>(j)];
-    rows[2 * static_cast<std::size_t>(j) + 1] = edge_v_[static_cast<std::size_t>(j)];
-  }
-  starts[static_cast<std::size_t>(columns)] = 2 * columns;
-  const std::vector<double> ones(2 * static_cast<std::size_t>(columns), 1.0);
-  const std::vector<double> lower(static_cast<std::size_t>(columns), 0.0);
-  const std::vector<double> upper(static_cast<std::size_t>(columns), 1.0);
-  const std::vector<double> degree(static_cast<std::size_t>(nodes_), 1.0);
+  column_of_edge_.assign(edge_u_.size(), -1);
+  edge_of_column_.clear();
+}
 
-  lp_ = std::make_unique<OsiClpSolverInterface>();
+void BranchAndCut::build_lp() {
+  const int start = 2 * g_;
+  const int artificial = 2 * g_ + 1;
+  const int ends = 2 * g_;
+  std::vector<char> chosen(edge_u_.size(), 0);
+  // The incumbent's edges keep the first LP feasible; every S and A edge; each end's nearest ends.
+  int at = start;
+  for (int entry : *best_) {
+    chosen[static_cast<std::size_t>(edge_between(at, entry))] = 1;
+    at = entry ^ 1;
+  }
+  chosen[static_cast<std::size_t>(edge_between(at, artificial))] = 1;
+  for (int u = 0; u < ends; ++u) {
+    chosen[static_cast<std::size_t>(edge_between(start, u))] = 1;
+    chosen[static_cast<std::size_t>(edge_between(artificial, u))] = 1;
+    candidates_.clear();
+    for (int v = 0; v < ends; ++v) {
+      if (super_of(v) != super_of(u)) candidates_.push_back(v);
+    }
+    const auto keep = std::min<std::size_t>(kNearest, candidates_.size());
+    std::partial_sort(candidates_.begin(), candidates_.begin() + static_cast<std::ptrdiff_t>(keep),
+                      candidates_.end(), [&](int a, int b) {
+                        const int ca = (*costs_)(u, a);
+                        const int cb = (*costs_)(u, b);
+                        return ca != cb ? ca < cb : a < b;
+                      });
+    for (std::size_t k = 0; k < keep; ++k) {
+      chosen[static_cast<std::size_t>(edge_between(u, candidates_[k]))] = 1;
+    }
+  }
+
+  // One LP object for the solver's lifetime: recreating it per solve costs more than the solve.
+  if (!lp_) lp_ = std::make_unique<OsiClpSolverInterface>();
   lp_->messageHandler()->setLogLevel(0);
   lp_->getModelPtr()->setLogLevel(0);
   lp_->setHintParam(OsiDoReducePrint, true, OsiHintTry);
-  lp_->loadProblem(columns, nodes_, starts.data(), rows.data(), ones.data(), lower.data(),
-                   upper.data(), objective.data(), degree.data(), degree.data());
+  const std::vector<double> degree(static_cast<std::size_t>(nodes_), 1.0);
+  const std::vector<CoinBigIndex> no_start(1, 0);
+  lp_->loadProblem(0, nodes_, no_start.data(), nullptr, nullptr, nullptr, nullptr, nullptr,
+                   degree.data(), degree.data());
+  new_edges_.clear();
+  for (std::size_t e = 0; e < chosen.size(); ++e) {
+    if (chosen[e] != 0) new_edges_.push_back(static_cast<int>(e));
+  }
+  add_columns(new_edges_);
+  lp_->setSpecialOptions(kClpSpecialOptions);
+  lp_->setHintParam(OsiDoPresolveInInitial, false, OsiHintDo);
+  lp_->setHintParam(OsiDoDualInInitial, true, OsiHintDo);
   lp_->initialSolve();
   ++stats_.lp_solves;
 }
 
-void BranchAndCut::branch(int depth) {
-  if (stopped_) return;
-  ++stats_.nodes;
-  const NodeState state = solve_node();
-  if (depth == 0 && lp_->isProvenOptimal()) {
-    stats_.root_bound = static_cast<long long>(
-        std::ceil(lp_->getObjValue() + static_cast<double>(costs_->segment_total()) - kBoundSlack));
-  }
-  if (state != NodeState::kFractional) return;
-  if (depth == 0) fix_by_reduced_cost();
+bool BranchAndCut::resolve() {
+  lp_->resolve();
+  ++stats_.lp_solves;
+  return lp_->isProvenOptimal();
+}
 
-  // Branch on the most fractional edge (lowest column on ties).
+double BranchAndCut::bound() const {
+  return lp_->getObjValue() + static_cast<double>(costs_->segment_total());
+}
+
+bool BranchAndCut::solve_root() {
+  ++stats_.nodes;
+  bool solved = true;  // build_lp() solved the first LP
+  while (true) {
+    if (std::chrono::steady_clock::now() >= deadline_) {
+      stopped_ = true;
+      return false;
+    }
+    if (!solved) resolve();
+    solved = false;
+    // The restricted root LP always holds the incumbent tour, so it cannot be infeasible.
+    if (!lp_->isProvenOptimal()) {
+      trouble_ = true;
+      return false;
+    }
+    if (separate() > 0) continue;
+    if (price(0.0) > 0) continue;
+    break;
+  }
+  stats_.root_bound = static_cast<long long>(std::ceil(bound() - kBoundSlack));
+  if (bound() > static_cast<double>(*best_length_) - 1.0 + kBoundSlack) return false;
   const double* x = lp_->getColSolution();
-  int pick = -1;
-  double best_distance = 1.0;
-  for (int j = 0; j < static_cast<int>(edge_u_.size()); ++j) {
-    const double distance = std::abs(x[j] - 0.5);
-    if (distance < best_distance) {
-      best_distance = distance;
-      pick = j;
+  const int columns = lp_->getNumCols();
+  bool integral = true;
+  for (int j = 0; j < columns && integral; ++j) {
+    integral = std::abs(x[j] - std::round(x[j])) <= kIntegral;
+  }
+  if (integral) {
+    take_integral_tour();
+    return false;
+  }
+  finish_root_columns();
+  return true;
+}
+
+void BranchAndCut::finish_root_columns() {
+  // With the full LP optimal, a tour using edge e costs at least bound + reduced cost(e). Edges
+  // for which that cannot beat the incumbent by 1 are useless for the rest of the search: absent
+  // ones stay out, present ones are fixed. All other absent edges enter now.
+  const double room = static_cast<double>(*best_length_) - 1.0 - bound() + kBoundSlack;
+  const double* x = lp_->getColSolution();
+  const double* reduced = lp_->getReducedCost();
+  const int columns = lp_->getNumCols();
+  for (int j = 0; j < columns; ++j) {
+    if (x[j] < kIntegral && reduced[j] > room) lp_->setColUpper(j, 0.0);
+    if (x[j] > 1.0 - kIntegral && -reduced[j] > room) lp_->setColLower(j, 1.0);
+  }
+  price(room);
+  stats_.columns = lp_->getNumCols();
+}
+
+int BranchAndCut::price(double room) {
+  // Reduced cost of every absent edge: its cost minus the duals of the rows it would be in.
+  // room = 0: the usual pricing (negative reduced costs enter); room > 0: everything up to room.
+  const double* dual = lp_->getRowPrice();
+  candidates_.clear();  // cuts with a non-zero dual
+  for (std::size_t i = 0; i < cuts_.size(); ++i) {
+    if (std::abs(dual[static_cast<std::size_t>(nodes_) + i]) > 1e-12) {
+      candidates_.push_back(static_cast<int>(i));
     }
   }
-  if (pick < 0) return;
-  lp_->setColLower(pick, 1.0);
-  branch(depth + 1);
-  lp_->setColLower(pick, 0.0);
-  if (stopped_) return;
-  lp_->setColUpper(pick, 0.0);
-  branch(depth + 1);
-  lp_->setColUpper(pick, 1.0);
+  new_edges_.clear();
+  for (std::size_t e = 0; e < edge_u_.size(); ++e) {
+    if (column_of_edge_[e] >= 0) continue;
+    double reduced = edge_cost_[e] - dual[edge_u_[e]] - dual[edge_v_[e]];
+    for (int i : candidates_) {
+      if (contains(cuts_[static_cast<std::size_t>(i)], static_cast<int>(e))) {
+        reduced -= dual[static_cast<std::size_t>(nodes_ + i)];
+      }
+    }
+    if (room > 0 ? reduced <= room : reduced < -kPricing) new_edges_.push_back(static_cast<int>(e));
+  }
+  add_columns(new_edges_);
+  return static_cast<int>(new_edges_.size());
+}
+
+bool BranchAndCut::contains(const Cut& cut, int edge) const {
+  const int u = edge_u_[static_cast<std::size_t>(edge)];
+  const int v = edge_v_[static_cast<std::size_t>(edge)];
+  if (cut.subtour) {
+    return cut.inside[static_cast<std::size_t>(super_of(u))] != 0 &&
+           cut.inside[static_cast<std::size_t>(super_of(v))] != 0;
+  }
+  if (cut.inside[static_cast<std::size_t>(u)] != 0 &&
+      cut.inside[static_cast<std::size_t>(v)] != 0) {
+    return true;
+  }
+  return std::binary_search(cut.teeth.begin(), cut.teeth.end(), edge);
+}
+
+void BranchAndCut::add_columns(const std::vector<int>& edges) {
+  if (edges.empty()) return;
+  std::vector<CoinBigIndex> starts;
+  std::vector<int> rows;
+  std::vector<double> values, lower, upper, objective;
+  for (int e : edges) {
+    starts.push_back(static_cast<CoinBigIndex>(rows.size()));
+    rows.push_back(edge_u_[static_cast<std::size_t>(e)]);
+    rows.push_back(edge_v_[static_cast<std::size_t>(e)]);
+    for (std::size_t i = 0; i < cuts_.size(); ++i) {
+      if (contains(cuts_[i], e)) rows.push_back(nodes_ + static_cast<int>(i));
+    }
+    lower.push_back(0.0);
+    upper.push_back(1.0);
+    objective.push_back(edge_cost_[static_cast<std::size_t>(e)]);
+  }
+  starts.push_back(static_cast<CoinBigIndex>(rows.size()));
+  values.assign(rows.size(), 1.0);
+  const int first = lp_->getNumCols();
+  lp_->addCols(static_cast<int>(edges.size()), starts.data(), rows.data(), values.data(),
+               lower.data(), upper.data(), objective.data());
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    column_of_edge_[static_cast<std::size_t>(edges[k])] = first + static_cast<int>(k);
+    edge_of_column_.push_back(edges[k]);
+  }
+}
+
+int BranchAndCut::choose_branch_column(bool& up_first) {
+  // Strong branching: among the most fractional edges, the one whose two children (LP re-solved
+  // from this node's basis, at most kStrongIterations dual pivots, no new cuts) raise the bound
+  // most (product rule). Ties keep the more fractional, then the lower column.
+  const double* x = lp_->getColSolution();
+  const int columns = lp_->getNumCols();
+  candidates_.clear();
+  for (int j = 0; j < columns; ++j) {
+    if (std::abs(x[j] - std::round(x[j])) > kIntegral) candidates_.push_back(j);
+  }
+  if (candidates_.empty()) throw LogicError("branch-and-cut: no fractional edge to branch on");
+  auto fractionality = [&](int j) { return std::min(x[j], 1.0 - x[j]); };
+  std::stable_sort(candidates_.begin(), candidates_.end(),
+                   [&](int a, int b) { return fractionality(a) > fractionality(b); });
+  if (candidates_.size() > static_cast<std::size_t>(kStrongCandidates)) {
+    candidates_.resize(static_cast<std::size_t>(kStrongCandidates));
+  }
+  up_first = true;
+  if (candidates_.size() == 1) return candidates_[0];
+  const double here = lp_->getObjValue();
+  const double cutoff = static_cast<double>(*best_length_) - 1.0 -
+                        static_cast<double>(costs_->segment_total()) + kBoundSlack;
+  auto child_bound = [&]() {
+    ++stats_.lp_solves;
+    if (lp_->isProvenPrimalInfeasible()) return cutoff + 1.0;
+    return std::max(lp_->getObjValue(), here);
+  };
+  int pick = candidates_[0];
+  double best_score = -1;
+  lp_->setIntParam(OsiMaxNumIterationHotStart, kStrongIterations);
+  lp_->markHotStart();
+  for (int j : candidates_) {
+    lp_->setColUpper(j, 0.0);
+    lp_->solveFromHotStart();
+    const double down = child_bound();
+    lp_->setColUpper(j, 1.0);
+    lp_->setColLower(j, 1.0);
+    lp_->solveFromHotStart();
+    const double up = child_bound();
+    lp_->setColLower(j, 0.0);
+    const double score = std::max(down - here, 1e-6) * std::max(up - here, 1e-6);
+    if (score > best_score) {
+      best_score = score;
+      pick = j;
+      up_first = up <= down;
+    }
+  }
+  lp_->unmarkHotStart();
+  return pick;
+}
+
+void BranchAndCut::branch() {
+  // The LP of this node is solved and fractional: branch on an edge, the child with the lower
+  // strong-branching bound first.
+  bool up_first = true;
+  const int pick = choose_branch_column(up_first);
+  for (int k = 0; k < 2; ++k) {
+    const bool up = (k == 0) == up_first;
+    if (up) {
+      lp_->setColLower(pick, 1.0);
+    } else {
+      lp_->setColUpper(pick, 0.0);
+    }
+    ++stats_.nodes;
+    if (solve_node() == NodeState::kFractional) branch();
+    if (up) {
+      lp_->setColLower(pick, 0.0);
+    } else {
+      lp_->setColUpper(pick, 1.0);
+    }
+    if (stopped_) return;
+  }
 }
 
 BranchAndCut::NodeState BranchAndCut::solve_node() {
-  // The first solve of the root happened in build_lp(); later ones warm-start from the last basis.
-  bool fresh = stats_.nodes == 1;
   while (true) {
     if (std::chrono::steady_clock::now() >= deadline_) {
       stopped_ = true;
       return NodeState::kPruned;
     }
-    if (!fresh) {
-      lp_->resolve();
-      ++stats_.lp_solves;
-    }
-    fresh = false;
-    if (!lp_->isProvenOptimal()) {
+    if (!resolve()) {
       if (!lp_->isProvenPrimalInfeasible()) trouble_ = true;
       return NodeState::kPruned;
     }
-    const double bound = lp_->getObjValue() + static_cast<double>(costs_->segment_total());
-    if (bound > static_cast<double>(*best_length_) - 1.0 + kBoundSlack) return NodeState::kPruned;
+    if (bound() > static_cast<double>(*best_length_) - 1.0 + kBoundSlack) return NodeState::kPruned;
     if (separate() > 0) continue;
     const double* x = lp_->getColSolution();
-    for (int j = 0; j < static_cast<int>(edge_u_.size()); ++j) {
+    for (int j = 0; j < lp_->getNumCols(); ++j) {
       if (std::abs(x[j] - std::round(x[j])) > kIntegral) return NodeState::kFractional;
     }
     take_integral_tour();
@@ -145,27 +347,20 @@ BranchAndCut::NodeState BranchAndCut::solve_node() {
   }
 }
 
-void BranchAndCut::fix_by_reduced_cost() {
-  // A tour that uses edge j (at 0 in the LP) costs at least bound + reduced cost; if that cannot
-  // beat the incumbent by 1, edge j is useless for the rest of the search. Same for edges at 1.
-  const double bound = lp_->getObjValue() + static_cast<double>(costs_->segment_total());
-  const double room = static_cast<double>(*best_length_) - 1.0 - bound + kBoundSlack;
-  const double* x = lp_->getColSolution();
-  const double* reduced = lp_->getReducedCost();
-  for (int j = 0; j < static_cast<int>(edge_u_.size()); ++j) {
-    if (x[j] < kIntegral && reduced[j] > room) lp_->setColUpper(j, 0.0);
-    if (x[j] > 1.0 - kIntegral && -reduced[j] > room) lp_->setColLower(j, 1.0);
-  }
+int BranchAndCut::separate() {
+  const int subtours = separate_subtours();
+  return subtours + separate_blossoms();
 }
 
-int BranchAndCut::separate() {
+int BranchAndCut::separate_subtours() {
   const double* x = lp_->getColSolution();
-  const std::size_t s = static_cast<std::size_t>(supers_);
+  const auto s = static_cast<std::size_t>(supers_);
   weight_.assign(s * s, 0.0);
-  for (std::size_t j = 0; j < edge_u_.size(); ++j) {
+  for (int j = 0; j < lp_->getNumCols(); ++j) {
     if (x[j] <= kSupport) continue;
-    const auto a = static_cast<std::size_t>(super_of(edge_u_[j]));
-    const auto b = static_cast<std::size_t>(super_of(edge_v_[j]));
+    const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
+    const auto a = static_cast<std::size_t>(super_of(edge_u_[e]));
+    const auto b = static_cast<std::size_t>(super_of(edge_v_[e]));
     weight_[a * s + b] += x[j];
     weight_[b * s + a] += x[j];
   }
@@ -187,117 +382,263 @@ int BranchAndCut::separate() {
     }
     ++components;
   }
-  int added = 0;
+  const std::size_t before = cuts_.size();
+  Cut cut;
+  cut.subtour = true;
   if (components > 1) {
     for (int c = 0; c < components; ++c) {
-      side_.clear();
-      for (std::size_t a = 0; a < s; ++a) {
-        if (label_[a] == c) side_.push_back(static_cast<int>(a));
-      }
-      if (add_cut(side_)) ++added;
+      cut.inside.assign(s, 0);
+      for (std::size_t a = 0; a < s; ++a) cut.inside[a] = label_[a] == c ? 1 : 0;
+      add_cut(cut);
     }
-    return added;
+    return static_cast<int>(cuts_.size() - before);
   }
   // Connected: minimum cuts between {S, A} and each segment.
-  for (int t = 0; t < g_; ++t) {
-    if (max_flow(g_, t, 2.0 - kViolation) >= 2.0 - kViolation) continue;
-    side_.clear();  // the sink side: super-nodes not reachable from {S, A} in the residual graph
-    for (std::size_t a = 0; a < s; ++a) {
-      if (parent_[a] < 0) side_.push_back(static_cast<int>(a));
+  flow_.reset(supers_);
+  for (std::size_t a = 0; a < s; ++a) {
+    for (std::size_t b = a + 1; b < s; ++b) {
+      if (weight_[a * s + b] > kSupport) {
+        flow_.add_edge(static_cast<int>(a), static_cast<int>(b), weight_[a * s + b]);
+      }
     }
-    if (add_cut(side_)) ++added;
   }
-  return added;
+  flow_.build();
+  side_.assign(s, 0);  // on the sink side of a cut found this round: skipped as a sink
+  for (int t = 0; t < g_; ++t) {
+    if (side_[static_cast<std::size_t>(t)] != 0) continue;
+    if (flow_.max_flow(g_, t, 2.0 - kViolation) >= 2.0 - kViolation) continue;
+    cut.inside.assign(s, 0);
+    for (std::size_t a = 0; a < s; ++a) {
+      if (!flow_.source_side(static_cast<int>(a))) cut.inside[a] = side_[a] = 1;
+    }
+    add_cut(cut);
+  }
+  return static_cast<int>(cuts_.size() - before);
 }
 
-double BranchAndCut::max_flow(int source, int sink, double enough) {
-  // Edmonds–Karp on the dense contracted graph; stops once `enough` flow is found.
-  const std::size_t s = static_cast<std::size_t>(supers_);
-  residual_ = weight_;
-  double flow = 0;
-  while (true) {
-    parent_.assign(s, -1);
-    parent_[static_cast<std::size_t>(source)] = source;
-    queue_.assign(1, source);
-    for (std::size_t head = 0; head < queue_.size() && parent_[static_cast<std::size_t>(sink)] < 0;
-         ++head) {
-      const auto a = static_cast<std::size_t>(queue_[head]);
-      for (std::size_t b = 0; b < s; ++b) {
-        if (parent_[b] < 0 && residual_[a * s + b] > kSupport) {
-          parent_[b] = static_cast<int>(a);
-          queue_.push_back(static_cast<int>(b));
+int BranchAndCut::separate_blossoms() {
+  // Padberg–Rao: with w_e = min(x_e, 1 − x_e) and T the nodes with an odd number of edges above
+  // one half (the forced edge always counts), a set H with |H ∩ T| odd and w(δ(H)) < 1 gives a
+  // violated blossom with F = the edges of δ(H) above one half. Only fractional edges have w > 0,
+  // so the search runs on each component of the fractional edges, through a Gomory–Hu tree
+  // (Gusfield's algorithm); a component with |C ∩ T| odd is itself such a set.
+  const double* x = lp_->getColSolution();
+  const auto n = static_cast<std::size_t>(nodes_);
+  std::vector<int> big(n, 1);  // edges above one half at each node, the forced one included
+  std::vector<std::vector<int>> fractional(n);
+  for (int j = 0; j < lp_->getNumCols(); ++j) {
+    const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
+    if (x[j] > 0.5 + kIntegral) {
+      ++big[static_cast<std::size_t>(edge_u_[e])];
+      ++big[static_cast<std::size_t>(edge_v_[e])];
+    }
+    if (x[j] > kIntegral && x[j] < 1.0 - kIntegral) {
+      fractional[static_cast<std::size_t>(edge_u_[e])].push_back(j);
+      fractional[static_cast<std::size_t>(edge_v_[e])].push_back(j);
+    }
+  }
+  const std::size_t before = cuts_.size();
+  label_.assign(n, -1);
+  local_.assign(n, -1);
+  std::vector<char> handle(n, 0);
+  for (std::size_t root = 0; root < n; ++root) {
+    if (label_[root] >= 0 || fractional[root].empty()) continue;
+    members_.assign(1, static_cast<int>(root));
+    label_[root] = static_cast<int>(root);
+    for (std::size_t head = 0; head < members_.size(); ++head) {
+      const auto v = static_cast<std::size_t>(members_[head]);
+      for (int j : fractional[v]) {
+        const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
+        const int w = edge_u_[e] == static_cast<int>(v) ? edge_v_[e] : edge_u_[e];
+        if (label_[static_cast<std::size_t>(w)] < 0) {
+          label_[static_cast<std::size_t>(w)] = static_cast<int>(root);
+          members_.push_back(w);
         }
       }
     }
-    if (parent_[static_cast<std::size_t>(sink)] < 0) return flow;  // parent_ marks the source side
-    double push = enough - flow;
-    for (int b = sink; b != source; b = parent_[static_cast<std::size_t>(b)]) {
-      const auto a = static_cast<std::size_t>(parent_[static_cast<std::size_t>(b)]);
-      push = std::min(push, residual_[a * s + static_cast<std::size_t>(b)]);
+    int odd = 0;
+    for (int v : members_) odd += big[static_cast<std::size_t>(v)] % 2;
+    if (odd % 2 == 1) {
+      for (int v : members_) handle[static_cast<std::size_t>(v)] = 1;
+      try_blossom(handle);
+      for (int v : members_) handle[static_cast<std::size_t>(v)] = 0;
+      continue;
     }
-    for (int b = sink; b != source; b = parent_[static_cast<std::size_t>(b)]) {
-      const auto a = static_cast<std::size_t>(parent_[static_cast<std::size_t>(b)]);
-      residual_[a * s + static_cast<std::size_t>(b)] -= push;
-      residual_[static_cast<std::size_t>(b) * s + a] += push;
+    // Gusfield: n − 1 minimum cuts, each a tree edge of a Gomory–Hu tree; check each cut.
+    const int size = static_cast<int>(members_.size());
+    if (size < 4) continue;
+    for (int i = 0; i < size; ++i)
+      local_[static_cast<std::size_t>(members_[static_cast<std::size_t>(i)])] = i;
+    flow_.reset(size);
+    for (int v : members_) {
+      for (int j : fractional[static_cast<std::size_t>(v)]) {
+        const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
+        if (edge_u_[e] != v) continue;  // each edge once, from its lower end
+        flow_.add_edge(local_[static_cast<std::size_t>(edge_u_[e])],
+                       local_[static_cast<std::size_t>(edge_v_[e])], std::min(x[j], 1.0 - x[j]));
+      }
     }
-    flow += push;
-    if (flow >= enough) return flow;
+    flow_.build();
+    tree_parent_.assign(static_cast<std::size_t>(size), 0);
+    for (int i = 1; i < size; ++i) {
+      const int p = tree_parent_[static_cast<std::size_t>(i)];
+      const double value = flow_.max_flow(i, p, 2.0);  // w-degrees are ≤ 1: this is exact
+      for (int k = i + 1; k < size; ++k) {
+        if (tree_parent_[static_cast<std::size_t>(k)] == p && flow_.source_side(k)) {
+          tree_parent_[static_cast<std::size_t>(k)] = i;
+        }
+      }
+      if (value >= 1.0 - kViolation) continue;
+      int in_t = 0;
+      for (int k = 0; k < size; ++k) {
+        const bool in = flow_.source_side(k);
+        const int v = members_[static_cast<std::size_t>(k)];
+        handle[static_cast<std::size_t>(v)] = in ? 1 : 0;
+        if (in) in_t += big[static_cast<std::size_t>(v)] % 2;
+      }
+      if (in_t % 2 == 1) try_blossom(handle);
+      for (int v : members_) handle[static_cast<std::size_t>(v)] = 0;
+    }
   }
+  return static_cast<int>(cuts_.size() - before);
 }
 
-bool BranchAndCut::add_cut(std::vector<int>& supers) {
-  // Key: the side without {S, A}. Row: the smaller side (both are equivalent given the degrees).
-  std::vector<int> key;
-  const bool has_root = std::find(supers.begin(), supers.end(), g_) != supers.end();
-  std::vector<char> inside(static_cast<std::size_t>(supers_), 0);
-  for (int a : supers) inside[static_cast<std::size_t>(a)] = 1;
-  for (int a = 0; a < supers_; ++a) {
-    if ((inside[static_cast<std::size_t>(a)] != 0) != has_root) key.push_back(a);
-  }
-  if (key.empty() || static_cast<int>(key.size()) == supers_) return false;
-  if (!known_cuts_.insert(key).second) return false;
-  std::vector<int> row_supers;
-  if (2 * key.size() <= static_cast<std::size_t>(supers_)) {
-    row_supers = key;
-  } else {
-    for (int a = 0; a < supers_; ++a) {
-      if (!std::binary_search(key.begin(), key.end(), a)) row_supers.push_back(a);
+bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
+  // F: the edges leaving H above one half; if |F| is even, toggle the leaving edge closest to one
+  // half. Violated if x(E(H)) + x(F) > |H| + (|F| − 1) / 2. Forced edges (x = 1) go to the rhs.
+  const double* x = lp_->getColSolution();
+  auto in = [&](int v) { return handle[static_cast<std::size_t>(v)] != 0; };
+  double lhs = 0;
+  double rhs = 0;
+  int handle_size = 0;
+  int forced_inside = 0;
+  std::vector<int> teeth_free;  // free edges in F
+  int forced_teeth = 0;
+  int teeth = 0;
+  // The leaving edge closest to one half, for the parity fix: (free edge or -1 - forced node).
+  int flip = 0;
+  double flip_loss = 2.0;
+  for (int v = 0; v < nodes_; ++v) {
+    if (!in(v)) continue;
+    ++handle_size;
+    const int p = partner_of(v);
+    if (in(p)) {
+      if (v < p) ++forced_inside;
+    } else {
+      ++forced_teeth;
+      ++teeth;
+      if (0.5 < flip_loss) {  // dropping a forced tooth loses 1 − 1/2
+        flip_loss = 0.5;
+        flip = -1 - v;
+      }
     }
   }
-  // The nodes of the chosen super-nodes, then every free edge between two of them.
-  std::vector<int> members;
-  for (int a : row_supers) {
-    members.push_back(2 * a);
-    members.push_back(2 * a + 1);  // for a = g these are S = 2g and A = 2g + 1
+  for (int j = 0; j < lp_->getNumCols(); ++j) {
+    if (x[j] <= kSupport) continue;
+    const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
+    const bool iu = in(edge_u_[e]);
+    const bool iv = in(edge_v_[e]);
+    if (iu && iv) {
+      lhs += x[j];
+    } else if (iu != iv) {
+      const double loss = std::abs(x[j] - 0.5);
+      if (x[j] > 0.5 + kIntegral) {
+        teeth_free.push_back(static_cast<int>(e));
+        ++teeth;
+      }
+      if (loss < flip_loss) {
+        flip_loss = loss;
+        flip = static_cast<int>(e);
+      }
+    }
+  }
+  if (teeth % 2 == 0) {
+    if (flip_loss > 0.5 - kViolation) return false;  // nothing to gain
+    if (flip < 0) {
+      --forced_teeth;  // drop a forced tooth
+      --teeth;
+    } else if (std::find(teeth_free.begin(), teeth_free.end(), flip) != teeth_free.end()) {
+      teeth_free.erase(std::find(teeth_free.begin(), teeth_free.end(), flip));
+      --teeth;
+    } else {
+      teeth_free.push_back(flip);
+      ++teeth;
+    }
+  }
+  if (teeth < 1) return false;
+  for (int e : teeth_free) {
+    const int column = column_of_edge_[static_cast<std::size_t>(e)];
+    lhs += x[column];
+  }
+  // Free-variable form: subtract the forced edges inside H and in F (each x = 1) from both sides.
+  rhs = handle_size + (teeth - 1) / 2.0 - forced_inside - forced_teeth;
+  if (lhs <= rhs + kViolation) return false;
+  Cut cut;
+  cut.subtour = false;
+  cut.inside = handle;
+  std::sort(teeth_free.begin(), teeth_free.end());
+  cut.teeth = std::move(teeth_free);
+  cut.rhs = rhs;
+  const std::size_t before = cuts_.size();
+  add_cut(std::move(cut));
+  return cuts_.size() > before;
+}
+
+void BranchAndCut::add_cut(Cut cut) {
+  std::vector<int> key;
+  if (cut.subtour) {
+    // A subtour set and its complement give the same row (given the degree rows): key on the side
+    // without {S, A}, write the row on the smaller side.
+    const auto size = cut.inside.size();
+    std::size_t count = 0;
+    for (char m : cut.inside) count += m != 0 ? 1 : 0;
+    if (count == 0 || count == size) return;
+    const bool flip_key = cut.inside[static_cast<std::size_t>(g_)] != 0;
+    key.push_back(0);
+    for (std::size_t a = 0; a < size; ++a) {
+      if ((cut.inside[a] != 0) != flip_key) key.push_back(static_cast<int>(a));
+    }
+    if (!known_cuts_.insert(key).second) return;
+    if (2 * count > size) {
+      for (char& m : cut.inside) m = m != 0 ? 0 : 1;
+      count = size - count;
+    }
+    cut.rhs = static_cast<double>(count) - 1.0;
+  } else {
+    key.push_back(1);
+    for (std::size_t v = 0; v < cut.inside.size(); ++v) {
+      if (cut.inside[v] != 0) key.push_back(static_cast<int>(v));
+    }
+    key.push_back(-1);
+    key.insert(key.end(), cut.teeth.begin(), cut.teeth.end());
+    if (!known_cuts_.insert(key).second) return;
   }
   row_index_.clear();
-  for (std::size_t i = 0; i < members.size(); ++i) {
-    for (std::size_t k = i + 1; k < members.size(); ++k) {
-      const int column = column_of_[static_cast<std::size_t>(members[i] * nodes_ + members[k])];
-      if (column >= 0) row_index_.push_back(column);
-    }
+  for (int j = 0; j < lp_->getNumCols(); ++j) {
+    if (contains(cut, edge_of_column_[static_cast<std::size_t>(j)])) row_index_.push_back(j);
   }
   row_value_.assign(row_index_.size(), 1.0);
   lp_->addRow(static_cast<int>(row_index_.size()), row_index_.data(), row_value_.data(),
-              -lp_->getInfinity(), static_cast<double>(row_supers.size()) - 1.0);
+              -lp_->getInfinity(), cut.rhs);
+  cuts_.push_back(std::move(cut));
   ++stats_.cuts;
-  return true;
 }
 
 void BranchAndCut::take_integral_tour() {
   const double* x = lp_->getColSolution();
   std::vector<int> partner(static_cast<std::size_t>(nodes_), -1);
-  for (std::size_t j = 0; j < edge_u_.size(); ++j) {
+  for (int j = 0; j < lp_->getNumCols(); ++j) {
     if (x[j] > 0.5) {
-      partner[static_cast<std::size_t>(edge_u_[j])] = edge_v_[j];
-      partner[static_cast<std::size_t>(edge_v_[j])] = edge_u_[j];
+      const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
+      partner[static_cast<std::size_t>(edge_u_[e])] = edge_v_[e];
+      partner[static_cast<std::size_t>(edge_v_[e])] = edge_u_[e];
     }
   }
   std::vector<int> tour;
   const int artificial = 2 * g_ + 1;
   for (int at = partner[static_cast<std::size_t>(2 * g_)]; at != artificial;
        at = partner[static_cast<std::size_t>(at ^ 1)]) {
-    if (at < 0 || static_cast<int>(tour.size()) >= g_) {
+    if (at < 0 || at >= 2 * g_ || static_cast<int>(tour.size()) >= g_) {
       throw LogicError("branch-and-cut: an integral LP solution is not one path");
     }
     tour.push_back(at);

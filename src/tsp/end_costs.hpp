@@ -24,6 +24,8 @@ class EndCosts {
     return cost_[static_cast<std::size_t>(a) * static_cast<std::size_t>(stride_) +
                  static_cast<std::size_t>(b)];
   }
+  /// Cell of end (or UAV) a.
+  grid::Cell cell(int a) const { return cells_[static_cast<std::size_t>(a)]; }
   /// Sum of the segments' own lengths: a constant in every tour.
   long long segment_total() const { return segment_total_; }
   /// Path length of a sequence of entry ends (segments included).
@@ -34,7 +36,7 @@ class EndCosts {
   int stride_ = 1;
   long long segment_total_ = 0;
   std::vector<int> cost_;
-  std::vector<grid::Cell> cells_;  // scratch for assign()
+  std::vector<grid::Cell> cells_;
 };
 
 inline int entry_end(Visit v) {
