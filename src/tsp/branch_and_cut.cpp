@@ -1,7 +1,5 @@
 #include "branch_and_cut.hpp"
 
-#include <OsiClpSolverInterface.hpp>
-
 #include <algorithm>
 #include <cmath>
 
@@ -14,13 +12,16 @@ constexpr double kIntegral = 1e-6;   // |x − round(x)| below this counts as in
 constexpr double kSupport = 1e-9;    // edges below this are absent from the support graph
 constexpr double kViolation = 1e-6;  // a cut must be violated by more than this
 constexpr double kBoundSlack = 1e-6;
-constexpr double kPricing = 1e-9;      // columns whose reduced cost is below −kPricing enter
-constexpr int kNearest = 6;            // initial columns: each end's nearest ends
-constexpr int kStrongCandidates = 8;   // strong branching: edges tried per node
-constexpr int kStrongIterations = 50;  // strong branching: dual pivots per child
-// CLP options for many small warm-started re-solves: keep work regions and factorization between
-// solves, and do not "crunch" the model into a copy each time (1 + 8 + 2048 + 65536).
-constexpr unsigned kClpSpecialOptions = 1u | 8u | 2048u | 65536u;
+constexpr double kPricing = 1e-9;        // columns whose reduced cost is below −kPricing enter
+constexpr int kNearest = 6;              // initial columns: each end's nearest ends
+constexpr int kStrongCandidates = 8;     // strong branching: edges tried per node
+constexpr int kStrongIterations = 50;    // strong branching: dual pivots per child
+constexpr int kRootRounds = 200;         // cutting rounds at the root, at most
+constexpr int kNodeRounds = 20;          // cutting rounds at other nodes, at most
+constexpr std::size_t kTailRounds = 5;   // tailing off: bound progress over this many rounds …
+constexpr double kTailProgress = 0.05;   // … below this ends the cutting at a node
+constexpr int kBlossomsPerRound = 10;    // at least; g / 2 if larger
+constexpr long kPivotLimit = 1'000'000;  // per LP solve; reaching it is numerical trouble
 }  // namespace
 
 BranchAndCut::BranchAndCut() = default;
@@ -104,39 +105,29 @@ void BranchAndCut::build_lp() {
     }
   }
 
-  // One LP object for the solver's lifetime: recreating it per solve costs more than the solve.
-  if (!lp_) lp_ = std::make_unique<OsiClpSolverInterface>();
-  lp_->messageHandler()->setLogLevel(0);
-  lp_->getModelPtr()->setLogLevel(0);
-  lp_->setHintParam(OsiDoReducePrint, true, OsiHintTry);
   const std::vector<double> degree(static_cast<std::size_t>(nodes_), 1.0);
-  const std::vector<CoinBigIndex> no_start(1, 0);
-  lp_->loadProblem(0, nodes_, no_start.data(), nullptr, nullptr, nullptr, nullptr, nullptr,
-                   degree.data(), degree.data());
+  lp_.reset(degree);
   new_edges_.clear();
   for (std::size_t e = 0; e < chosen.size(); ++e) {
     if (chosen[e] != 0) new_edges_.push_back(static_cast<int>(e));
   }
   add_columns(new_edges_);
-  lp_->setSpecialOptions(kClpSpecialOptions);
-  lp_->setHintParam(OsiDoPresolveInInitial, false, OsiHintDo);
-  lp_->setHintParam(OsiDoDualInInitial, true, OsiHintDo);
-  lp_->initialSolve();
-  ++stats_.lp_solves;
+  resolve();
 }
 
 bool BranchAndCut::resolve() {
-  lp_->resolve();
+  status_ = lp_.solve(kPivotLimit);
   ++stats_.lp_solves;
-  return lp_->isProvenOptimal();
+  return status_ == DualSimplex::Status::kOptimal;
 }
 
-double BranchAndCut::bound() const {
-  return lp_->getObjValue() + static_cast<double>(costs_->segment_total());
+double BranchAndCut::bound() {
+  return lp_.dual_bound() + static_cast<double>(costs_->segment_total());
 }
 
 bool BranchAndCut::solve_root() {
   ++stats_.nodes;
+  bound_history_.clear();
   bool solved = true;  // build_lp() solved the first LP
   while (true) {
     if (std::chrono::steady_clock::now() >= deadline_) {
@@ -146,28 +137,45 @@ bool BranchAndCut::solve_root() {
     if (!solved) resolve();
     solved = false;
     // The restricted root LP always holds the incumbent tour, so it cannot be infeasible.
-    if (!lp_->isProvenOptimal()) {
+    if (status_ != DualSimplex::Status::kOptimal) {
       trouble_ = true;
       return false;
     }
-    if (separate() > 0) continue;
+    if (integral_solution()) {
+      if (separate_subtours() > 0) continue;
+    } else if (!tailing_off(kRootRounds) && separate() > 0) {
+      continue;
+    }
     if (price(0.0) > 0) continue;
     break;
   }
   stats_.root_bound = static_cast<long long>(std::ceil(bound() - kBoundSlack));
   if (bound() > static_cast<double>(*best_length_) - 1.0 + kBoundSlack) return false;
-  const double* x = lp_->getColSolution();
-  const int columns = lp_->getNumCols();
-  bool integral = true;
-  for (int j = 0; j < columns && integral; ++j) {
-    integral = std::abs(x[j] - std::round(x[j])) <= kIntegral;
-  }
-  if (integral) {
+  if (integral_solution()) {
     take_integral_tour();
     return false;
   }
   finish_root_columns();
+  purge_cuts();
   return true;
+}
+
+bool BranchAndCut::integral_solution() {
+  const auto x = lp_.values();
+  for (double v : x) {
+    if (std::abs(v - std::round(v)) > kIntegral) return false;
+  }
+  return true;
+}
+
+bool BranchAndCut::tailing_off(int max_rounds) {
+  // Cutting stops at a node after max_rounds rounds, or when the last kTailRounds rounds raised
+  // the bound by less than kTailProgress in total; the node is then branched on.
+  bound_history_.push_back(bound());
+  const std::size_t rounds = bound_history_.size();
+  if (static_cast<int>(rounds) > max_rounds) return true;
+  return rounds > kTailRounds &&
+         bound_history_.back() - bound_history_[rounds - 1 - kTailRounds] < kTailProgress;
 }
 
 void BranchAndCut::finish_root_columns() {
@@ -175,21 +183,21 @@ void BranchAndCut::finish_root_columns() {
   // for which that cannot beat the incumbent by 1 are useless for the rest of the search: absent
   // ones stay out, present ones are fixed. All other absent edges enter now.
   const double room = static_cast<double>(*best_length_) - 1.0 - bound() + kBoundSlack;
-  const double* x = lp_->getColSolution();
-  const double* reduced = lp_->getReducedCost();
-  const int columns = lp_->getNumCols();
+  const auto x = lp_.values();
+  const int columns = lp_.columns();
   for (int j = 0; j < columns; ++j) {
-    if (x[j] < kIntegral && reduced[j] > room) lp_->setColUpper(j, 0.0);
-    if (x[j] > 1.0 - kIntegral && -reduced[j] > room) lp_->setColLower(j, 1.0);
+    const double reduced = lp_.reduced_cost(j);
+    if (x[j] < kIntegral && reduced > room) lp_.set_bounds(j, 0.0, 0.0);
+    if (x[j] > 1.0 - kIntegral && -reduced > room) lp_.set_bounds(j, 1.0, 1.0);
   }
   price(room);
-  stats_.columns = lp_->getNumCols();
+  stats_.columns = lp_.columns();
 }
 
 int BranchAndCut::price(double room) {
   // Reduced cost of every absent edge: its cost minus the duals of the rows it would be in.
   // room = 0: the usual pricing (negative reduced costs enter); room > 0: everything up to room.
-  const double* dual = lp_->getRowPrice();
+  const auto dual = lp_.duals();
   candidates_.clear();  // cuts with a non-zero dual
   for (std::size_t i = 0; i < cuts_.size(); ++i) {
     if (std::abs(dual[static_cast<std::size_t>(nodes_) + i]) > 1e-12) {
@@ -226,29 +234,16 @@ bool BranchAndCut::contains(const Cut& cut, int edge) const {
 }
 
 void BranchAndCut::add_columns(const std::vector<int>& edges) {
-  if (edges.empty()) return;
-  std::vector<CoinBigIndex> starts;
-  std::vector<int> rows;
-  std::vector<double> values, lower, upper, objective;
   for (int e : edges) {
-    starts.push_back(static_cast<CoinBigIndex>(rows.size()));
-    rows.push_back(edge_u_[static_cast<std::size_t>(e)]);
-    rows.push_back(edge_v_[static_cast<std::size_t>(e)]);
+    row_index_.clear();
+    row_index_.push_back(edge_u_[static_cast<std::size_t>(e)]);
+    row_index_.push_back(edge_v_[static_cast<std::size_t>(e)]);
     for (std::size_t i = 0; i < cuts_.size(); ++i) {
-      if (contains(cuts_[i], e)) rows.push_back(nodes_ + static_cast<int>(i));
+      if (contains(cuts_[i], e)) row_index_.push_back(nodes_ + static_cast<int>(i));
     }
-    lower.push_back(0.0);
-    upper.push_back(1.0);
-    objective.push_back(edge_cost_[static_cast<std::size_t>(e)]);
-  }
-  starts.push_back(static_cast<CoinBigIndex>(rows.size()));
-  values.assign(rows.size(), 1.0);
-  const int first = lp_->getNumCols();
-  lp_->addCols(static_cast<int>(edges.size()), starts.data(), rows.data(), values.data(),
-               lower.data(), upper.data(), objective.data());
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    column_of_edge_[static_cast<std::size_t>(edges[k])] = first + static_cast<int>(k);
-    edge_of_column_.push_back(edges[k]);
+    column_of_edge_[static_cast<std::size_t>(e)] =
+        lp_.add_column(row_index_, edge_cost_[static_cast<std::size_t>(e)], 0.0, 1.0);
+    edge_of_column_.push_back(e);
   }
 }
 
@@ -256,14 +251,21 @@ int BranchAndCut::choose_branch_column(bool& up_first) {
   // Strong branching: among the most fractional edges, the one whose two children (LP re-solved
   // from this node's basis, at most kStrongIterations dual pivots, no new cuts) raise the bound
   // most (product rule). Ties keep the more fractional, then the lower column.
-  const double* x = lp_->getColSolution();
-  const int columns = lp_->getNumCols();
+  const auto x = lp_.values();
+  values_.assign(x.begin(), x.end());
+  const int columns = lp_.columns();
   candidates_.clear();
   for (int j = 0; j < columns; ++j) {
-    if (std::abs(x[j] - std::round(x[j])) > kIntegral) candidates_.push_back(j);
+    if (std::abs(values_[static_cast<std::size_t>(j)] -
+                 std::round(values_[static_cast<std::size_t>(j)])) > kIntegral) {
+      candidates_.push_back(j);
+    }
   }
   if (candidates_.empty()) throw LogicError("branch-and-cut: no fractional edge to branch on");
-  auto fractionality = [&](int j) { return std::min(x[j], 1.0 - x[j]); };
+  auto fractionality = [&](int j) {
+    const double v = values_[static_cast<std::size_t>(j)];
+    return std::min(v, 1.0 - v);
+  };
   std::stable_sort(candidates_.begin(), candidates_.end(),
                    [&](int a, int b) { return fractionality(a) > fractionality(b); });
   if (candidates_.size() > static_cast<std::size_t>(kStrongCandidates)) {
@@ -271,27 +273,25 @@ int BranchAndCut::choose_branch_column(bool& up_first) {
   }
   up_first = true;
   if (candidates_.size() == 1) return candidates_[0];
-  const double here = lp_->getObjValue();
+  const double here = lp_.objective();
   const double cutoff = static_cast<double>(*best_length_) - 1.0 -
                         static_cast<double>(costs_->segment_total()) + kBoundSlack;
-  auto child_bound = [&]() {
+  auto child_bound = [&](DualSimplex::Status status) {
     ++stats_.lp_solves;
-    if (lp_->isProvenPrimalInfeasible()) return cutoff + 1.0;
-    return std::max(lp_->getObjValue(), here);
+    if (status == DualSimplex::Status::kInfeasible) return cutoff + 1.0;
+    if (status == DualSimplex::Status::kFailed) return here;
+    return std::max(lp_.objective(), here);
   };
   int pick = candidates_[0];
   double best_score = -1;
-  lp_->setIntParam(OsiMaxNumIterationHotStart, kStrongIterations);
-  lp_->markHotStart();
+  lp_.save(snapshot_);
   for (int j : candidates_) {
-    lp_->setColUpper(j, 0.0);
-    lp_->solveFromHotStart();
-    const double down = child_bound();
-    lp_->setColUpper(j, 1.0);
-    lp_->setColLower(j, 1.0);
-    lp_->solveFromHotStart();
-    const double up = child_bound();
-    lp_->setColLower(j, 0.0);
+    lp_.set_bounds(j, 0.0, 0.0);
+    const double down = child_bound(lp_.solve(kStrongIterations));
+    lp_.restore(snapshot_);
+    lp_.set_bounds(j, 1.0, 1.0);
+    const double up = child_bound(lp_.solve(kStrongIterations));
+    lp_.restore(snapshot_);
     const double score = std::max(down - here, 1e-6) * std::max(up - here, 1e-6);
     if (score > best_score) {
       best_score = score;
@@ -299,7 +299,6 @@ int BranchAndCut::choose_branch_column(bool& up_first) {
       up_first = up <= down;
     }
   }
-  lp_->unmarkHotStart();
   return pick;
 }
 
@@ -308,42 +307,40 @@ void BranchAndCut::branch() {
   // strong-branching bound first.
   bool up_first = true;
   const int pick = choose_branch_column(up_first);
+  const double lower = lp_.lower(pick);
+  const double upper = lp_.upper(pick);
   for (int k = 0; k < 2; ++k) {
     const bool up = (k == 0) == up_first;
-    if (up) {
-      lp_->setColLower(pick, 1.0);
-    } else {
-      lp_->setColUpper(pick, 0.0);
-    }
+    lp_.set_bounds(pick, up ? 1.0 : lower, up ? upper : 0.0);
     ++stats_.nodes;
     if (solve_node() == NodeState::kFractional) branch();
-    if (up) {
-      lp_->setColLower(pick, 0.0);
-    } else {
-      lp_->setColUpper(pick, 1.0);
-    }
+    lp_.set_bounds(pick, lower, upper);
     if (stopped_) return;
   }
 }
 
 BranchAndCut::NodeState BranchAndCut::solve_node() {
+  bound_history_.clear();
   while (true) {
     if (std::chrono::steady_clock::now() >= deadline_) {
       stopped_ = true;
       return NodeState::kPruned;
     }
     if (!resolve()) {
-      if (!lp_->isProvenPrimalInfeasible()) trouble_ = true;
+      if (status_ != DualSimplex::Status::kInfeasible) trouble_ = true;
       return NodeState::kPruned;
     }
     if (bound() > static_cast<double>(*best_length_) - 1.0 + kBoundSlack) return NodeState::kPruned;
-    if (separate() > 0) continue;
-    const double* x = lp_->getColSolution();
-    for (int j = 0; j < lp_->getNumCols(); ++j) {
-      if (std::abs(x[j] - std::round(x[j])) > kIntegral) return NodeState::kFractional;
+    purge_cuts();
+    if (integral_solution()) {
+      // An integral solution is a tour unless it has subtours, which are its components.
+      if (separate_subtours() > 0) continue;
+      take_integral_tour();
+      return NodeState::kIntegral;
     }
-    take_integral_tour();
-    return NodeState::kIntegral;
+    if (tailing_off(kNodeRounds)) return NodeState::kFractional;
+    if (separate() > 0) continue;
+    return NodeState::kFractional;
   }
 }
 
@@ -353,10 +350,10 @@ int BranchAndCut::separate() {
 }
 
 int BranchAndCut::separate_subtours() {
-  const double* x = lp_->getColSolution();
+  const auto x = lp_.values();
   const auto s = static_cast<std::size_t>(supers_);
   weight_.assign(s * s, 0.0);
-  for (int j = 0; j < lp_->getNumCols(); ++j) {
+  for (int j = 0; j < lp_.columns(); ++j) {
     if (x[j] <= kSupport) continue;
     const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
     const auto a = static_cast<std::size_t>(super_of(edge_u_[e]));
@@ -422,11 +419,11 @@ int BranchAndCut::separate_blossoms() {
   // violated blossom with F = the edges of δ(H) above one half. Only fractional edges have w > 0,
   // so the search runs on each component of the fractional edges, through a Gomory–Hu tree
   // (Gusfield's algorithm); a component with |C ∩ T| odd is itself such a set.
-  const double* x = lp_->getColSolution();
+  const auto x = lp_.values();
   const auto n = static_cast<std::size_t>(nodes_);
   std::vector<int> big(n, 1);  // edges above one half at each node, the forced one included
   std::vector<std::vector<int>> fractional(n);
-  for (int j = 0; j < lp_->getNumCols(); ++j) {
+  for (int j = 0; j < lp_.columns(); ++j) {
     const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
     if (x[j] > 0.5 + kIntegral) {
       ++big[static_cast<std::size_t>(edge_u_[e])];
@@ -438,6 +435,7 @@ int BranchAndCut::separate_blossoms() {
     }
   }
   const std::size_t before = cuts_.size();
+  pending_.clear();
   label_.assign(n, -1);
   local_.assign(n, -1);
   std::vector<char> handle(n, 0);
@@ -500,13 +498,21 @@ int BranchAndCut::separate_blossoms() {
       for (int v : members_) handle[static_cast<std::size_t>(v)] = 0;
     }
   }
+  // The most violated first, at most kBlossomsPerRound of them (the LP's cost grows with its rows).
+  std::stable_sort(pending_.begin(), pending_.end(),
+                   [](const Pending& a, const Pending& b) { return a.violation > b.violation; });
+  const int limit = std::max(kBlossomsPerRound, g_ / 2);
+  for (auto& p : pending_) {
+    if (static_cast<int>(cuts_.size() - before) >= limit) break;
+    add_cut(std::move(p.cut));
+  }
   return static_cast<int>(cuts_.size() - before);
 }
 
 bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
   // F: the edges leaving H above one half; if |F| is even, toggle the leaving edge closest to one
   // half. Violated if x(E(H)) + x(F) > |H| + (|F| − 1) / 2. Forced edges (x = 1) go to the rhs.
-  const double* x = lp_->getColSolution();
+  const auto x = lp_.values();
   auto in = [&](int v) { return handle[static_cast<std::size_t>(v)] != 0; };
   double lhs = 0;
   double rhs = 0;
@@ -533,7 +539,7 @@ bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
       }
     }
   }
-  for (int j = 0; j < lp_->getNumCols(); ++j) {
+  for (int j = 0; j < lp_.columns(); ++j) {
     if (x[j] <= kSupport) continue;
     const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
     const bool iu = in(edge_u_[e]);
@@ -579,9 +585,8 @@ bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
   std::sort(teeth_free.begin(), teeth_free.end());
   cut.teeth = std::move(teeth_free);
   cut.rhs = rhs;
-  const std::size_t before = cuts_.size();
-  add_cut(std::move(cut));
-  return cuts_.size() > before;
+  pending_.push_back({lhs - rhs, std::move(cut)});
+  return true;
 }
 
 void BranchAndCut::add_cut(Cut cut) {
@@ -614,20 +619,45 @@ void BranchAndCut::add_cut(Cut cut) {
     if (!known_cuts_.insert(key).second) return;
   }
   row_index_.clear();
-  for (int j = 0; j < lp_->getNumCols(); ++j) {
+  for (int j = 0; j < lp_.columns(); ++j) {
     if (contains(cut, edge_of_column_[static_cast<std::size_t>(j)])) row_index_.push_back(j);
   }
-  row_value_.assign(row_index_.size(), 1.0);
-  lp_->addRow(static_cast<int>(row_index_.size()), row_index_.data(), row_value_.data(),
-              -lp_->getInfinity(), cut.rhs);
+  lp_.add_row(row_index_, cut.rhs);
+  cut.key = std::move(key);
   cuts_.push_back(std::move(cut));
   ++stats_.cuts;
 }
 
+void BranchAndCut::purge_cuts() {
+  // Keeps the LP small (its cost grows with the square of the rows): once there are more cuts
+  // than nodes, drop those that are not binding. Separation finds them again if needed.
+  if (static_cast<int>(cuts_.size()) <= nodes_) return;
+  row_index_.clear();
+  for (std::size_t i = 0; i < cuts_.size(); ++i) {
+    if (lp_.slack_row(nodes_ + static_cast<int>(i)))
+      row_index_.push_back(nodes_ + static_cast<int>(i));
+  }
+  if (row_index_.empty()) return;
+  lp_.remove_rows(row_index_);
+  std::size_t keep = 0;
+  std::size_t next_removed = 0;
+  for (std::size_t i = 0; i < cuts_.size(); ++i) {
+    if (next_removed < row_index_.size() &&
+        row_index_[next_removed] == nodes_ + static_cast<int>(i)) {
+      known_cuts_.erase(cuts_[i].key);
+      ++next_removed;
+      continue;
+    }
+    if (keep != i) cuts_[keep] = std::move(cuts_[i]);
+    ++keep;
+  }
+  cuts_.resize(keep);
+}
+
 void BranchAndCut::take_integral_tour() {
-  const double* x = lp_->getColSolution();
+  const auto x = lp_.values();
   std::vector<int> partner(static_cast<std::size_t>(nodes_), -1);
-  for (int j = 0; j < lp_->getNumCols(); ++j) {
+  for (int j = 0; j < lp_.columns(); ++j) {
     if (x[j] > 0.5) {
       const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
       partner[static_cast<std::size_t>(edge_u_[e])] = edge_v_[e];

@@ -1,6 +1,6 @@
 #pragma once
-// Internal: exact branch-and-cut for the segment TSP on CLP, used by the "exact" solver for larger
-// g.
+// Internal: exact branch-and-cut for the segment TSP on its own small LP solver (dual_simplex.hpp),
+// used by the "exact" solver for larger g.
 //
 // The LP is the paper's model with the forced edges substituted out: nodes are the 2g segment ends,
 // the UAV S and the artificial node A; a variable per free edge (every pair of nodes except a
@@ -25,10 +25,9 @@
 #include <set>
 #include <vector>
 
+#include "dual_simplex.hpp"
 #include "end_costs.hpp"
 #include "max_flow.hpp"
-
-class OsiClpSolverInterface;
 
 namespace hullinspect::tsp::detail {
 
@@ -61,6 +60,7 @@ class BranchAndCut {
     std::vector<char> inside;  // coefficient 1 for edges with both ends inside
     std::vector<int> teeth;    // blossom: free edges of F, sorted (coefficient 1)
     double rhs = 0;
+    std::vector<int> key;  // in known_cuts_
   };
 
   void enumerate_edges();
@@ -78,6 +78,9 @@ class BranchAndCut {
   int separate_blossoms();
   bool try_blossom(const std::vector<char>& handle);
   void add_cut(Cut cut);
+  bool integral_solution();
+  bool tailing_off(int max_rounds);
+  void purge_cuts();
   void take_integral_tour();
   int super_of(int node) const { return node < 2 * g_ ? node >> 1 : g_; }
   /// The forced partner of a node: the other end of its segment, or S ↔ A.
@@ -87,7 +90,7 @@ class BranchAndCut {
                          static_cast<std::size_t>(v)];
   }
   bool contains(const Cut& cut, int edge) const;
-  double bound() const;
+  double bound();
 
   const EndCosts* costs_ = nullptr;
   int g_ = 0;
@@ -100,7 +103,9 @@ class BranchAndCut {
   std::vector<int> column_of_edge_;  // edge → LP column, -1 if not in the LP
   std::vector<int> edge_of_column_;
   std::vector<Cut> cuts_;  // LP row nodes_ + i is cuts_[i]
-  std::unique_ptr<OsiClpSolverInterface> lp_;
+  DualSimplex lp_;
+  DualSimplex::Status status_ = DualSimplex::Status::kOptimal;
+  DualSimplex::Snapshot snapshot_;
   std::set<std::vector<int>> known_cuts_;  // subtours by super-node set, blossoms by (H, F)
   std::vector<int>* best_ = nullptr;
   long long* best_length_ = nullptr;
@@ -114,7 +119,12 @@ class BranchAndCut {
   std::vector<int> label_, queue_, members_, local_, tree_parent_, candidates_, new_edges_;
   std::vector<double> tree_value_;
   std::vector<int> row_index_;
-  std::vector<double> row_value_;
+  std::vector<double> values_, bound_history_;
+  struct Pending {
+    double violation;
+    Cut cut;
+  };
+  std::vector<Pending> pending_;
   std::vector<char> side_;
 };
 
