@@ -24,7 +24,7 @@ struct ExactOptions {
   /// Largest g solved by the dynamic program (0–16); larger g use branch-and-cut.
   int dp_max_segments = 8;
   /// Double-bridge kicks of the local search that gives the branch-and-cut its first tour.
-  int kicks = 20;
+  int kicks = 10;
 };
 
 class ExactSolver final : public TspSolver {
