@@ -1,0 +1,58 @@
+# Compiles the replay viewer (viewer/viewer.html, viewer.css and the scripts viewer.html lists
+# between "<!-- viewer scripts" and "<!-- end of viewer scripts -->", in that order) into a C++
+# source defining hullinspect::io::detail::kViewerHtml / kViewerJs / kViewerCss, so
+# `hullinspect view` and `run --html` work from any directory. Editing a viewer file re-runs the
+# configure step.
+function(hullinspect_embed_viewer viewer_dir output)
+  set(delimiter "HIVIEW")
+  # The page, the style and every script, with the checks inlining needs.
+  set(html_file ${viewer_dir}/viewer.html)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${html_file})
+  file(READ ${html_file} html)
+  string(REGEX MATCH "<!-- viewer scripts[^>]*-->.*<!-- end of viewer scripts -->" block "${html}")
+  if(NOT block)
+    message(FATAL_ERROR "${html_file} lacks the <!-- viewer scripts … end of viewer scripts --> block")
+  endif()
+  string(REGEX MATCHALL "<script src=\"[^\"]+\"></script>" tags "${block}")
+  set(js "")
+  foreach(tag ${tags})
+    string(REGEX REPLACE "<script src=\"([^\"]+)\"></script>" "\\1" name "${tag}")
+    set(script ${viewer_dir}/${name})
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${script})
+    file(READ ${script} text)
+    string(TOLOWER "${text}" lower)
+    string(FIND "${lower}" "</script" early)
+    if(NOT early EQUAL -1)
+      message(FATAL_ERROR "${script} must not contain </script: it is inlined into the page")
+    endif()
+    string(APPEND js "// ---- viewer/${name}\n${text}\n")
+  endforeach()
+  set(css_file ${viewer_dir}/viewer.css)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${css_file})
+  file(READ ${css_file} css)
+  string(TOLOWER "${css}" lower)
+  string(FIND "${lower}" "</style" early)
+  if(NOT early EQUAL -1)
+    message(FATAL_ERROR "${css_file} must not contain </style: it is inlined into the page")
+  endif()
+
+  set(body "")
+  foreach(pair "kViewerHtml;html" "kViewerJs;js" "kViewerCss;css")
+    list(GET pair 0 symbol)
+    list(GET pair 1 variable)
+    string(FIND "${${variable}}" ")${delimiter}\"" clash)
+    if(NOT clash EQUAL -1)
+      message(FATAL_ERROR "a viewer file contains the raw-string delimiter )${delimiter}\"")
+    endif()
+    string(APPEND body
+           "extern const std::string_view ${symbol};\n"
+           "const std::string_view ${symbol} = R\"${delimiter}(${${variable}})${delimiter}\";\n")
+  endforeach()
+  file(WRITE ${output}.tmp
+       "// Generated from viewer/ by cmake/EmbedViewer.cmake; do not edit.\n"
+       "#include <string_view>\n"
+       "namespace hullinspect::io::detail {\n"
+       "${body}"
+       "}  // namespace hullinspect::io::detail\n")
+  file(COPY_FILE ${output}.tmp ${output} ONLY_IF_DIFFERENT)
+endfunction()

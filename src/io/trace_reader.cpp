@@ -1,0 +1,250 @@
+#include "hullinspect/io/trace_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <limits>
+#include <string_view>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/atomic_file.hpp"
+
+namespace hullinspect::io {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr std::size_t kUavFields = 5;  // x, y, z, transit_left, active
+
+// Checks one trace; every failure names the field, e.g. "frames[3].u[7]: expected 1 or 2".
+class TraceChecker {
+ public:
+  explicit TraceChecker(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
+    throw InputError(source_, 0, where + ": " + problem);
+  }
+
+  const json& field(const json& object, const std::string& where, const char* key) const {
+    auto it = object.find(key);
+    if (it == object.end()) fail(where.empty() ? key : where + "." + key, "missing");
+    return *it;
+  }
+
+  std::int64_t integer(const json& v, const std::string& where, std::int64_t lo,
+                       std::int64_t hi) const {
+    if (!v.is_number_integer()) fail(where, "expected an integer");
+    const auto i = v.get<std::int64_t>();
+    if (i < lo || i > hi) fail(where, fmt::format("{} is outside [{}, {}]", i, lo, hi));
+    return i;
+  }
+
+  const json& array(const json& v, const std::string& where) const {
+    if (!v.is_array()) fail(where, "expected an array");
+    return v;
+  }
+
+  const json& object(const json& v, const std::string& where) const {
+    if (!v.is_object()) fail(where, "expected an object");
+    return v;
+  }
+
+  // `height` strings of `width` characters from `alphabet`.
+  void rows(const json& v, const std::string& where, int width, int height,
+            std::string_view alphabet) const {
+    array(v, where);
+    if (v.size() != static_cast<std::size_t>(height)) {
+      fail(where, fmt::format("expected {} rows (the grid height), got {}", height, v.size()));
+    }
+    for (std::size_t y = 0; y < v.size(); ++y) {
+      const auto at = fmt::format("{}[{}]", where, y);
+      if (!v[y].is_string()) fail(at, "expected a string");
+      const auto& row = v[y].get_ref<const std::string&>();
+      if (row.size() != static_cast<std::size_t>(width)) {
+        fail(at, fmt::format("expected {} characters (the grid width), got {}", width, row.size()));
+      }
+      for (std::size_t x = 0; x < row.size(); ++x) {
+        if (alphabet.find(row[x]) == std::string_view::npos) {
+          fail(at,
+               fmt::format("character {} is '{}', expected one of \"{}\"", x, row[x], alphabet));
+        }
+      }
+    }
+  }
+
+  void cell(const json& v, const std::string& where, int width, int height) const {
+    if (!v.is_array() || v.size() != 2) fail(where, "expected [x, y]");
+    integer(v[0], where + "[0]", 0, width - 1);
+    integer(v[1], where + "[1]", 0, height - 1);
+  }
+
+ private:
+  std::string source_;
+};
+
+void check_frame(const TraceChecker& check, const json& f, std::size_t i, int width, int height,
+                 std::size_t uav_values) {
+  const auto where = fmt::format("frames[{}]", i);
+  check.object(f, where);
+  const auto cells = static_cast<std::int64_t>(width) * height;
+  check.integer(check.field(f, where, "t"), where + ".t", static_cast<std::int64_t>(i),
+                static_cast<std::int64_t>(i));
+
+  const auto& u = check.array(check.field(f, where, "u"), where + ".u");
+  if (u.size() != uav_values) {
+    check.fail(where + ".u", fmt::format("expected {} numbers ({} per UAV), got {}", uav_values,
+                                         kUavFields, u.size()));
+  }
+  // Bounds of x, y, z, transit_left, active.
+  const std::array<std::int64_t, kUavFields> lo = {0, 0, 1, 0, 0};
+  const std::array<std::int64_t, kUavFields> hi = {width - 1, height - 1, 2, 1 << 20, 1};
+  for (std::size_t j = 0; j < u.size(); ++j) {
+    check.integer(u[j], fmt::format("{}.u[{}]", where, j), lo[j % kUavFields], hi[j % kUavFields]);
+  }
+
+  const auto& c = check.array(check.field(f, where, "c"), where + ".c");
+  if (c.size() % 2 != 0) check.fail(where + ".c", "expected [cell, value] pairs (an even length)");
+  for (std::size_t j = 0; j < c.size(); j += 2) {
+    check.integer(c[j], fmt::format("{}.c[{}]", where, j), 0, cells - 1);
+    check.integer(c[j + 1], fmt::format("{}.c[{}]", where, j + 1), 0, 3);
+  }
+
+  if (auto p = f.find("p"); p != f.end()) {
+    check.object(*p, where + ".p");
+    const auto uavs = static_cast<int>(uav_values / kUavFields);
+    for (const auto& [key, a] : p->items()) {
+      const auto at = fmt::format("{}.p.{}", where, key);
+      int k = -1;
+      const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), k);
+      if (ec != std::errc() || end != key.data() + key.size() || k < 0 || k >= uavs) {
+        check.fail(at, fmt::format("the key must be a UAV index in [0, {}]", uavs - 1));
+      }
+      check.object(a, at);
+      if (!check.field(a, at, "mode").is_string()) check.fail(at + ".mode", "expected a string");
+      const auto& target = check.field(a, at, "target");
+      if (!target.is_null()) check.cell(target, at + ".target", width, height);
+      const auto& plan = check.array(check.field(a, at, "plan"), at + ".plan");
+      for (std::size_t j = 0; j < plan.size(); ++j) {
+        check.cell(plan[j], fmt::format("{}.plan[{}]", at, j), width, height);
+      }
+    }
+  }
+
+  if (auto l = f.find("l"); l != f.end()) {
+    check.object(*l, where + ".l");
+    for (const auto& [name, indices] : l->items()) {
+      const auto at = fmt::format("{}.l.{}", where, name);
+      check.array(indices, at);
+      for (std::size_t j = 0; j < indices.size(); ++j) {
+        check.integer(indices[j], fmt::format("{}[{}]", at, j), 0, cells - 1);
+      }
+    }
+  }
+}
+
+// "[json.exception.parse_error.101] parse error at line 3, column 1: syntax error …" → the part
+// after the location, on one line.
+std::string parse_problem(const json::parse_error& e) {
+  std::string what = e.what();
+  if (auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
+  std::replace(what.begin(), what.end(), '\n', ' ');
+  return what;
+}
+
+}  // namespace
+
+void validate_trace(const json& trace, const std::string& source) {
+  const TraceChecker check(source);
+  check.object(trace, "trace");
+  const auto& format = check.field(trace, "", "format");
+  if (!format.is_string() || format.get_ref<const std::string&>() != kTraceFormat) {
+    check.fail("format", fmt::format("expected \"{}\" (not a hullinspect trace?)", kTraceFormat));
+  }
+  const auto& version = check.field(trace, "", "version");
+  if (!version.is_number_integer() || version.get<int>() != kTraceVersion) {
+    check.fail("version", fmt::format("{} is not supported (this hullinspect reads version {})",
+                                      version.dump(), kTraceVersion));
+  }
+  check.object(check.field(trace, "", "parameters"), "parameters");
+
+  const auto& grid = check.object(check.field(trace, "", "grid"), "grid");
+  const int width =
+      static_cast<int>(check.integer(check.field(grid, "grid", "width"), "grid.width", 1, 1 << 15));
+  const int height = static_cast<int>(
+      check.integer(check.field(grid, "grid", "height"), "grid.height", 1, 1 << 15));
+  check.integer(check.field(trace, "", "plane_change_steps"), "plane_change_steps", 0, 1 << 20);
+  const auto& footprint = check.array(check.field(trace, "", "footprint"), "footprint");
+  if (footprint.size() != 2) check.fail("footprint", "expected [s1, s2]");
+  check.integer(footprint[0], "footprint[0]", 1, std::max(width, height) * 2 + 1);
+  check.integer(footprint[1], "footprint[1]", 1, std::max(width, height) * 2 + 1);
+
+  check.rows(check.field(trace, "", "truth"), "truth", width, height, ".01");
+  check.rows(check.field(trace, "", "prior"), "prior", width, height, ".01");
+  check.rows(check.field(trace, "", "initial_map"), "initial_map", width, height, ".0123");
+  const auto& partition = check.field(trace, "", "partition");
+  if (!partition.is_null()) {
+    check.rows(partition, "partition", width, height, ".0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ");
+  }
+
+  const auto& frames = check.array(check.field(trace, "", "frames"), "frames");
+  if (frames.empty()) check.fail("frames", "expected at least frame 0 (t = 0)");
+  const auto& u0 = check.array(check.field(check.object(frames[0], "frames[0]"), "frames[0]", "u"),
+                               "frames[0].u");
+  if (u0.empty() || u0.size() % kUavFields != 0) {
+    check.fail("frames[0].u",
+               fmt::format("expected {} numbers per UAV, got {} in all", kUavFields, u0.size()));
+  }
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    check_frame(check, frames[i], i, width, height, u0.size());
+  }
+
+  const auto last = static_cast<std::int64_t>(frames.size()) - 1;
+  const auto& series = check.object(check.field(trace, "", "series"), "series");
+  for (const char* name : {"inspected", "known"}) {
+    const auto where = std::string("series.") + name;
+    const auto& s = check.array(check.field(series, "series", name), where);
+    if (s.size() != frames.size()) {
+      check.fail(where,
+                 fmt::format("expected one value per frame ({}), got {}", frames.size(), s.size()));
+    }
+    for (std::size_t t = 0; t < s.size(); ++t) {
+      check.integer(s[t], fmt::format("{}[{}]", where, t), 0,
+                    static_cast<std::int64_t>(width) * height);
+    }
+  }
+
+  const auto& result = check.object(check.field(trace, "", "result"), "result");
+  if (!check.field(result, "result", "complete").is_boolean()) {
+    check.fail("result.complete", "expected true or false");
+  }
+  for (const char* name : {"T_c", "T_m"}) {
+    const auto& t = check.field(result, "result", name);
+    if (!t.is_null()) check.integer(t, std::string("result.") + name, 0, last);
+  }
+  check.integer(check.field(result, "result", "steps"), "result.steps", last, last);
+  for (const char* name : {"hull_cells", "corroded_cells", "moves", "plane_changes", "hovers",
+                           "redundant_observations"}) {
+    check.integer(check.field(result, "result", name), std::string("result.") + name, 0,
+                  std::numeric_limits<std::int64_t>::max());
+  }
+}
+
+json read_trace(const std::filesystem::path& path) {
+  const std::string text = read_file(path);
+  json trace;
+  try {
+    trace = json::parse(text);
+  } catch (const json::parse_error& e) {
+    const auto end = std::min(static_cast<std::size_t>(e.byte), text.size());
+    const int line = 1 + static_cast<int>(std::count(
+                             text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+    throw InputError(path.string(), line, "not a JSON trace: " + parse_problem(e));
+  }
+  validate_trace(trace, path.string());
+  return trace;
+}
+
+}  // namespace hullinspect::io

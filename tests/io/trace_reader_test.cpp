@@ -1,0 +1,200 @@
+// The trace format (docs/trace-format.md): a recorded mission passes the reader, its frames rebuild
+// the recorded series, and every kind of damage is reported with the file and the field.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <unistd.h>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/trace_reader.hpp"
+#include "hullinspect/io/trace_recorder.hpp"
+#include "hullinspect/planners/mission.hpp"
+#include "hullinspect/planners/planner.hpp"
+#include "hullinspect/world/instance.hpp"
+
+namespace hullinspect::io {
+namespace {
+
+using nlohmann::json;
+
+// A lawnmower mission of 4 UAVs on the default hull, recorded.
+const json& recorded_trace() {
+  static const json trace = [] {
+    const auto& hull = world::default_hull();
+    world::MissionParams params;
+    params.uavs = 4;
+    const auto instance = world::generate_instance(
+        hull, world::CorrosionParams::homogeneous(hull.width(), 0.01, 5), 5);
+    auto planner = planners::make_planner("lawnmower");
+    TraceRecorder recorder(instance, json{{"algorithm", "lawnmower"}});
+    planners::MissionOptions options;
+    options.observers.push_back(&recorder);
+    const auto result = planners::run_mission(hull, instance, params, *planner, options);
+    return recorder.finish(result);
+  }();
+  return trace;
+}
+
+// The message validate_trace gives for the recorded trace after `damage`.
+std::string problem_after(const std::function<void(json&)>& damage) {
+  json trace = recorded_trace();
+  damage(trace);
+  try {
+    validate_trace(trace, "mission.json");
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "mission.json");
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(TraceReader, AcceptsARecordedMission) {
+  EXPECT_NO_THROW(validate_trace(recorded_trace(), "mission.json"));
+  EXPECT_EQ(recorded_trace()["format"], kTraceFormat);
+  EXPECT_EQ(recorded_trace()["version"], kTraceVersion);
+}
+
+TEST(TraceReader, FramesRebuildTheRecordedSeries) {
+  // Applying frames 0..t to initial_map gives M(t); its counts are the series of the result.
+  const json& trace = recorded_trace();
+  const int w = trace["grid"]["width"];
+  std::vector<int> map;
+  std::vector<int> truth;
+  for (const auto& row : trace["initial_map"]) {
+    for (char c : row.get<std::string>()) map.push_back(c == '.' ? -1 : c - '0');
+  }
+  for (const auto& row : trace["truth"]) {
+    for (char c : row.get<std::string>()) truth.push_back(c == '.' ? -1 : c - '0');
+  }
+  ASSERT_EQ(map.size(), truth.size());
+  ASSERT_EQ(static_cast<int>(map.size()), w * trace["grid"]["height"].get<int>());
+  const auto& frames = trace["frames"];
+  for (std::size_t t = 0; t < frames.size(); ++t) {
+    const auto& c = frames[t]["c"];
+    for (std::size_t j = 0; j < c.size(); j += 2) {
+      map[c[j].get<std::size_t>()] = c[j + 1].get<int>();
+    }
+    int known = 0;
+    int inspected = 0;
+    for (std::size_t i = 0; i < map.size(); ++i) {
+      known += map[i] == 1 || map[i] == 3;
+      inspected += map[i] == 3 && truth[i] == 1;
+    }
+    ASSERT_EQ(known, trace["series"]["known"][t]) << "t = " << t;
+    ASSERT_EQ(inspected, trace["series"]["inspected"][t]) << "t = " << t;
+  }
+  EXPECT_EQ(trace["series"]["known"].back(), trace["result"]["hull_cells"]);
+  EXPECT_EQ(trace["result"]["T_m"], frames.size() - 1);
+}
+
+TEST(TraceReader, ReadsAFileAndNamesItOnFailure) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("hullinspect-trace-reader-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto good = dir / "good.json";
+  std::ofstream(good) << recorded_trace().dump();
+  EXPECT_EQ(read_trace(good), recorded_trace());
+
+  const auto broken = dir / "broken.json";
+  std::ofstream(broken) << "{\"format\": \"hullinspect-trace\",\n \"version\": 1,\n";
+  try {
+    read_trace(broken);
+    FAIL() << "accepted a truncated file";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              broken.string() +
+                  ":3: not a JSON trace: syntax error while parsing object key - "
+                  "unexpected end of input; expected string literal");
+  }
+  try {
+    read_trace(dir / "missing.json");
+    FAIL() << "read a missing file";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "missing.json").string() + ": cannot open the file");
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TraceReader, NamesTheDamagedField) {
+  EXPECT_EQ(problem_after([](json& t) { t["format"] = "something-else"; }),
+            "mission.json: format: expected \"hullinspect-trace\" (not a hullinspect trace?)");
+  EXPECT_EQ(problem_after([](json& t) { t["version"] = 2; }),
+            "mission.json: version: 2 is not supported (this hullinspect reads version 1)");
+  EXPECT_EQ(problem_after([](json& t) { t.erase("frames"); }), "mission.json: frames: missing");
+  EXPECT_EQ(problem_after([](json& t) { t["grid"]["width"] = 0; }),
+            "mission.json: grid.width: 0 is outside [1, 32768]");
+  EXPECT_EQ(problem_after([](json& t) { t["truth"][2] = "..."; }),
+            "mission.json: truth[2]: expected 230 characters (the grid width), got 3");
+  EXPECT_EQ(problem_after([](json& t) { t["prior"].erase(0); }),
+            "mission.json: prior: expected 30 rows (the grid height), got 29");
+  EXPECT_EQ(problem_after([](json& t) {
+              auto& row = t["initial_map"][10].get_ref<std::string&>();
+              row[4] = '7';
+            }),
+            "mission.json: initial_map[10]: character 4 is '7', expected one of \".0123\"");
+  EXPECT_EQ(problem_after([](json& t) {
+              auto& row = t["partition"][10].get_ref<std::string&>();
+              row[4] = '?';
+            }),
+            "mission.json: partition[10]: character 4 is '?', expected one of "
+            "\".0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ\"");
+  EXPECT_EQ(problem_after([](json& t) { t["frames"][3]["t"] = 4; }),
+            "mission.json: frames[3].t: 4 is outside [3, 3]");
+  EXPECT_EQ(problem_after([](json& t) { t["frames"][3]["u"].erase(0); }),
+            "mission.json: frames[3].u: expected 20 numbers (5 per UAV), got 19");
+  EXPECT_EQ(problem_after([](json& t) { t["frames"][3]["u"][7] = 3; }),
+            "mission.json: frames[3].u[7]: 3 is outside [1, 2]");
+  EXPECT_EQ(problem_after([](json& t) { t["frames"][3]["u"][5] = 230; }),
+            "mission.json: frames[3].u[5]: 230 is outside [0, 229]");
+  EXPECT_EQ(problem_after([](json& t) { t["frames"][0]["c"].push_back(5); }),
+            "mission.json: frames[0].c: expected [cell, value] pairs (an even length)");
+  EXPECT_EQ(problem_after([](json& t) { t["frames"][0]["c"][0] = 6900; }),
+            "mission.json: frames[0].c[0]: 6900 is outside [0, 6899]");
+  EXPECT_EQ(problem_after([](json& t) { t["frames"][0]["c"][1] = -1; }),
+            "mission.json: frames[0].c[1]: -1 is outside [0, 3]");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["p"] = {
+                  {"4", {{"mode", "x"}, {"target", nullptr}, {"plan", json::array()}}}};
+            }),
+            "mission.json: frames[2].p.4: the key must be a UAV index in [0, 3]");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["p"] = {
+                  {"1", {{"mode", "x"}, {"target", {1, 30}}, {"plan", json::array()}}}};
+            }),
+            "mission.json: frames[2].p.1.target[1]: 30 is outside [0, 29]");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["p"] = {{"1", {{"mode", "x"}, {"target", nullptr}, {"plan", {{1}}}}}};
+            }),
+            "mission.json: frames[2].p.1.plan[0]: expected [x, y]");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["l"] = {{"frontiers", {1, 2, -3}}};
+            }),
+            "mission.json: frames[2].l.frontiers[2]: -3 is outside [0, 6899]");
+  EXPECT_EQ(problem_after([](json& t) { t["series"]["known"].erase(0); }),
+            "mission.json: series.known: expected one value per frame (" +
+                std::to_string(recorded_trace()["frames"].size()) + "), got " +
+                std::to_string(recorded_trace()["frames"].size() - 1));
+  EXPECT_EQ(problem_after([](json& t) { t["result"]["T_c"] = 100000; }),
+            "mission.json: result.T_c: 100000 is outside [0, " +
+                std::to_string(recorded_trace()["frames"].size() - 1) + "]");
+  EXPECT_EQ(problem_after([](json& t) { t["result"]["complete"] = 1; }),
+            "mission.json: result.complete: expected true or false");
+}
+
+TEST(TraceReader, AcceptsOptionalAnnotationsAndLayers) {
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["p"] = {
+                  {"1", {{"mode", "explore"}, {"target", {3, 4}}, {"plan", {{3, 4}, {5, 6}}}}}};
+              t["frames"][2]["l"] = {{"frontiers", {1, 2, 3}}, {"claimed", json::array()}};
+              t["partition"] = nullptr;
+            }),
+            "(accepted)");
+}
+
+}  // namespace
+}  // namespace hullinspect::io

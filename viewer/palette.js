@@ -1,0 +1,45 @@
+// Colours of the replay viewer (docs/viewer.md): cell states, partition regions, UAVs, layers.
+// The browser test (viewer/test/viewer.test.mjs) checks drawn pixels against these values.
+'use strict';
+
+(function (hv) {
+  // Cell colours (RGB). docs/viewer.md and the browser test use the same values.
+  const COLORS = {
+    nonHull: [38, 43, 51],
+    unknown: [139, 147, 158],
+    clean: [226, 230, 235],
+    corrosion: [245, 140, 40],
+    inspected: [46, 160, 67],
+  };
+  // Partition regions: unknown cells in the region's colour, explored cells in a light tint of it.
+  // Blues, purples, teals and pinks: far from the orange, green and light red of cell states.
+  const REGION_COLORS = [
+    [78, 121, 167], [150, 110, 190], [80, 160, 170], [200, 110, 150], [110, 120, 140], [100, 140, 225],
+    [170, 90, 140], [60, 140, 130], [160, 150, 220], [70, 170, 200], [180, 130, 170], [90, 90, 170],
+  ];
+  const REGION_TINT = 0.62; // share of white mixed into a region's colour for explored cells
+  // UAV k is drawn in a dark shade of region k's colour.
+  const UAV_SHADE = 0.3;
+  const FOOTPRINT_FILL = 'rgba(40, 120, 255, 0.22)';
+  const LAYER_COLORS = {frontiers: 'rgba(255, 105, 97, 0.62)'};
+  const EXTRA_LAYER_COLORS = [
+    'rgba(150, 80, 255, 0.45)', 'rgba(0, 190, 220, 0.45)', 'rgba(255, 215, 0, 0.55)',
+    'rgba(255, 0, 190, 0.40)', 'rgba(120, 200, 0, 0.45)',
+  ];
+  const M_NAMES = ['unknown', 'clean (non-corroded, seen)', 'corrosion expected or detected',
+    'corrosion inspected'];
+
+  const rgb = (c) => `rgb(${c[0]}, ${c[1]}, ${c[2]})`;
+  const mix = (c, d, w) => c.map((v, i) => Math.round(v * (1 - w) + d[i] * w));
+
+  function regionColor(owner) { return REGION_COLORS[owner % REGION_COLORS.length]; }
+  function regionTint(owner) { return mix(regionColor(owner), [255, 255, 255], REGION_TINT); }
+  function uavColor(k) { return rgb(mix(regionColor(k), [0, 0, 0], UAV_SHADE)); }
+  function layerColor(name, i) {
+    return LAYER_COLORS[name] || EXTRA_LAYER_COLORS[i % EXTRA_LAYER_COLORS.length];
+  }
+
+  hv.palette = {
+    COLORS, FOOTPRINT_FILL, M_NAMES, rgb, regionColor, regionTint, uavColor, layerColor,
+  };
+})(window.hullinspectViewer = window.hullinspectViewer || {});

@@ -1,0 +1,177 @@
+// The replay model (docs/viewer.md): everything derived from a trace (docs/trace-format.md) once,
+// and the mission state at the current time.
+//
+// State at time t is rebuilt from keyframes + deltas: the map M is copied every KEYFRAME_INTERVAL
+// frames while loading, and a seek restores the nearest keyframe at or before t and applies the
+// cell changes of the frames after it (at most KEYFRAME_INTERVAL - 1 of them). Planner annotations
+// and layers, which traces record only when they change, are found by binary search.
+'use strict';
+
+(function (hv) {
+  const KEYFRAME_INTERVAL = 128;
+
+  // Last index i with times[i] <= t, or -1.
+  function lastAtOrBefore(times, t) {
+    let lo = 0;
+    let hi = times.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (times[mid] <= t) lo = mid + 1; else hi = mid;
+    }
+    return lo - 1;
+  }
+
+  class Replay {
+    constructor(trace) {
+      if (!trace || trace.format !== 'hullinspect-trace') throw new Error('not a hullinspect trace');
+      if (trace.version !== 1) throw new Error(`trace version ${trace.version} is not supported`);
+      this.trace = trace;
+      this.W = trace.grid.width;
+      this.H = trace.grid.height;
+      this.frameCount = trace.frames.length;
+      this.lastT = this.frameCount - 1;
+      this.uavCount = trace.frames[0].u.length / 5;
+      this.truth = this.parseRows(trace.truth);
+      this.prior = this.parseRows(trace.prior);
+      this.owner = trace.partition ? this.parseRows(trace.partition, true) : null;
+      this.indexChanges();
+      this.indexUavs();
+      this.indexAnnotations();
+      this.buildKeyframes();
+      this.t = this.lastT;
+      this.seek(0);
+    }
+
+    // rows[y] strings (y = 0 bottom) → Int8Array by flat index y * W + x; '.' → -1.
+    parseRows(rows, symbols) {
+      const out = new Int8Array(this.W * this.H);
+      for (let y = 0; y < this.H; ++y) {
+        const row = rows[y];
+        for (let x = 0; x < this.W; ++x) {
+          const ch = row.charCodeAt(x);
+          let v = -1;
+          if (ch >= 48 && ch <= 57) v = ch - 48;
+          else if (symbols && ch >= 65 && ch <= 90) v = ch - 55;
+          out[y * this.W + x] = v;
+        }
+      }
+      return out;
+    }
+
+    // All cell changes in two flat arrays; frame i's are [changeStart[i], changeStart[i + 1]).
+    indexChanges() {
+      const frames = this.trace.frames;
+      let total = 0;
+      for (const f of frames) total += f.c.length / 2;
+      this.changeStart = new Int32Array(this.frameCount + 1);
+      this.changeCell = new Int32Array(total);
+      this.changeValue = new Int8Array(total);
+      let j = 0;
+      for (let i = 0; i < this.frameCount; ++i) {
+        this.changeStart[i] = j;
+        const c = frames[i].c;
+        for (let k = 0; k < c.length; k += 2, ++j) {
+          this.changeCell[j] = c[k];
+          this.changeValue[j] = c[k + 1];
+        }
+      }
+      this.changeStart[this.frameCount] = j;
+    }
+
+    // UAV states of every frame: [x, y, z, transit_left, active] per UAV.
+    indexUavs() {
+      const n5 = this.uavCount * 5;
+      this.uav = new Int32Array(this.frameCount * n5);
+      this.trace.frames.forEach((f, i) => this.uav.set(f.u, i * n5));
+    }
+
+    uavState(t, k) {
+      const o = (t * this.uavCount + k) * 5;
+      const u = this.uav;
+      return {x: u[o], y: u[o + 1], z: u[o + 2], transit: u[o + 3], active: u[o + 4] === 1};
+    }
+
+    // Per UAV and per layer: the frames where the annotation changed, for binary search.
+    indexAnnotations() {
+      this.annotationTimes = Array.from({length: this.uavCount}, () => []);
+      this.annotations = Array.from({length: this.uavCount}, () => []);
+      this.layerNames = [];
+      this.layerTimes = {};
+      this.layerCells = {};
+      this.trace.frames.forEach((f, t) => {
+        if (f.p) {
+          for (const key of Object.keys(f.p)) {
+            const k = Number(key);
+            if (!(k >= 0 && k < this.uavCount)) continue;
+            this.annotationTimes[k].push(t);
+            this.annotations[k].push(f.p[key]);
+          }
+        }
+        if (f.l) {
+          for (const name of Object.keys(f.l)) {
+            if (!this.layerTimes[name]) {
+              this.layerNames.push(name);
+              this.layerTimes[name] = [];
+              this.layerCells[name] = [];
+            }
+            this.layerTimes[name].push(t);
+            this.layerCells[name].push(f.l[name]);
+          }
+        }
+      });
+      this.layerNames.sort((a, b) => (a === 'frontiers' ? -1 : b === 'frontiers' ? 1 : a < b ? -1 : 1));
+    }
+
+    annotation(k, t) {
+      const i = lastAtOrBefore(this.annotationTimes[k], t);
+      return i < 0 ? null : this.annotations[k][i];
+    }
+
+    layer(name, t) {
+      const i = lastAtOrBefore(this.layerTimes[name], t);
+      return i < 0 ? [] : this.layerCells[name][i];
+    }
+
+    applyFrame(i, map) {
+      const end = this.changeStart[i + 1];
+      for (let j = this.changeStart[i]; j < end; ++j) map[this.changeCell[j]] = this.changeValue[j];
+    }
+
+    buildKeyframes() {
+      const map = this.parseRows(this.trace.initial_map);
+      this.keyframes = [];
+      for (let i = 0; i < this.frameCount; ++i) {
+        this.applyFrame(i, map);
+        if (i % KEYFRAME_INTERVAL === 0) this.keyframes.push(map.slice());
+      }
+      this.map = new Int8Array(map.length);
+    }
+
+    // Makes this.map the map M at time t.
+    seek(t) {
+      t = Math.max(0, Math.min(this.lastT, Math.round(t)));
+      if (t === this.t) return t;
+      let from;
+      if (t > this.t && t - this.t < KEYFRAME_INTERVAL) {
+        from = this.t + 1;
+      } else {
+        const k = Math.floor(t / KEYFRAME_INTERVAL);
+        this.map.set(this.keyframes[k]);
+        from = k * KEYFRAME_INTERVAL + 1;
+      }
+      for (let i = from; i <= t; ++i) this.applyFrame(i, this.map);
+      this.t = t;
+      return t;
+    }
+
+    coverage(t) {
+      const r = this.trace.result;
+      const s = this.trace.series;
+      const c = r.corroded_cells > 0 ? (100 * s.inspected[t]) / r.corroded_cells : 100;
+      const m = r.hull_cells > 0 ? (100 * s.known[t]) / r.hull_cells : 100;
+      return {c, m};
+    }
+  }
+
+  hv.Replay = Replay;
+})(window.hullinspectViewer = window.hullinspectViewer || {});

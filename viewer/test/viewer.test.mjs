@@ -1,0 +1,314 @@
+// Browser test of the replay viewer: Debian's Chromium driven by playwright-core, no network.
+// Run by CTest as `viewer_browser` (HULLINSPECT_CLI = the built CLI), or by hand:
+//   HULLINSPECT_CLI=build/release/hullinspect node --test viewer/test/viewer.test.mjs
+// Screenshots and measurements go to $HULLINSPECT_TEST_OUTPUT (default: a new temporary folder).
+
+import {after, before, test} from 'node:test';
+import assert from 'node:assert/strict';
+import {execFileSync, spawnSync} from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+import {mapAt, prng, syntheticTrace} from './synthetic_trace.mjs';
+
+const CLI = process.env.HULLINSPECT_CLI;
+const CHROMIUM = process.env.HULLINSPECT_CHROMIUM || '/usr/bin/chromium';
+const OUT = process.env.HULLINSPECT_TEST_OUTPUT ||
+    fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-viewer-test-'));
+
+// The viewer's colours (viewer/viewer.js, docs/viewer.md), written out again on purpose.
+const NON_HULL = [38, 43, 51];
+const UNKNOWN = [139, 147, 158];
+const CLEAN = [226, 230, 235];
+const CORROSION = [245, 140, 40];
+const INSPECTED = [46, 160, 67];
+const REGIONS = [
+  [78, 121, 167], [150, 110, 190], [80, 160, 170], [200, 110, 150], [110, 120, 140], [100, 140, 225],
+  [170, 90, 140], [60, 140, 130], [160, 150, 220], [70, 170, 200], [180, 130, 170], [90, 90, 170],
+];
+const tint = (c) => c.map((v) => Math.round(v * (1 - 0.62) + 255 * 0.62));
+
+function expectedColor(trace, map, i) {
+  const v = map[i];
+  if (v < 0) return NON_HULL;
+  if (v === 2) return CORROSION;
+  if (v === 3) return INSPECTED;
+  if (trace.partition) {
+    const W = trace.grid.width;
+    const ch = trace.partition[Math.floor(i / W)][i % W];
+    const owner = ch >= 'A' ? ch.charCodeAt(0) - 55 : Number(ch);
+    const region = REGIONS[owner % REGIONS.length];
+    return v === 0 ? region : tint(region);
+  }
+  return v === 0 ? UNKNOWN : CLEAN;
+}
+
+const BROWSER_ARGS = [
+  '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync',
+];
+
+let chromium;
+let context;
+let userDataDir;
+let mission; // {trace, html}
+let synthetic; // {trace, html}
+const measurements = {};
+
+function cli(args) {
+  return spawnSync(CLI, args, {encoding: 'utf8'});
+}
+
+before(async () => {
+  assert.ok(CLI, 'set HULLINSPECT_CLI to the hullinspect binary (CTest does)');
+  assert.ok(fs.existsSync(CLI), `HULLINSPECT_CLI=${CLI} does not exist: build it first`);
+  try {
+    ({chromium} = await import('playwright-core'));
+  } catch (e) {
+    assert.fail(`playwright-core is not installed: run scripts/setup (npm ci in viewer/test): ${e.message}`);
+  }
+  fs.mkdirSync(OUT, {recursive: true});
+
+  // A real mission: 8 UAVs, lawnmower (partitioned), with its trace and both ways to the page.
+  const tracePath = path.join(OUT, 'mission.json');
+  const runHtml = path.join(OUT, 'mission-run.html');
+  const run = cli(['run', '--uavs', '8', '--seed', '3', '--trace', tracePath, '--html', runHtml]);
+  assert.equal(run.status, 0, run.stderr);
+  const viewHtml = path.join(OUT, 'mission.html');
+  execFileSync(CLI, ['view', tracePath, '--out', viewHtml]);
+  mission = {trace: JSON.parse(fs.readFileSync(tracePath, 'utf8')), html: viewHtml, runHtml};
+
+  // A long synthetic mission: 8 UAVs × 5000 steps, annotations and a frontier layer every step.
+  const started = Date.now();
+  const long = syntheticTrace(mission.trace, {uavs: 8, steps: 5000, seed: 11});
+  const longPath = path.join(OUT, 'synthetic-8x5000.json');
+  fs.writeFileSync(longPath, JSON.stringify(long));
+  const longHtml = path.join(OUT, 'synthetic-8x5000.html');
+  execFileSync(CLI, ['view', longPath, '--out', longHtml]);
+  synthetic = {trace: long, html: longHtml};
+  measurements.synthetic_trace_mb = fs.statSync(longPath).size / 1e6;
+  measurements.synthetic_generation_ms = Date.now() - started;
+
+  userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-chromium-'));
+  context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: CHROMIUM,
+    headless: true,
+    args: BROWSER_ARGS,
+    viewport: {width: 1400, height: 900},
+    deviceScaleFactor: 1,
+  });
+  // No network: anything but the page's own file is refused (the page's CSP forbids it too).
+  await context.route('**/*', (route) =>
+    route.request().url().startsWith('file:') ? route.continue() : route.abort());
+});
+
+after(async () => {
+  if (context) await context.close();
+  if (userDataDir) fs.rmSync(userDataDir, {recursive: true, force: true});
+  fs.writeFileSync(path.join(OUT, 'measurements.json'), JSON.stringify(measurements, null, 2) + '\n');
+});
+
+// Opens a viewer page; returns the page, the requests it made and the time until it was ready.
+async function open(file) {
+  const page = await context.newPage();
+  const requests = [];
+  const errors = [];
+  page.on('request', (r) => requests.push(r.url()));
+  page.on('pageerror', (e) => errors.push(e.message));
+  const started = performance.now();
+  await page.goto(`file://${file}`);
+  await page.waitForFunction(() => window.hullViewer && (window.hullViewer.ready || window.hullViewer.error));
+  const openMs = performance.now() - started;
+  assert.equal(await page.evaluate(() => window.hullViewer.error), null);
+  assert.deepEqual(errors, []);
+  await settle(page);
+  return {page, requests, errors, openMs};
+}
+
+// Waits until the viewer has drawn what was asked (drawing happens on animation frames).
+async function settle(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+
+async function pixelOfCell(page, x, y) {
+  return page.evaluate(({x, y}) => {
+    const canvas = document.getElementById('grid-canvas');
+    const {W, H} = window.hullViewer.replay;
+    const sx = canvas.width / W;
+    const sy = canvas.height / H;
+    const data = canvas.getContext('2d').getImageData(Math.floor((x + 0.5) * sx),
+                                                       Math.floor((H - 1 - y + 0.5) * sy), 1, 1).data;
+    return [data[0], data[1], data[2]];
+  }, {x, y});
+}
+
+// A few cells of every state present at time t, plus random ones.
+function sampleCells(trace, map, seed) {
+  const W = trace.grid.width;
+  const byState = new Map();
+  map.forEach((v, i) => {
+    if (!byState.has(v)) byState.set(v, []);
+    byState.get(v).push(i);
+  });
+  const random = prng(seed);
+  const cells = [];
+  for (const list of byState.values()) {
+    for (let j = 0; j < 3; ++j) cells.push(list[Math.floor(random() * list.length)]);
+  }
+  for (let j = 0; j < 10; ++j) cells.push(Math.floor(random() * map.length));
+  return cells.map((i) => ({i, x: i % W, y: Math.floor(i / W)}));
+}
+
+async function checkCellsAt(page, trace, t) {
+  await page.evaluate((t) => window.hullViewer.seek(t), t);
+  await settle(page);
+  assert.equal(await page.evaluate(() => window.hullViewer.time()), t);
+  assert.match(await page.textContent('#time-display'), new RegExp(`^t = ${t} s`));
+  const {map} = mapAt(trace, t);
+  const states = new Set();
+  for (const {i, x, y} of sampleCells(trace, map, t + 1)) {
+    states.add(map[i]);
+    assert.deepEqual(await pixelOfCell(page, x, y), expectedColor(trace, map, i),
+                     `cell (${x}, ${y}) at t = ${t}, M = ${map[i]}`);
+  }
+  return states;
+}
+
+test('run --html and view write the same self-contained page', () => {
+  const a = fs.readFileSync(mission.html, 'utf8');
+  assert.equal(fs.readFileSync(mission.runHtml, 'utf8'), a);
+  assert.doesNotMatch(a, /<script[^>]*\ssrc=|<link[^>]*\shref=|https?:\/\//i);
+});
+
+test('the page loads nothing but itself', async () => {
+  const {page, requests} = await open(mission.html);
+  assert.deepEqual(requests, [`file://${mission.html}`]);
+  await page.close();
+});
+
+test('shows the trace\'s T_c, T_m and counters', async () => {
+  const {page} = await open(mission.html);
+  const r = mission.trace.result;
+  assert.equal(await page.textContent('#stat-tc'), `${r.T_c} s`);
+  assert.equal(await page.textContent('#stat-tm'), `${r.T_m} s`);
+  assert.match(await page.textContent('#stat-counters'), new RegExp(`moves ${r.moves} `));
+  assert.equal(await page.$$eval('#uav-table tbody tr', (rows) => rows.length), 8);
+  await page.click('#btn-tc');
+  await settle(page);
+  assert.equal(await page.evaluate(() => window.hullViewer.time()), r.T_c);
+  await page.keyboard.press('m');
+  await settle(page);
+  assert.equal(await page.evaluate(() => window.hullViewer.time()), r.T_m);
+  await page.close();
+});
+
+test('seeking draws the map of that time (forwards, backwards, across keyframes)', async () => {
+  const {page} = await open(mission.html);
+  const trace = mission.trace;
+  const last = trace.frames.length - 1;
+  const states = new Set();
+  for (const t of [37, 120, last, 5, 0, Math.floor(last / 2)]) {
+    for (const s of await checkCellsAt(page, trace, t)) states.add(s);
+  }
+  // Every cell state was among the checked pixels.
+  assert.deepEqual([...states].sort(), [-1, 0, 1, 2, 3]);
+  await page.close();
+});
+
+test('the slider and the arrow keys move in time, play advances it', async () => {
+  const {page} = await open(mission.html);
+  await page.$eval('#slider', (s) => { s.value = '50'; s.dispatchEvent(new Event('input')); });
+  await settle(page);
+  assert.equal(await page.evaluate(() => window.hullViewer.time()), 50);
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('ArrowLeft');
+  assert.equal(await page.evaluate(() => window.hullViewer.time()), 51);
+  await page.keyboard.press('Shift+ArrowRight');
+  assert.equal(await page.evaluate(() => window.hullViewer.time()), 61);
+  await page.keyboard.press('Space');
+  await page.waitForFunction(() => window.hullViewer.time() > 63, null, {timeout: 5000});
+  await page.keyboard.press('Space');
+  const paused = await page.evaluate(() => window.hullViewer.time());
+  await page.waitForTimeout(300);
+  assert.equal(await page.evaluate(() => window.hullViewer.time()), paused);
+  assert.match(await page.textContent('#time-display'), new RegExp(`^t = ${paused} s`));
+  // The play button does the same.
+  await page.click('#btn-play');
+  await page.waitForFunction((p) => window.hullViewer.time() > p, paused, {timeout: 5000});
+  await page.click('#btn-play');
+  assert.equal(await page.evaluate(() => window.hullViewer.viewer.playing), false);
+  await page.close();
+});
+
+test('hovering a cell describes it', async () => {
+  const {page} = await open(mission.html);
+  await page.evaluate(() => window.hullViewer.seek(0));
+  const box = await page.locator('#overlay-canvas').boundingBox();
+  const {width: W, height: H} = mission.trace.grid;
+  const cell = box.width / W;
+  await page.mouse.move(box.x + 100.5 * cell, box.y + (H - 1 - 20 + 0.5) * cell);
+  await settle(page);
+  const text = await page.textContent('#hover-info');
+  const truth = mission.trace.truth[20][100];
+  assert.match(text, new RegExp(`^cell \\(100, 20\\) .* truth C = ${truth} `));
+  await page.close();
+});
+
+test('8 UAVs × 5000 steps open, seek and play smoothly', async (t) => {
+  const {page, openMs} = await open(synthetic.html);
+  const inPage = await page.evaluate(() => {
+    const v = window.hullViewer;
+    return {scriptAt: v.scriptAt, parseMs: v.parseMs, setupMs: v.setupMs, readyAt: v.readyAt};
+  });
+  measurements.synthetic_open_ms = Math.round(openMs);
+  measurements.synthetic_ready_since_navigation_ms = Math.round(inPage.readyAt);
+  measurements.synthetic_html_loaded_ms = Math.round(inPage.scriptAt);
+  measurements.synthetic_json_parse_ms = Math.round(inPage.parseMs);
+  measurements.synthetic_replay_setup_ms = Math.round(inPage.setupMs);
+  t.diagnostic(`synthetic trace ${measurements.synthetic_trace_mb.toFixed(1)} MB: open ${openMs.toFixed(0)} ms; ` +
+               `in the page: script starts at ${inPage.scriptAt.toFixed(0)} ms, JSON.parse ` +
+               `${inPage.parseMs.toFixed(0)} ms, keyframes and first draw ${inPage.setupMs.toFixed(0)} ms, ` +
+               `ready at ${inPage.readyAt.toFixed(0)} ms`);
+  // Seeks, checked against the slow reconstruction.
+  for (const time of [4999, 2500, 2499, 130, 4000]) await checkCellsAt(page, synthetic.trace, time);
+  const seek = await page.evaluate(() => {
+    const v = window.hullViewer;
+    const started = performance.now();
+    for (let i = 0; i < 200; ++i) v.replay.seek((i * 2654435761) % 5001);
+    return (performance.now() - started) / 200;
+  });
+  measurements.synthetic_seek_ms = Number(seek.toFixed(3));
+  // Drawing one frame (cells, overlays, chart, tables).
+  const draw = await page.evaluate(() => {
+    const v = window.hullViewer.viewer;
+    const started = performance.now();
+    for (let i = 0; i < 100; ++i) { v.replay.seek(1000 + i); v.draw(); }
+    return (performance.now() - started) / 100;
+  });
+  measurements.synthetic_frame_ms = Number(draw.toFixed(2));
+  t.diagnostic(`seek ${seek.toFixed(3)} ms, seek + draw one frame ${draw.toFixed(2)} ms`);
+  await page.evaluate(() => window.hullViewer.seek(2000));
+  await page.selectOption('#speed', '250');
+  await page.keyboard.press('Space');
+  await page.waitForTimeout(1000);
+  await page.keyboard.press('Space');
+  const reached = await page.evaluate(() => window.hullViewer.time());
+  measurements.synthetic_play_steps_in_1s_at_250 = reached - 2000;
+  assert.ok(reached > 2000, 'play advanced');
+  await page.screenshot({path: path.join(OUT, 'viewer-synthetic.png'), fullPage: true});
+  await page.close();
+});
+
+test('screenshot of a real mission', async (t) => {
+  const {page, openMs} = await open(mission.html);
+  measurements.mission_open_ms = Math.round(openMs);
+  await page.evaluate(() => window.hullViewer.seek(90));
+  await settle(page);
+  const file = path.join(OUT, 'viewer-mission.png');
+  await page.screenshot({path: file, fullPage: true});
+  assert.ok(fs.statSync(file).size > 10000);
+  t.diagnostic(`screenshots in ${OUT}`);
+  await page.close();
+});
