@@ -37,8 +37,16 @@ int run_tsp(const TspArgs& args) {
                          fmt::format("must be >= 0 seconds (got {})", args.time_limit));
   }
   if (args.time_limit > 0) options["time_limit"] = fmt::format("{}", args.time_limit);
+  std::unique_ptr<tsp::TspSolver> solver;
+  try {
+    solver = tsp::make_tsp_solver(args.solver, options);
+  } catch (const ParameterError& e) {
+    // Name the option the user typed: --solver, --time-limit, or --option for the others.
+    if (e.name() == "tsp_solver") throw ParameterError("solver", e.problem());
+    if (e.name().ends_with(".time_limit")) throw ParameterError("time_limit", e.problem());
+    throw ParameterError("option", e.what());
+  }
   const tsp::SegmentTsp problem = io::read_tsp_instance(args.file);
-  auto solver = tsp::make_tsp_solver(args.solver, options);
   const tsp::TspSolution solution = solver->solve(problem);
   std::cout << io::tsp_solution_json(solution).dump() << "\n";
   return 0;

@@ -18,17 +18,19 @@ grid::Cell parse_cell(const json& value, const std::string& where, const std::st
   }
   int xy[2] = {0, 0};
   for (std::size_t k = 0; k < 2; ++k) {
-    // Unsigned JSON integers above INT64_MAX read as huge values here, which the range check
-    // catches.
-    const auto v = value[k].is_number_unsigned() ? static_cast<long long>(std::min<std::uint64_t>(
-                                                       value[k].get<std::uint64_t>(), 1ull << 62))
-                                                 : value[k].get<long long>();
-    if (v < -kTspCoordinateLimit || v > kTspCoordinateLimit) {
+    const json& v = value[k];
+    // Unsigned JSON integers may exceed the signed range: compare them as unsigned.
+    const bool in_range =
+        v.is_number_unsigned()
+            ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(kTspCoordinateLimit)
+            : v.get<std::int64_t>() >= -kTspCoordinateLimit &&
+                  v.get<std::int64_t>() <= kTspCoordinateLimit;
+    if (!in_range) {
       throw InputError(source, 0,
-                       fmt::format("{}: coordinate {} is outside [{}, {}]", where, v,
+                       fmt::format("{}: coordinate {} is outside [{}, {}]", where, v.dump(),
                                    -kTspCoordinateLimit, kTspCoordinateLimit));
     }
-    xy[k] = static_cast<int>(v);
+    xy[k] = static_cast<int>(v.get<std::int64_t>());
   }
   return {xy[0], xy[1]};
 }
