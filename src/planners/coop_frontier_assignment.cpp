@@ -39,6 +39,14 @@ void FrontierAssigner::configure(double beta, int s2, int max_distance) {
   }
 }
 
+void FrontierAssigner::reserve(int frontiers, int robots) {
+  reduced_.reserve(static_cast<std::size_t>(std::max(0, frontiers)));
+  const auto r = static_cast<std::size_t>(std::max(0, robots));
+  assigned_.reserve(r);
+  picks_.reserve(r);
+  best_.reserve(r);
+}
+
 void FrontierAssigner::reduce_around(std::span<const grid::Cell> frontiers, grid::Cell assigned) {
   const auto limit = static_cast<long long>(reduction_.size());
   for (std::size_t j = 0; j < frontiers.size(); ++j) {
@@ -47,6 +55,22 @@ void FrontierAssigner::reduce_around(std::span<const grid::Cell> frontiers, grid
     const long long q = dx * dx + dy * dy;
     if (q < limit) reduced_[j] *= reduction_[static_cast<std::size_t>(q)];
   }
+}
+
+FrontierAssigner::Pick FrontierAssigner::best_for(std::span<const grid::Cell> frontiers, int robot,
+                                                  grid::Cell at) const {
+  const auto table = travel_term_.size();
+  Pick best;
+  for (std::size_t j = 0; j < frontiers.size(); ++j) {
+    const auto d = static_cast<std::size_t>(grid::manhattan(at, frontiers[j]));
+    const double travel = d < table ? travel_term_[d] : beta_ / static_cast<double>(d);
+    const double score = reduced_[j] + travel;
+    if (best.frontier < 0 || score > best.score ||
+        (score == best.score && frontiers[j] < frontiers[static_cast<std::size_t>(best.frontier)])) {
+      best = {robot, static_cast<int>(j), score};
+    }
+  }
+  return best;
 }
 
 void FrontierAssigner::assign(std::span<const grid::Cell> frontiers,
@@ -58,30 +82,37 @@ void FrontierAssigner::assign(std::span<const grid::Cell> frontiers,
   if (frontiers.empty()) return;
   for (const grid::Cell h : held) reduce_around(frontiers, h);
   assigned_.assign(robots.size(), 0);
-
-  const auto table = travel_term_.size();
+  // Each robot's best frontier under the current reduced utilities. A reduction only lowers U, so a
+  // robot's best stays its best unless that very frontier was reduced: only then is it recomputed.
+  // This gives the same pairs as scanning every (r, f) in every round.
+  best_.resize(robots.size());
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    best_[r] = best_for(frontiers, static_cast<int>(r), robots[r]);
+  }
+  const auto limit = static_cast<long long>(reduction_.size());
   for (std::size_t round = 0; round < robots.size(); ++round) {
-    Pick best;
+    // argmax over robots; the scan in id order keeps the lowest robot on equal scores, and each
+    // robot's own best already has the lowest (y, x) among its equal scores.
+    int winner = -1;
     for (std::size_t r = 0; r < robots.size(); ++r) {
       if (assigned_[r]) continue;
-      const grid::Cell at = robots[r];
-      for (std::size_t j = 0; j < frontiers.size(); ++j) {
-        const auto d = static_cast<std::size_t>(grid::manhattan(at, frontiers[j]));
-        const double travel = d < table ? travel_term_[d] : beta_ / static_cast<double>(d);
-        const double score = reduced_[j] + travel;
-        // Robots are scanned in id order, so an equal score only wins on a lower (y, x) frontier
-        // of the same robot.
-        if (best.robot < 0 || score > best.score ||
-            (score == best.score && static_cast<int>(r) == best.robot &&
-             frontiers[j] < frontiers[static_cast<std::size_t>(best.frontier)])) {
-          best = {static_cast<int>(r), static_cast<int>(j), score};
-        }
+      if (winner < 0 || best_[r].score > best_[static_cast<std::size_t>(winner)].score) {
+        winner = static_cast<int>(r);
       }
     }
-    assigned_[static_cast<std::size_t>(best.robot)] = 1;
-    chosen[static_cast<std::size_t>(best.robot)] = best.frontier;
-    picks_.push_back(best);
-    reduce_around(frontiers, frontiers[static_cast<std::size_t>(best.frontier)]);
+    const Pick pick = best_[static_cast<std::size_t>(winner)];
+    assigned_[static_cast<std::size_t>(winner)] = 1;
+    chosen[static_cast<std::size_t>(winner)] = pick.frontier;
+    picks_.push_back(pick);
+    const grid::Cell f = frontiers[static_cast<std::size_t>(pick.frontier)];
+    reduce_around(frontiers, f);
+    for (std::size_t r = 0; r < robots.size(); ++r) {
+      if (assigned_[r]) continue;
+      const grid::Cell g = frontiers[static_cast<std::size_t>(best_[r].frontier)];
+      const long long dx = g.x - f.x;
+      const long long dy = g.y - f.y;
+      if (dx * dx + dy * dy < limit) best_[r] = best_for(frontiers, static_cast<int>(r), robots[r]);
+    }
   }
 }
 

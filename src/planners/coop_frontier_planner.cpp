@@ -38,6 +38,7 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   uavs_.assign(static_cast<std::size_t>(n), UavPlan{first, {-1, -1}, false});
 
   assigner_.configure(options_.beta, context.params.s2, w + h);
+  assigner_.reserve(prior.size(), n);
   utility_.clear();
   utility_.reserve(static_cast<std::size_t>(prior.size()));
   held_.clear();

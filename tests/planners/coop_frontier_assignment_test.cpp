@@ -9,6 +9,7 @@
 
 #include "hullinspect/grid/distance.hpp"
 #include "hullinspect/planners/coop_frontier_assignment.hpp"
+#include "hullinspect/world/random.hpp"
 
 namespace hullinspect::planners {
 namespace {
@@ -157,6 +158,84 @@ TEST(CoopFrontierAssigner, NoFrontiersLeavesRobotsUnassigned) {
   EXPECT_EQ(chosen[0], -1);
   EXPECT_EQ(chosen[1], -1);
   EXPECT_TRUE(a.picks().empty());
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
+
+namespace hullinspect::planners {
+namespace {
+
+// The literal eqs. 15–17: every round scans every (unassigned robot, frontier) pair.
+std::vector<int> reference_assignment(std::span<const grid::Cell> frontiers,
+                                      std::vector<double> u, std::span<const grid::Cell> held,
+                                      std::span<const grid::Cell> robots, double beta, int s2) {
+  auto reduce = [&](grid::Cell at) {
+    for (std::size_t j = 0; j < frontiers.size(); ++j) {
+      const double dx = frontiers[j].x - at.x;
+      const double dy = frontiers[j].y - at.y;
+      u[j] *= utility_reduction(std::sqrt(dx * dx + dy * dy), s2);
+    }
+  };
+  for (const auto h : held) reduce(h);
+  std::vector<int> chosen(robots.size(), -1);
+  for (std::size_t round = 0; round < robots.size(); ++round) {
+    int br = -1;
+    int bf = -1;
+    double bs = 0;
+    for (std::size_t r = 0; r < robots.size(); ++r) {
+      if (chosen[r] >= 0) continue;
+      for (std::size_t j = 0; j < frontiers.size(); ++j) {
+        const double s = u[j] + beta / std::max(1, grid::manhattan(robots[r], frontiers[j]));
+        const bool better = br < 0 || s > bs ||
+                            (s == bs && (static_cast<int>(r) < br ||
+                                         (static_cast<int>(r) == br &&
+                                          frontiers[j] < frontiers[static_cast<std::size_t>(bf)])));
+        if (better) {
+          br = static_cast<int>(r);
+          bf = static_cast<int>(j);
+          bs = s;
+        }
+      }
+    }
+    chosen[static_cast<std::size_t>(br)] = bf;
+    reduce(frontiers[static_cast<std::size_t>(bf)]);
+  }
+  return chosen;
+}
+
+TEST(CoopFrontierAssigner, MatchesTheLiteralGreedyOnRandomInputs) {
+  world::RandomStream rng(99, 0);
+  FrontierAssigner a;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int w = 5 + static_cast<int>(rng.below(60));
+    const int h = 3 + static_cast<int>(rng.below(20));
+    const int s2 = trial % 2 == 0 ? 7 : 11;
+    const double beta = trial % 5 == 0 ? 0.0 : 0.25 * static_cast<double>(rng.below(12));
+    std::vector<grid::Cell> frontiers(1 + rng.below(40));
+    std::vector<double> utility(frontiers.size());
+    for (std::size_t j = 0; j < frontiers.size(); ++j) {
+      frontiers[j] = {static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+                      static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+      // Coarse values so equal scores (tie-breaks) occur often.
+      utility[j] = trial % 3 == 0 ? 0.0 : 0.25 * static_cast<double>(rng.below(4));
+    }
+    std::vector<grid::Cell> held(rng.below(3));
+    for (auto& c : held) {
+      c = {static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+           static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+    }
+    std::vector<grid::Cell> robots(1 + rng.below(8));
+    for (auto& c : robots) {
+      c = {static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+           static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+    }
+    std::vector<int> chosen(robots.size());
+    a.configure(beta, s2, w + h);
+    a.assign(frontiers, utility, held, robots, chosen);
+    ASSERT_EQ(chosen, reference_assignment(frontiers, utility, held, robots, beta, s2))
+        << "trial " << trial;
+  }
 }
 
 }  // namespace

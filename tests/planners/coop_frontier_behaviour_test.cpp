@@ -140,7 +140,7 @@ struct EndGameWorld {
 
 TEST(CoopFrontierBehaviour, EndGameTakesTheNearestCorrosionCellAndDescends) {
   EndGameWorld w;
-  CoopFrontierPlanner planner;
+  CoopFrontierPlanner planner({.alpha = 0.5, .beta = 1.0});
   LockStep run(w.hull, w.instance, w.params, planner);
   int t = 0;
   while (true) {

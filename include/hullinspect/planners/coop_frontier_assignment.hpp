@@ -30,6 +30,8 @@ class FrontierAssigner {
   /// β of eq. 15, s2 of eq. 17, and the largest Manhattan distance that can occur (grid width +
   /// height) so the β / max(1, d) terms come from a table.
   void configure(double beta, int s2, int max_distance);
+  /// Reserves room for up to `frontiers` frontiers and `robots` robots, so assign() never allocates.
+  void reserve(int frontiers, int robots);
 
   /// Assigns one frontier to every robot. `frontiers` are the cells of F with their utilities U_f
   /// (eq. 13) in `utility`; `held` are the targets other EXPLORE UAVs keep, which reduce U by eq. 16
@@ -50,6 +52,8 @@ class FrontierAssigner {
 
  private:
   void reduce_around(std::span<const grid::Cell> frontiers, grid::Cell assigned);
+  /// The best frontier of one robot under the current reduced utilities (ties: lowest (y, x)).
+  Pick best_for(std::span<const grid::Cell> frontiers, int robot, grid::Cell at) const;
 
   double beta_ = 1.0;
   int s2_ = 7;
@@ -58,6 +62,7 @@ class FrontierAssigner {
   std::vector<double> reduced_;
   std::vector<unsigned char> assigned_;
   std::vector<Pick> picks_;
+  std::vector<Pick> best_;  // per robot
 };
 
 }  // namespace hullinspect::planners

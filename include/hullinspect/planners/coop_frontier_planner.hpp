@@ -19,10 +19,10 @@ namespace hullinspect::planners {
 
 struct CoopFrontierOptions {
   /// α of eq. 13: weight of the prior term 1/d_HP against the detection term 1/d_C, in [0, 1].
-  /// Default tuned on seeds 1001–1030 (docs/coop-frontier.md).
-  double alpha = 0.5;
-  /// β of eq. 15: weight of the travel term 1/d(r, f), ≥ 0. Default tuned as α.
-  double beta = 1.0;
+  /// Tuned on seeds 1001–1030 (docs/coop-frontier.md; the spec's untuned value is 0.5).
+  double alpha = 1.0;
+  /// β of eq. 15: weight of the travel term 1/d(r, f), ≥ 0. Tuned with α (untuned: 1.0).
+  double beta = 8.0;
   /// Close-up radius of the INSPECT target rule in units of Δζ (the paper's 2·Δζ), ≥ 0.
   double radius_factor = 2.0;
   /// End game (F empty): an INSPECT UAV whose target set is empty takes the nearest unclaimed
