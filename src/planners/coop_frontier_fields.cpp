@@ -10,26 +10,31 @@ void manhattan_distance_transform(const grid::Grid<std::uint8_t>& sources, grid:
   if (out.width() != w || out.height() != h) out = grid::Grid<int>(w, h);
   // kUnreachable + 1 cannot overflow (kUnreachable = INT_MAX / 4), so no special case is needed.
   constexpr int kFar = grid::kUnreachable;
-  // Forward pass: nearest source below or to the left (and any mix of those moves).
+  const std::uint8_t* src = sources.values().data();
+  int* d = out.values().data();
+  // Forward pass, row by row from the bottom: nearest source below (a column-wise step the compiler
+  // can vectorise), then to the left (a running scan along the row).
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const int i = y * w + x;
-      int d = sources[i] ? 0 : kFar;
-      if (x > 0) d = std::min(d, out[i - 1] + 1);
-      if (y > 0) d = std::min(d, out[i - w] + 1);
-      out[i] = d;
+    int* row = d + static_cast<std::ptrdiff_t>(y) * w;
+    const std::uint8_t* s = src + static_cast<std::ptrdiff_t>(y) * w;
+    if (y == 0) {
+      for (int x = 0; x < w; ++x) row[x] = s[x] ? 0 : kFar;
+    } else {
+      const int* below = row - w;
+      for (int x = 0; x < w; ++x) row[x] = s[x] ? 0 : below[x] + 1;
     }
+    for (int x = 1; x < w; ++x) row[x] = std::min(row[x], row[x - 1] + 1);
   }
-  // Backward pass: combines with the sources above or to the right. Two passes are exact for the
-  // city-block metric because every shortest path can be ordered as one monotone run per pass.
+  // Backward pass from the top: above, then to the right. Two passes are exact for the city-block
+  // metric: a shortest path to a source can be ordered as one monotone run per pass.
   for (int y = h - 1; y >= 0; --y) {
-    for (int x = w - 1; x >= 0; --x) {
-      const int i = y * w + x;
-      int d = out[i];
-      if (x + 1 < w) d = std::min(d, out[i + 1] + 1);
-      if (y + 1 < h) d = std::min(d, out[i + w] + 1);
-      out[i] = std::min(d, kFar);
+    int* row = d + static_cast<std::ptrdiff_t>(y) * w;
+    if (y + 1 < h) {
+      const int* above = row + w;
+      for (int x = 0; x < w; ++x) row[x] = std::min(row[x], above[x] + 1);
     }
+    for (int x = w - 2; x >= 0; --x) row[x] = std::min(row[x], row[x + 1] + 1);
+    for (int x = 0; x < w; ++x) row[x] = std::min(row[x], kFar);
   }
 }
 

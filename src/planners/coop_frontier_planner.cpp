@@ -110,14 +110,18 @@ std::optional<grid::Cell> CoopFrontierPlanner::claim_nearest_free(int uav, grid:
 }
 
 void CoopFrontierPlanner::assign_frontiers() {
-  prior_field_.refresh();
-  detected_field_.refresh();
+  // A term with zero weight needs no field (α = 1, the tuned default, never reads d_C).
+  const bool use_prior = options_.alpha > 0.0;
+  const bool use_detected = options_.alpha < 1.0;
+  if (use_prior) prior_field_.refresh();
+  if (use_detected) detected_field_.refresh();
   const auto indices = frontiers_.indices();
   utility_.resize(indices.size());
   for (std::size_t j = 0; j < indices.size(); ++j) {
     const int i = indices[j];
-    utility_[j] = frontier_utility(options_.alpha, prior_field_.distance(i),
-                                   detected_field_.distance(i));
+    utility_[j] = frontier_utility(options_.alpha,
+                                   use_prior ? prior_field_.distance(i) : grid::kUnreachable,
+                                   use_detected ? detected_field_.distance(i) : grid::kUnreachable);
   }
   assigner_.assign(frontiers_.cells(), utility_, held_, needing_pos_,
                    std::span<int>(chosen_).first(needing_pos_.size()));

@@ -15,20 +15,23 @@ namespace {
 std::atomic<long> g_allocations{0};
 }
 
-void* operator new(std::size_t size) {
+// Out of line, so that GCC does not inline free() into delete-expressions and then flag the
+// malloc/free pair as mismatched with operator new (-Wmismatched-new-delete, sanitizer builds).
+[[gnu::noinline]] void* operator new(std::size_t size) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hullinspect::planners {
 namespace {
 
 TEST(CoopFrontierAllocation, CounterSeesAllocations) {
   const long before = g_allocations.load();
-  auto* p = new std::vector<int>(100);
+  // The volatile pointer makes the allocation observable, so the optimiser cannot elide it.
+  std::vector<int>* volatile p = new std::vector<int>(100);
   delete p;
   EXPECT_EQ(g_allocations.load() - before, 2);
 }
