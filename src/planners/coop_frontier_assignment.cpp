@@ -9,7 +9,9 @@
 namespace hullinspect::planners {
 
 namespace {
-bool is_distance(int d) { return d >= 0 && d < grid::kUnreachable; }
+bool is_distance(int d) {
+  return d >= 0 && d < grid::kUnreachable;
+}
 }  // namespace
 
 double frontier_utility(double alpha, int d_hp, int d_c) {
@@ -66,7 +68,8 @@ FrontierAssigner::Pick FrontierAssigner::best_for(std::span<const grid::Cell> fr
     const double travel = d < table ? travel_term_[d] : beta_ / static_cast<double>(d);
     const double score = reduced_[j] + travel;
     if (best.frontier < 0 || score > best.score ||
-        (score == best.score && frontiers[j] < frontiers[static_cast<std::size_t>(best.frontier)])) {
+        (score == best.score &&
+         frontiers[j] < frontiers[static_cast<std::size_t>(best.frontier)])) {
       best = {robot, static_cast<int>(j), score};
     }
   }

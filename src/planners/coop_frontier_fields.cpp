@@ -61,4 +61,3 @@ void SourceDistanceField::refresh() {
 }
 
 }  // namespace hullinspect::planners
-

@@ -119,9 +119,9 @@ void CoopFrontierPlanner::assign_frontiers() {
   utility_.resize(indices.size());
   for (std::size_t j = 0; j < indices.size(); ++j) {
     const int i = indices[j];
-    utility_[j] = frontier_utility(options_.alpha,
-                                   use_prior ? prior_field_.distance(i) : grid::kUnreachable,
-                                   use_detected ? detected_field_.distance(i) : grid::kUnreachable);
+    utility_[j] =
+        frontier_utility(options_.alpha, use_prior ? prior_field_.distance(i) : grid::kUnreachable,
+                         use_detected ? detected_field_.distance(i) : grid::kUnreachable);
   }
   assigner_.assign(frontiers_.cells(), utility_, held_, needing_pos_,
                    std::span<int>(chosen_).first(needing_pos_.size()));
@@ -133,8 +133,7 @@ void CoopFrontierPlanner::assign_frontiers() {
   assignments_ += static_cast<long long>(needing_uav_.size());
 }
 
-void CoopFrontierPlanner::start_end_game(const sim::PlannerView& view,
-                                         std::span<Action> actions) {
+void CoopFrontierPlanner::start_end_game(const sim::PlannerView& view, std::span<Action> actions) {
   // F is empty: every EXPLORE UAV that needs a target takes the nearest M = 2 cell nobody has
   // claimed (in UAV id order), claims it and descends; with none left it hovers.
   for (const int k : needing_uav_) {

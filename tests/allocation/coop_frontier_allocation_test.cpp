@@ -22,8 +22,12 @@ std::atomic<long> g_allocations{0};
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p) noexcept {
+  std::free(p);
+}
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
 
 namespace hullinspect::planners {
 namespace {
@@ -40,7 +44,8 @@ TEST(CoopFrontierAllocation, StepLoopAllocatesNothing) {
   const auto& hull = world::default_hull();
   for (const char* name : {"perfect", "combined"}) {
     for (int n : {1, 8}) {
-      const auto instance = world::generate_instance(hull, scenario(name).corrosion(hull.width()), 4);
+      const auto instance =
+          world::generate_instance(hull, scenario(name).corrosion(hull.width()), 4);
       world::MissionParams params;
       params.uavs = n;
       params.s2 = 11;

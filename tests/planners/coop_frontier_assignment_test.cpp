@@ -167,8 +167,8 @@ namespace hullinspect::planners {
 namespace {
 
 // The literal eqs. 15–17: every round scans every (unassigned robot, frontier) pair.
-std::vector<int> reference_assignment(std::span<const grid::Cell> frontiers,
-                                      std::vector<double> u, std::span<const grid::Cell> held,
+std::vector<int> reference_assignment(std::span<const grid::Cell> frontiers, std::vector<double> u,
+                                      std::span<const grid::Cell> held,
                                       std::span<const grid::Cell> robots, double beta, int s2) {
   auto reduce = [&](grid::Cell at) {
     for (std::size_t j = 0; j < frontiers.size(); ++j) {

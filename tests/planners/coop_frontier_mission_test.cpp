@@ -36,7 +36,8 @@ TEST_P(CoopFrontierMatrix, EveryMissionCompletesUnderTheChecker) {
   const auto corrosion = scenario(GetParam().scenario).corrosion(hull.width());
   for (int n = 1; n <= 8; ++n) {
     for (int seed = 1; seed <= kSeedsPerCell; ++seed) {
-      const auto instance = world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
+      const auto instance =
+          world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
       world::MissionParams params;
       params.uavs = n;
       params.s2 = GetParam().s2;
@@ -45,8 +46,8 @@ TEST_P(CoopFrontierMatrix, EveryMissionCompletesUnderTheChecker) {
       MissionOptions options;
       options.observers.push_back(&checker);
       const auto r = run_mission(hull, instance, params, planner, options);
-      SCOPED_TRACE(::testing::Message() << GetParam().scenario << " s2=" << params.s2 << " n=" << n
-                                        << " seed=" << seed);
+      SCOPED_TRACE(::testing::Message()
+                   << GetParam().scenario << " s2=" << params.s2 << " n=" << n << " seed=" << seed);
       ASSERT_TRUE(r.complete);
       ASSERT_TRUE(checker.ok());
       ASSERT_TRUE(r.t_c.has_value());
@@ -97,7 +98,8 @@ TEST(CoopFrontierMission, OthersCompleteWhenUavsFailMidMission) {
     for (int seed = 1; seed <= 5; ++seed) {
       for (const auto& failures : std::vector<std::vector<UavFailure>>{
                {{1, 40}}, {{0, 1}}, {{3, 120}}, {{0, 30}, {2, 60}}}) {
-        const auto instance = world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
+        const auto instance =
+            world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
         world::MissionParams params;
         params.uavs = 4;
         CoopFrontierPlanner planner;
@@ -240,7 +242,8 @@ TEST(CoopFrontierMission, StateMatchesItsDefinitionsAtEveryDecision) {
         const auto& u = run.sim().uavs()[static_cast<std::size_t>(k)];
         const auto target = planner.target(k);
         if (planner.mode(k) == Mode::kExplore && target && !u.in_transit() && u.z == 2) {
-          ASSERT_TRUE(planner.frontiers().contains(map.index(*target))) << "t = " << run.sim().time();
+          ASSERT_TRUE(planner.frontiers().contains(map.index(*target)))
+              << "t = " << run.sim().time();
         }
         if (planner.mode(k) == Mode::kInspect && target && u.z == 1 && !u.in_transit()) {
           ASSERT_EQ(map[*target], sim::kCorrosionSeen) << "t = " << run.sim().time();

@@ -60,13 +60,13 @@ TEST(SourceDistanceField, RecomputesOnlyWhenReadAfterAChange) {
   f.refresh();
   EXPECT_EQ(f.transforms(), 1);
   EXPECT_EQ(f.count(), 2);
-  EXPECT_EQ(f.distance(0), 3);    // (0, 0) to (3, 0)
-  EXPECT_EQ(f.distance(39), 9);   // (9, 3) to (0, 3) is 9, to (3, 0) is 9
+  EXPECT_EQ(f.distance(0), 3);   // (0, 0) to (3, 0)
+  EXPECT_EQ(f.distance(39), 9);  // (9, 3) to (0, 3) is 9, to (3, 0) is 9
   f.set(3, false);
   f.set(3, false);
   f.refresh();
   EXPECT_EQ(f.transforms(), 2);
-  EXPECT_EQ(f.distance(0), 3);    // (0, 0) to (0, 3)
+  EXPECT_EQ(f.distance(0), 3);  // (0, 0) to (0, 3)
   EXPECT_EQ(f.distance(39), 9);
   f.set(30, false);
   f.refresh();
@@ -118,7 +118,8 @@ TEST(FrontierSet, DefinitionOnAHandMadeMap) {
   // Neighbours of (1, 1): (0, 1), (2, 1), (1, 0), (1, 2); neighbours of the non-hull (0, 2):
   // (1, 2) and (0, 1). Positions off the grid do not count.
   std::set<int> got(f.indices().begin(), f.indices().end());
-  EXPECT_EQ(got, (std::set<int>{map.index(0, 1), map.index(2, 1), map.index(1, 0), map.index(1, 2)}));
+  EXPECT_EQ(got,
+            (std::set<int>{map.index(0, 1), map.index(2, 1), map.index(1, 0), map.index(1, 2)}));
 }
 
 TEST(FrontierSet, IncrementalUpdatesMatchTheDefinition) {
@@ -143,7 +144,8 @@ TEST(FrontierSet, IncrementalUpdatesMatchTheDefinition) {
     }
     std::size_t next = 0;
     while (next < order.size()) {
-      const std::size_t batch = std::min(order.size() - next, static_cast<std::size_t>(1 + rng.below(6)));
+      const std::size_t batch =
+          std::min(order.size() - next, static_cast<std::size_t>(1 + rng.below(6)));
       for (std::size_t b = 0; b < batch; ++b) map[order[next + b]] = sim::kClean;
       for (std::size_t b = 0; b < batch; ++b) f.on_known(order[next + b], map);
       next += batch;

@@ -30,17 +30,18 @@ class FrontierAssigner {
   /// β of eq. 15, s2 of eq. 17, and the largest Manhattan distance that can occur (grid width +
   /// height) so the β / max(1, d) terms come from a table.
   void configure(double beta, int s2, int max_distance);
-  /// Reserves room for up to `frontiers` frontiers and `robots` robots, so assign() never allocates.
+  /// Reserves room for up to `frontiers` frontiers and `robots` robots, so assign() never
+  /// allocates.
   void reserve(int frontiers, int robots);
 
   /// Assigns one frontier to every robot. `frontiers` are the cells of F with their utilities U_f
-  /// (eq. 13) in `utility`; `held` are the targets other EXPLORE UAVs keep, which reduce U by eq. 16
-  /// before anything is chosen; `robots` are the positions of the UAVs that need a target, in
-  /// increasing UAV id. Then, |robots| times: pick (r*, f*) = argmax over unassigned robots r and all
-  /// f of U(f|f_1…f_m) + β / max(1, d(r, f)) with d the Manhattan distance (ties: first robot, then
-  /// lowest (y, x) of f), assign it, and multiply every U by P(‖f − f*‖) (Euclidean). A frontier may
-  /// go to several robots when the β term outweighs its reduced utility. Writes the position in
-  /// `frontiers` chosen for robot r to chosen[r] (−1 when `frontiers` is empty).
+  /// (eq. 13) in `utility`; `held` are the targets other EXPLORE UAVs keep, which reduce U by eq.
+  /// 16 before anything is chosen; `robots` are the positions of the UAVs that need a target, in
+  /// increasing UAV id. Then, |robots| times: pick (r*, f*) = argmax over unassigned robots r and
+  /// all f of U(f|f_1…f_m) + β / max(1, d(r, f)) with d the Manhattan distance (ties: first robot,
+  /// then lowest (y, x) of f), assign it, and multiply every U by P(‖f − f*‖) (Euclidean). A
+  /// frontier may go to several robots when the β term outweighs its reduced utility. Writes the
+  /// position in `frontiers` chosen for robot r to chosen[r] (−1 when `frontiers` is empty).
   void assign(std::span<const grid::Cell> frontiers, std::span<const double> utility,
               std::span<const grid::Cell> held, std::span<const grid::Cell> robots,
               std::span<int> chosen);

@@ -59,7 +59,7 @@ class CoopFrontierPlanner final : public Planner {
  private:
   struct UavPlan {
     Mode mode = Mode::kExplore;
-    grid::Cell target{-1, -1};  ///< x < 0: none
+    grid::Cell target{-1, -1};    ///< x < 0: none
     bool changing_plane = false;  ///< in transit or told to change plane this step (annotate())
     bool has_target() const { return target.x >= 0; }
   };
