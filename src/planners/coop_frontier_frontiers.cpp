@@ -1,0 +1,36 @@
+#include "hullinspect/planners/coop_frontier_frontiers.hpp"
+
+#include "hullinspect/sim/types.hpp"
+
+namespace hullinspect::planners {
+
+bool FrontierSet::is_frontier(const grid::Grid<std::int8_t>& map, int index) {
+  if (map[index] != sim::kUnknown) return false;
+  const grid::Cell c = map.cell(index);
+  for (int d = 0; d < 4; ++d) {
+    const int x = c.x + grid::kNeighbourDx[d];
+    const int y = c.y + grid::kNeighbourDy[d];
+    if (map.contains(x, y) && map(x, y) != sim::kUnknown) return true;
+  }
+  return false;
+}
+
+void FrontierSet::reset(const grid::Grid<std::int8_t>& map) {
+  set_.reset(map.width(), map.height());
+  for (int i = 0; i < map.size(); ++i) {
+    if (is_frontier(map, i)) set_.insert(i);
+  }
+}
+
+void FrontierSet::on_known(int index, const grid::Grid<std::int8_t>& map) {
+  set_.erase(index);
+  const grid::Cell c = map.cell(index);
+  for (int d = 0; d < 4; ++d) {
+    const int x = c.x + grid::kNeighbourDx[d];
+    const int y = c.y + grid::kNeighbourDy[d];
+    // An unknown neighbour is a hull cell (non-hull cells are −1) and now touches a known cell.
+    if (map.contains(x, y) && map(x, y) == sim::kUnknown) set_.insert(map.index(x, y));
+  }
+}
+
+}  // namespace hullinspect::planners

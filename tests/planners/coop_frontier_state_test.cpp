@@ -1,0 +1,161 @@
+// The incremental state behind Coop-Frontier: the Manhattan distance transform against brute force,
+// the lazily refreshed source fields, the indexed cell set and the frontier set against its
+// definition.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+#include "hullinspect/grid/distance.hpp"
+#include "hullinspect/planners/coop_frontier_cell_set.hpp"
+#include "hullinspect/planners/coop_frontier_fields.hpp"
+#include "hullinspect/planners/coop_frontier_frontiers.hpp"
+#include "hullinspect/sim/types.hpp"
+#include "hullinspect/world/random.hpp"
+
+namespace hullinspect::planners {
+namespace {
+
+int brute_force_distance(const grid::Grid<std::uint8_t>& sources, int index) {
+  const grid::Cell c = sources.cell(index);
+  int best = grid::kUnreachable;
+  for (int j = 0; j < sources.size(); ++j) {
+    if (sources[j]) best = std::min(best, grid::manhattan(c, sources.cell(j)));
+  }
+  return best;
+}
+
+TEST(ManhattanDistanceTransform, MatchesBruteForceOnRandomSourceSets) {
+  world::RandomStream rng(42, 0);
+  grid::Grid<int> out;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int w = 1 + static_cast<int>(rng.below(25));
+    const int h = 1 + static_cast<int>(rng.below(13));
+    const double density = trial % 3 == 0 ? 0.0 : (trial % 3 == 1 ? 0.02 : 0.3);
+    grid::Grid<std::uint8_t> sources(w, h, 0);
+    for (int i = 0; i < sources.size(); ++i) sources[i] = rng.bernoulli(density) ? 1 : 0;
+    manhattan_distance_transform(sources, out);
+    for (int i = 0; i < sources.size(); ++i) {
+      ASSERT_EQ(out[i], brute_force_distance(sources, i))
+          << "trial " << trial << " " << w << "x" << h << " cell " << i;
+    }
+  }
+}
+
+TEST(SourceDistanceField, RecomputesOnlyWhenReadAfterAChange) {
+  SourceDistanceField f;
+  f.reset(10, 4);
+  EXPECT_TRUE(f.empty());
+  f.refresh();
+  EXPECT_EQ(f.transforms(), 0);  // nothing changed since reset: the field is already "all far"
+  EXPECT_EQ(f.distance(5), grid::kUnreachable);
+
+  f.set(3, true);
+  f.set(3, true);  // no change
+  f.set(30, true);
+  EXPECT_TRUE(f.stale());
+  f.refresh();
+  f.refresh();
+  EXPECT_EQ(f.transforms(), 1);
+  EXPECT_EQ(f.count(), 2);
+  EXPECT_EQ(f.distance(0), 3);   // (0, 0) to (3, 0)
+  EXPECT_EQ(f.distance(39), 9);  // (9, 3) to (0, 3) is 9, to (3, 0) is 9
+  f.set(3, false);
+  f.set(3, false);
+  f.refresh();
+  EXPECT_EQ(f.transforms(), 2);
+  EXPECT_EQ(f.distance(0), 3);  // (0, 0) to (0, 3)
+  EXPECT_EQ(f.distance(39), 9);
+  f.set(30, false);
+  f.refresh();
+  EXPECT_TRUE(f.empty());
+  EXPECT_EQ(f.distance(0), grid::kUnreachable);
+}
+
+TEST(IndexedCellSet, InsertEraseAndMembership) {
+  IndexedCellSet s;
+  s.reset(5, 3);
+  s.insert(7);
+  s.insert(2);
+  s.insert(7);
+  s.insert(14);
+  EXPECT_EQ(s.size(), 3);
+  s.erase(2);
+  s.erase(2);
+  EXPECT_EQ(s.size(), 2);
+  EXPECT_FALSE(s.contains(2));
+  EXPECT_TRUE(s.contains(7));
+  EXPECT_TRUE(s.contains(14));
+  std::set<int> members(s.indices().begin(), s.indices().end());
+  EXPECT_EQ(members, (std::set<int>{7, 14}));
+  for (std::size_t j = 0; j < s.indices().size(); ++j) {
+    EXPECT_EQ(s.cells()[j], (grid::Cell{s.indices()[j] % 5, s.indices()[j] / 5}));
+  }
+  s.erase(14);
+  s.erase(7);
+  EXPECT_TRUE(s.empty());
+}
+
+std::set<int> frontier_by_definition(const grid::Grid<std::int8_t>& map) {
+  std::set<int> f;
+  for (int i = 0; i < map.size(); ++i) {
+    if (FrontierSet::is_frontier(map, i)) f.insert(i);
+  }
+  return f;
+}
+
+TEST(FrontierSet, DefinitionOnAHandMadeMap) {
+  // y = 2:  . 0 0 0
+  // y = 1:  0 1 0 0     '.' is not hull (−1), 1 known, 0 unknown
+  // y = 0:  0 0 0 0
+  grid::Grid<std::int8_t> map(4, 3, sim::kUnknown);
+  map(0, 2) = sim::kNotHull;
+  map(1, 1) = sim::kClean;
+  FrontierSet f;
+  f.reset(map);
+  // Neighbours of (1, 1): (0, 1), (2, 1), (1, 0), (1, 2); neighbours of the non-hull (0, 2):
+  // (1, 2) and (0, 1). Positions off the grid do not count.
+  std::set<int> got(f.indices().begin(), f.indices().end());
+  EXPECT_EQ(got,
+            (std::set<int>{map.index(0, 1), map.index(2, 1), map.index(1, 0), map.index(1, 2)}));
+}
+
+TEST(FrontierSet, IncrementalUpdatesMatchTheDefinition) {
+  world::RandomStream rng(7, 0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int w = 3 + static_cast<int>(rng.below(21));
+    const int h = 3 + static_cast<int>(rng.below(9));
+    grid::Grid<std::int8_t> map(w, h, sim::kUnknown);
+    for (int i = 0; i < map.size(); ++i) {
+      if (rng.bernoulli(0.1)) map[i] = sim::kNotHull;
+      if (rng.bernoulli(0.05)) map[i] = sim::kCorrosionSeen;
+    }
+    FrontierSet f;
+    f.reset(map);
+    std::vector<int> order;
+    for (int i = 0; i < map.size(); ++i) {
+      if (map[i] == sim::kUnknown) order.push_back(i);
+    }
+    // Reveal the unknown cells in a random order, in batches like one step's sensing.
+    for (std::size_t k = order.size(); k > 1; --k) {
+      std::swap(order[k - 1], order[static_cast<std::size_t>(rng.below(k))]);
+    }
+    std::size_t next = 0;
+    while (next < order.size()) {
+      const std::size_t batch =
+          std::min(order.size() - next, static_cast<std::size_t>(1 + rng.below(6)));
+      for (std::size_t b = 0; b < batch; ++b) map[order[next + b]] = sim::kClean;
+      for (std::size_t b = 0; b < batch; ++b) f.on_known(order[next + b], map);
+      next += batch;
+      std::set<int> got(f.indices().begin(), f.indices().end());
+      ASSERT_EQ(got, frontier_by_definition(map)) << "trial " << trial << " after " << next;
+      for (int i : got) ASSERT_TRUE(f.contains(i));
+    }
+    EXPECT_TRUE(f.empty());
+  }
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
