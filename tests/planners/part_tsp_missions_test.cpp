@@ -99,6 +99,46 @@ TEST_P(PartTspMissions, EveryMissionCompletes) {
   }
 }
 
+// The refinements beyond the paper (off by default) must keep every mission complete too.
+TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
+  const auto& hull = world::default_hull();
+  for (const auto& scenario : planners::scenarios()) {
+    const auto corrosion = scenario.corrosion(hull.width());
+    for (int s2 : {7, 11}) {
+      for (int n : {1, 6}) {
+        world::MissionParams params;
+        params.uavs = n;
+        params.s2 = s2;
+        for (int seed = 1; seed <= 4; ++seed) {
+          const auto instance =
+              world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
+          for (int refinements = 1; refinements <= 3; ++refinements) {
+            for (bool use_prior : {true, false}) {
+              planners::PartTspOptions o;
+              o.use_prior = use_prior;
+              o.skip_resolved = (refinements & 1) != 0;
+              o.trim_ends = (refinements & 2) != 0;
+              auto planner = make_part_tsp(o);
+              MissionChecker checker;
+              PlanInRegionChecker plans;
+              planners::MissionOptions mo;
+              mo.observers = {&checker, &plans};
+              mo.partitions = &shared_partitions();
+              const auto r = planners::run_mission(hull, instance, params, *planner, mo);
+              const auto what = fmt::format("{} s2={} n={} seed={} prior={} skip={} trim={}",
+                                            scenario.name, s2, n, seed, use_prior, o.skip_resolved,
+                                            o.trim_ends);
+              ASSERT_TRUE(r.complete) << what;
+              ASSERT_TRUE(checker.ok()) << what;
+              ASSERT_TRUE(plans.ok()) << what;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 std::vector<Cell> all_cells() {
   std::vector<Cell> cells;
   for (const auto& s : planners::scenarios()) {

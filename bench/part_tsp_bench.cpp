@@ -1,0 +1,121 @@
+// Time of one whole Part-TSP mission (default hull, perfect scenario, s2 = 7) for n = 4 and 8 with
+// the exact and the dfj-iterative segment-TSP solvers; the partition is computed once per fleet
+// size (PartitionCache) and timed separately. Target: under 20 ms per mission with `exact`.
+//
+//   build/release/bench/part_tsp_bench
+//
+// Each iteration runs one mission, cycling over the instances of seeds 1–20; the counters give the
+// median, mean and max mission time over every mission run, and the TSP share of it.
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/planners/mission.hpp"
+#include "hullinspect/planners/part_tsp_planner.hpp"
+#include "hullinspect/planners/partition_cache.hpp"
+#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/hull.hpp"
+
+namespace {
+
+using namespace hullinspect;
+
+constexpr int kInstances = 20;
+
+const std::vector<world::Instance>& instances() {
+  static const std::vector<world::Instance> all = [] {
+    const auto& hull = world::default_hull();
+    const auto corrosion = planners::scenario("perfect").corrosion(hull.width());
+    std::vector<world::Instance> v;
+    for (int seed = 1; seed <= kInstances; ++seed) {
+      v.push_back(world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed)));
+    }
+    return v;
+  }();
+  return all;
+}
+
+world::MissionParams params_for(int uavs) {
+  world::MissionParams p;
+  p.uavs = uavs;
+  p.s2 = 7;
+  return p;
+}
+
+void BM_Partition(benchmark::State& state) {
+  const auto& hull = world::default_hull();
+  const auto params = params_for(static_cast<int>(state.range(0)));
+  partition::PartitionRequest request;
+  request.hull = &hull;
+  request.starts = world::start_cells(params, hull);
+  const auto partitioner = partition::make_partitioner(planners::PartTspOptions{}.partitioner);
+  for (auto _ : state) benchmark::DoNotOptimize(partitioner->partition(request));
+  state.SetLabel(planners::PartTspOptions{}.partitioner);
+}
+
+void BM_Mission(benchmark::State& state, bool use_prior, const std::string& solver) {
+  const auto& hull = world::default_hull();
+  const auto params = params_for(static_cast<int>(state.range(0)));
+  planners::PartitionCache partitions;
+  planners::PartTspOptions options;
+  options.use_prior = use_prior;
+  options.tsp_solver = solver;
+  try {
+    planners::PartTspPlanner probe(options);
+  } catch (const Error& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  planners::MissionOptions mission_options;
+  mission_options.partitions = &partitions;
+  {  // compute the partition outside the timed loop
+    planners::PartTspPlanner warmup(options);
+    planners::run_mission(hull, instances().front(), params, warmup, mission_options);
+  }
+  std::vector<double> seconds;
+  double tsp_seconds = 0;
+  long long solves = 0;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    planners::PartTspPlanner planner(options);
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto result = planners::run_mission(hull, instances()[next], params, planner, mission_options);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    benchmark::DoNotOptimize(result.t_m);
+    if (!result.complete) state.SkipWithError("a mission did not complete");
+    tsp_seconds += result.planner.tsp_seconds;
+    solves += result.planner.tsp_solves;
+    next = (next + 1) % instances().size();
+  }
+  if (seconds.empty()) return;
+  std::vector<double> sorted = seconds;
+  std::sort(sorted.begin(), sorted.end());
+  double total = 0;
+  for (double s : seconds) total += s;
+  const double runs = static_cast<double>(seconds.size());
+  state.counters["median_ms"] = sorted[sorted.size() / 2] * 1e3;
+  state.counters["mean_ms"] = total / runs * 1e3;
+  state.counters["max_ms"] = sorted.back() * 1e3;
+  state.counters["tsp_ms"] = tsp_seconds / runs * 1e3;
+  state.counters["tsp_solves"] = static_cast<double>(solves) / runs;
+  state.SetLabel((use_prior ? "part-tsp " : "part-tsp0 ") + solver);
+}
+
+}  // namespace
+
+BENCHMARK(BM_Partition)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact, true, std::string("exact"))
+    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp_dfj, true, std::string("dfj-iterative"))
+    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp0_exact, false, std::string("exact"))
+    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp0_dfj, false, std::string("dfj-iterative"))
+    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+BENCHMARK_MAIN();
