@@ -1,6 +1,8 @@
 #pragma once
 // The segment TSP of Part-TSP (SPEC §5.3, eqs. 6–12): an open path from the UAV through every
 // segment, each segment flown end to end in one of its two directions, Manhattan costs.
+// Solvers (docs/tsp.md): "exact" (default, proves optimality), "dfj-iterative" (the paper's
+// reference on CBC), "heuristic" (fast local search, no optimality claim).
 
 #include <memory>
 #include <span>
@@ -26,6 +28,7 @@ struct SegmentTsp {
 struct Visit {
   int segment = 0;
   bool reversed = false;  ///< flown second → first
+  friend bool operator==(const Visit&, const Visit&) = default;
 };
 
 struct TspSolution {
@@ -38,9 +41,15 @@ struct TspSolution {
 /// Length of the open path start → order (segments included). Used by tests and solvers.
 long long tour_length(const SegmentTsp& problem, std::span<const Visit> order);
 
+/// Empty if `order` visits every segment of `problem` exactly once (indices in range); otherwise a
+/// sentence naming the first problem found. Used by tests and by solvers' self-checks.
+std::string order_problem(const SegmentTsp& problem, std::span<const Visit> order);
+
 class TspSolver {
  public:
   virtual ~TspSolver() = default;
+  /// Never returns an invalid order. Not thread-safe on one instance (solvers keep scratch space);
+  /// use one solver per thread.
   virtual TspSolution solve(const SegmentTsp& problem) = 0;
 };
 
@@ -52,7 +61,10 @@ struct TspSolverInfo {
 };
 
 std::span<const TspSolverInfo> tsp_solver_registry();
-/// Throws ParameterError("tsp_solver", …) for an unknown name.
+/// Throws ParameterError("tsp_solver", …) for an unknown name and ParameterError("<name>.<key>", …)
+/// for an unknown or out-of-range option.
 std::unique_ptr<TspSolver> make_tsp_solver(std::string_view name, const OptionMap& options = {});
+/// The default solver's name.
+inline constexpr std::string_view kDefaultTspSolver = "exact";
 
 }  // namespace hullinspect::tsp

@@ -1,0 +1,47 @@
+#pragma once
+// "exact" (the default TSP solver): proves optimality. Small instances go to a dynamic program over
+// (visited segments, exit end); larger ones to a branch-and-cut on CLP that starts from the local
+// search's tour. See docs/tsp.md for the method and measurements.
+
+#include <cstdint>
+#include <memory>
+
+#include "hullinspect/tsp/segment_tsp.hpp"
+
+namespace hullinspect::tsp {
+
+namespace detail {
+class SegmentDp;
+class BranchAndCut;
+class LocalSearch;
+class EndCosts;
+}  // namespace detail
+
+struct ExactOptions {
+  /// Seconds the branch-and-cut may run before it returns its best tour with optimal = false;
+  /// 0 = no limit. The dynamic program (g ≤ dp_max_segments) always finishes.
+  double time_limit = 0;
+  /// Largest g solved by the dynamic program (0–16); larger g use branch-and-cut.
+  int dp_max_segments = 8;
+  /// Double-bridge kicks of the local search that gives the branch-and-cut its first tour.
+  int kicks = 20;
+};
+
+class ExactSolver final : public TspSolver {
+ public:
+  explicit ExactSolver(ExactOptions options = {});
+  ~ExactSolver() override;
+  TspSolution solve(const SegmentTsp& problem) override;
+  /// Reads "time_limit", "dp_max_segments", "kicks"; rejects unknown keys.
+  static ExactOptions read_options(const OptionMap& options);
+
+ private:
+  ExactOptions options_;
+  std::unique_ptr<detail::EndCosts> costs_;
+  std::unique_ptr<detail::SegmentDp> dp_;
+  std::unique_ptr<detail::LocalSearch> search_;
+  std::unique_ptr<detail::BranchAndCut> branch_and_cut_;
+  std::vector<int> entries_;
+};
+
+}  // namespace hullinspect::tsp

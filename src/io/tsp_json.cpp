@@ -1,0 +1,114 @@
+#include "hullinspect/io/tsp_json.hpp"
+
+#include <fmt/format.h>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/atomic_file.hpp"
+
+namespace hullinspect::io {
+
+namespace {
+
+using nlohmann::json;
+
+grid::Cell parse_cell(const json& value, const std::string& where, const std::string& source) {
+  if (!value.is_array() || value.size() != 2 || !value[0].is_number_integer() ||
+      !value[1].is_number_integer()) {
+    throw InputError(source, 0, fmt::format("{}: expected [x, y] integers", where));
+  }
+  int xy[2] = {0, 0};
+  for (std::size_t k = 0; k < 2; ++k) {
+    // Unsigned JSON integers above INT64_MAX read as huge values here, which the range check
+    // catches.
+    const auto v = value[k].is_number_unsigned() ? static_cast<long long>(std::min<std::uint64_t>(
+                                                       value[k].get<std::uint64_t>(), 1ull << 62))
+                                                 : value[k].get<long long>();
+    if (v < -kTspCoordinateLimit || v > kTspCoordinateLimit) {
+      throw InputError(source, 0,
+                       fmt::format("{}: coordinate {} is outside [{}, {}]", where, v,
+                                   -kTspCoordinateLimit, kTspCoordinateLimit));
+    }
+    xy[k] = static_cast<int>(v);
+  }
+  return {xy[0], xy[1]};
+}
+
+}  // namespace
+
+tsp::SegmentTsp parse_tsp_instance(std::string_view text, const std::string& source) {
+  json document;
+  try {
+    document = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string message = e.what();
+    // Drop nlohmann's "[json.exception.parse_error.101] " prefix; keep its line and column.
+    if (auto close = message.find("] ");
+        message.starts_with("[json.exception") && close != std::string::npos) {
+      message = message.substr(close + 2);
+    }
+    throw InputError(source, 0, "not valid JSON: " + message);
+  }
+  if (!document.is_object()) {
+    throw InputError(source, 0, R"(expected a JSON object {"start": [x, y], "segments": [...]})");
+  }
+  for (const auto& [key, value] : document.items()) {
+    if (key != "start" && key != "segments") {
+      throw InputError(source, 0,
+                       fmt::format(R"(unknown key "{}" (expected "start" and "segments"))", key));
+    }
+  }
+  if (!document.contains("start")) throw InputError(source, 0, R"(missing "start": [x, y])");
+  if (!document.contains("segments")) {
+    throw InputError(source, 0, R"(missing "segments": [[[x1, y1], [x2, y2]], ...])");
+  }
+  tsp::SegmentTsp problem;
+  problem.start = parse_cell(document["start"], "start", source);
+  const json& segments = document["segments"];
+  if (!segments.is_array()) {
+    throw InputError(source, 0, "segments: expected an array of [[x1, y1], [x2, y2]]");
+  }
+  problem.segments.reserve(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const json& s = segments[i];
+    const std::string where = fmt::format("segments[{}]", i);
+    if (!s.is_array() || s.size() != 2) {
+      throw InputError(source, 0, fmt::format("{}: expected [[x1, y1], [x2, y2]]", where));
+    }
+    problem.segments.push_back(
+        {parse_cell(s[0], where + "[0]", source), parse_cell(s[1], where + "[1]", source)});
+  }
+  return problem;
+}
+
+tsp::SegmentTsp read_tsp_instance(const std::filesystem::path& path) {
+  return parse_tsp_instance(read_file(path), path.string());
+}
+
+nlohmann::ordered_json tsp_instance_json(const tsp::SegmentTsp& problem) {
+  nlohmann::ordered_json segments = nlohmann::ordered_json::array();
+  for (const auto& s : problem.segments) {
+    segments.push_back({{s.first.x, s.first.y}, {s.second.x, s.second.y}});
+  }
+  nlohmann::ordered_json out;
+  out["start"] = {problem.start.x, problem.start.y};
+  out["segments"] = std::move(segments);
+  return out;
+}
+
+nlohmann::ordered_json tsp_solution_json(const tsp::TspSolution& solution) {
+  nlohmann::ordered_json order = nlohmann::ordered_json::array();
+  for (const auto& v : solution.order) {
+    nlohmann::ordered_json visit;
+    visit["segment"] = v.segment;
+    visit["reversed"] = v.reversed;
+    order.push_back(std::move(visit));
+  }
+  nlohmann::ordered_json out;
+  out["length"] = solution.length;
+  out["optimal"] = solution.optimal;
+  out["order"] = std::move(order);
+  out["seconds"] = solution.seconds;
+  return out;
+}
+
+}  // namespace hullinspect::io

@@ -1,0 +1,69 @@
+#include "end_costs.hpp"
+
+#include <fmt/format.h>
+
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::tsp::detail {
+
+void EndCosts::assign(const SegmentTsp& problem) {
+  g_ = static_cast<int>(problem.segments.size());
+  stride_ = 2 * g_ + 1;
+  cost_.resize(static_cast<std::size_t>(stride_) * static_cast<std::size_t>(stride_));
+  std::vector<grid::Cell>& at = cells_;
+  at.resize(static_cast<std::size_t>(stride_));
+  segment_total_ = 0;
+  for (int l = 0; l < g_; ++l) {
+    const Segment& s = problem.segments[static_cast<std::size_t>(l)];
+    at[static_cast<std::size_t>(2 * l)] = s.first;
+    at[static_cast<std::size_t>(2 * l + 1)] = s.second;
+    segment_total_ += grid::manhattan(s.first, s.second);
+  }
+  at[static_cast<std::size_t>(2 * g_)] = problem.start;
+  for (int a = 0; a < stride_; ++a) {
+    for (int b = 0; b < stride_; ++b) {
+      cost_[static_cast<std::size_t>(a * stride_ + b)] =
+          grid::manhattan(at[static_cast<std::size_t>(a)], at[static_cast<std::size_t>(b)]);
+    }
+  }
+}
+
+long long EndCosts::length(std::span<const int> entries) const {
+  long long total = segment_total_;
+  int at = start();
+  for (int e : entries) {
+    total += (*this)(at, e);
+    at = e ^ 1;
+  }
+  return total;
+}
+
+TspSolution make_solution(const SegmentTsp& problem, std::span<const int> entries, bool optimal,
+                          std::chrono::steady_clock::time_point started) {
+  TspSolution solution;
+  solution.order.reserve(entries.size());
+  for (int e : entries) solution.order.push_back(visit_of_entry(e));
+  solution.length = tour_length(problem, solution.order);
+  solution.optimal = optimal;
+  solution.seconds = seconds_since(started);
+  return solution;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point started) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+void check_solution(const SegmentTsp& problem, const TspSolution& solution, const char* solver) {
+  const std::string problem_text = order_problem(problem, solution.order);
+  if (!problem_text.empty()) {
+    throw LogicError(
+        fmt::format("tsp solver '{}' returned an invalid order: {}", solver, problem_text));
+  }
+  const long long length = tour_length(problem, solution.order);
+  if (length != solution.length) {
+    throw LogicError(fmt::format("tsp solver '{}' reported length {} for a tour of length {}",
+                                 solver, solution.length, length));
+  }
+}
+
+}  // namespace hullinspect::tsp::detail

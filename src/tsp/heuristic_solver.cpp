@@ -1,0 +1,36 @@
+#include "hullinspect/tsp/heuristic_solver.hpp"
+
+#include <chrono>
+
+#include "end_costs.hpp"
+#include "local_search.hpp"
+
+namespace hullinspect::tsp {
+
+HeuristicSolver::HeuristicSolver(HeuristicOptions options)
+    : options_(options),
+      costs_(std::make_unique<detail::EndCosts>()),
+      search_(std::make_unique<detail::LocalSearch>()) {}
+
+HeuristicSolver::~HeuristicSolver() = default;
+
+HeuristicOptions HeuristicSolver::read_options(const OptionMap& options) {
+  OptionReader reader(options, "heuristic");
+  HeuristicOptions o;
+  o.kicks = reader.get_int("kicks", o.kicks, 0, 1'000'000);
+  o.seed = reader.get_int("seed", o.seed, 0, 2'147'483'647);
+  reader.reject_unknown();
+  return o;
+}
+
+TspSolution HeuristicSolver::solve(const SegmentTsp& problem) {
+  const auto started = std::chrono::steady_clock::now();
+  const int g = static_cast<int>(problem.segments.size());
+  if (g == 0) return detail::make_solution(problem, {}, true, started);
+  costs_->assign(problem);
+  search_->run(*costs_, options_.kicks, static_cast<std::uint64_t>(options_.seed), entries_);
+  // With one segment the local search tries both directions, so the answer is optimal.
+  return detail::make_solution(problem, entries_, g == 1, started);
+}
+
+}  // namespace hullinspect::tsp
