@@ -30,6 +30,10 @@ std::unique_ptr<Planner> make_part_tsp(const OptionMap& options, bool use_prior)
   o.partition_seed = static_cast<std::uint64_t>(reader.get_int("partition-seed", 0, 0, 1 << 30));
   o.skip_resolved = reader.get_bool("skip-resolved", o.skip_resolved);
   o.trim_ends = reader.get_bool("trim-ends", o.trim_ends);
+  // "tsp.<key>=<value>" goes to the TSP solver as its option <key> (it checks them itself).
+  for (const auto& [key, value] : options) {
+    if (key.rfind("tsp.", 0) == 0) o.tsp_solver_options[key.substr(4)] = reader.get_string(key, value);
+  }
   reader.reject_unknown();
   partition::make_partitioner(o.partitioner);  // fail early on an unknown name
   return std::make_unique<PartTspPlanner>(o);  // builds the TSP solver: fails on an unknown name
@@ -52,8 +56,8 @@ std::vector<OptionSpec> part_tsp_options() {
           {"partition-seed", "0", "seed of the partitioner"},
           {"skip-resolved", "false",
            "refinement: drop plan segments whose targets are all resolved (re-plan when none is left)"},
-          {"trim-ends", "false",
-           "refinement: pull segment ends in by the footprint half-width"}};
+          {"trim-ends", "false", "refinement: pull segment ends in by the footprint half-width"},
+          {"tsp.<key>", "", "option <key> of the TSP solver (e.g. tsp.dp_max_segments=12 for exact)"}};
 }
 
 const std::vector<PlannerInfo>& registry() {

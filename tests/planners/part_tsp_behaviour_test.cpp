@@ -6,11 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "hullinspect/io/result_json.hpp"
+#include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/planners/scenario.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
 #include "part_tsp_recorder.hpp"
 #include "part_tsp_test_support.hpp"
 #include "support/mission_checker.hpp"
+#include "support/truth_blindness.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -212,6 +217,48 @@ TEST(PartTspBehaviour, CannotReadTheGroundTruth) {
       diverged = diverged || fa[t].actions != fb[t].actions;
     }
     EXPECT_TRUE(diverged) << "the different truth never mattered: the test proves nothing";
+  }
+}
+
+TEST(PartTspBehaviour, CannotReachTheGroundTruthOnTheDefaultHull) {
+  // The shared check: extra corrosion out of sight at t = 0, identical prior.
+  world::MissionParams params;
+  params.uavs = 4;
+  for (const char* name : {"part-tsp", "part-tsp0"}) {
+    TruthBlindnessReport report;
+    EXPECT_TRUE(planner_is_truth_blind(name, {}, params, 3, &report)) << name;
+    EXPECT_GE(report.first_differing_reading, 1) << name;
+  }
+}
+
+TEST(PartTspBehaviour, SameInputsGiveIdenticalResultsAndTraces) {
+  for (const char* name : {"part-tsp", "part-tsp0"}) {
+    planners::MissionSpec spec;
+    spec.algorithm = name;
+    spec.params.uavs = 3;
+    spec.corrosion = planners::scenario("imperfect").corrosion(230);
+    spec.seed = 11;
+    auto run_traced = [&] {
+      const auto instance =
+          world::generate_instance(world::default_hull(), spec.corrosion, spec.seed);
+      auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
+      io::TraceRecorder recorder(instance, io::spec_json(spec, "builtin:default"));
+      planners::MissionOptions options;
+      options.observers = {&recorder};
+      const auto r =
+          planners::run_mission(world::default_hull(), instance, spec.params, *planner, options);
+      auto summary = io::result_json(spec, r);
+      for (const char* timing : {"planner_seconds", "tsp_seconds", "tsp_max_seconds"}) {
+        summary.erase(timing);
+      }
+      return std::pair{summary, recorder.finish(r)};
+    };
+    const auto [a, trace_a] = run_traced();
+    const auto [b, trace_b] = run_traced();
+    EXPECT_EQ(a, b) << name;
+    EXPECT_EQ(trace_a, trace_b) << name;
+    EXPECT_GT(a["tsp_solves"].get<int>(), 0) << name;
+    EXPECT_GT(a["replans"].get<int>(), 0) << name;
   }
 }
 

@@ -32,7 +32,8 @@ TEST(PartTspRegistry, BothPlannersDeclareTheirOptions) {
     std::vector<std::string> names;
     for (const auto& o : info(name).options) names.push_back(o.name);
     EXPECT_EQ(names, (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner",
-                                               "partition-seed", "skip-resolved", "trim-ends"}))
+                                               "partition-seed", "skip-resolved", "trim-ends",
+                                               "tsp.<key>"}))
         << name;
     EXPECT_EQ(info(name).options[0].default_value, "2");
     EXPECT_EQ(info(name).options[1].default_value, "0");
@@ -57,7 +58,8 @@ TEST(PartTspRegistry, ReadsTheOptions) {
   EXPECT_EQ(o.partition_seed, 7u);
   EXPECT_TRUE(o.skip_resolved);
   EXPECT_TRUE(o.trim_ends);
-  const auto& d = dynamic_cast<const PartTspPlanner&>(*make_planner("part-tsp")).options();
+  const auto default_planner = make_planner("part-tsp");
+  const auto& d = dynamic_cast<const PartTspPlanner&>(*default_planner).options();
   EXPECT_TRUE(d.use_prior);
   EXPECT_EQ(d.r1, 2);
   EXPECT_EQ(d.r2, 0);
@@ -79,6 +81,14 @@ TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {
   EXPECT_EQ(error_of("part-tsp", {{"tsp-solver", "nope"}}).rfind("tsp_solver: unknown TSP solver 'nope'", 0),
             0u);
   EXPECT_EQ(error_of("part-tsp", {{"partitioner", "nope"}}).rfind("partitioner: unknown", 0), 0u);
+  EXPECT_EQ(error_of("part-tsp", {{"tsp.bogus", "1"}}).rfind("exact.bogus: ", 0), 0u)
+      << error_of("part-tsp", {{"tsp.bogus", "1"}});
+}
+
+TEST(PartTspRegistry, ForwardsTspPrefixedOptionsToTheSolver) {
+  const auto p = make_planner("part-tsp", {{"tsp.dp_max_segments", "12"}});
+  const auto& o = dynamic_cast<const PartTspPlanner&>(*p).options();
+  EXPECT_EQ(o.tsp_solver_options, (OptionMap{{"dp_max_segments", "12"}}));
 }
 
 }  // namespace
