@@ -3,6 +3,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/lawnmower_planner.hpp"
+#include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/planner.hpp"
 
 namespace hullinspect::planners {
@@ -30,6 +31,47 @@ std::unique_ptr<Planner> make_coop_frontier(const OptionMap& options) {
   return std::make_unique<CoopFrontierPlanner>(o);
 }
 
+std::unique_ptr<Planner> make_part_tsp(const OptionMap& options, bool use_prior) {
+  OptionReader reader(options, use_prior ? "part-tsp" : "part-tsp0");
+  PartTspOptions o;
+  o.use_prior = use_prior;
+  o.r1 = reader.get_int("r1", o.r1, 0, 1 << 20);
+  o.r2 = reader.get_int("r2", o.r2, 0, 1 << 20);
+  o.tsp_solver = reader.get_string("tsp-solver", o.tsp_solver);
+  o.partitioner = reader.get_string("partitioner", o.partitioner);
+  o.partition_seed = static_cast<std::uint64_t>(reader.get_int("partition-seed", 0, 0, 1 << 30));
+  o.skip_resolved = reader.get_bool("skip-resolved", o.skip_resolved);
+  o.trim_ends = reader.get_bool("trim-ends", o.trim_ends);
+  // "tsp.<key>=<value>" goes to the TSP solver as its option <key> (it checks them itself).
+  for (const auto& [key, value] : options) {
+    if (key.rfind("tsp.", 0) == 0) o.tsp_solver_options[key.substr(4)] = reader.get_string(key, value);
+  }
+  reader.reject_unknown();
+  partition::make_partitioner(o.partitioner);  // fail early on an unknown name
+  return std::make_unique<PartTspPlanner>(o);  // builds the TSP solver: fails on an unknown name
+}
+
+std::unique_ptr<Planner> make_part_tsp_with_prior(const OptionMap& options) {
+  return make_part_tsp(options, true);
+}
+std::unique_ptr<Planner> make_part_tsp_without_prior(const OptionMap& options) {
+  return make_part_tsp(options, false);
+}
+
+std::vector<OptionSpec> part_tsp_options() {
+  const PartTspOptions d;
+  return {{"r1", std::to_string(d.r1), "steps since the last detection before descending"},
+          {"r2", std::to_string(d.r2),
+           "steps since the last inspection (or arrival at z = 1) before ascending"},
+          {"tsp-solver", d.tsp_solver, "segment-TSP solver by name (exact, dfj-iterative, heuristic)"},
+          {"partitioner", std::string(partition::kDefaultPartitioner), "partitioner by name"},
+          {"partition-seed", "0", "seed of the partitioner"},
+          {"skip-resolved", "false",
+           "refinement: drop plan segments whose targets are all resolved (re-plan when none is left)"},
+          {"trim-ends", "false", "refinement: pull segment ends in by the footprint half-width"},
+          {"tsp.<key>", "", "option <key> of the TSP solver (e.g. tsp.dp_max_segments=12 for exact)"}};
+}
+
 const std::vector<PlannerInfo>& registry() {
   static const std::vector<PlannerInfo> entries = {
       {"lawnmower",
@@ -37,6 +79,12 @@ const std::vector<PlannerInfo>& registry() {
        {{"partitioner", std::string(partition::kDefaultPartitioner), "partitioner by name"},
         {"partition-seed", "0", "seed of the partitioner"}},
        &make_lawnmower},
+      {"part-tsp",
+       "partition; per-UAV local maps from own sensing; FSM plane changes; segment TSP (uses the "
+       "prior)",
+       part_tsp_options(), &make_part_tsp_with_prior},
+      {"part-tsp0", "Part-TSP ignoring the prior (local maps start without its 2s)",
+       part_tsp_options(), &make_part_tsp_without_prior},
       {"coop-frontier",
        "cooperative frontier exploration on the shared map with prior/detection utilities and "
        "close-up inspection of detections (SPEC 5.4)",

@@ -1,0 +1,92 @@
+#pragma once
+// Part-TSP and Part-TSP₀ (SPEC §5.3, paper Section IV-A): a partition at t = 0, a local map per UAV
+// fed only by its own readings, the plane-change FSM of Fig. 3, and plans that cover (z = 2) or
+// inspect (z = 1) the UAV's region segment by segment in the order of a segment TSP.
+// docs/part-tsp.md describes the behaviour, the path and transit rules and the options.
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "hullinspect/planners/part_tsp_fsm.hpp"
+#include "hullinspect/planners/part_tsp_local_map.hpp"
+#include "hullinspect/planners/part_tsp_path.hpp"
+#include "hullinspect/planners/part_tsp_segments.hpp"
+#include "hullinspect/planners/planner.hpp"
+#include "hullinspect/tsp/segment_tsp.hpp"
+
+namespace hullinspect::planners {
+
+struct PartTspOptions {
+  bool use_prior = true;  ///< false: Part-TSP₀ (local maps start without the prior's 2s)
+  int r1 = 2;             ///< steps since the last detection before descending
+  int r2 = 0;             ///< steps since the last inspection (or arrival at z = 1) before ascending
+  std::string tsp_solver = "exact";  ///< segment-TSP solver by name
+  OptionMap tsp_solver_options;
+  std::string partitioner{partition::kDefaultPartitioner};  ///< by name
+  OptionMap partitioner_options;
+  std::uint64_t partition_seed = 0;  ///< seed of the partitioner (not of the instance)
+  // Refinements beyond the paper, off by default (their measured effect: docs/part-tsp.md).
+  bool skip_resolved = false;  ///< drop plan segments whose targets are all resolved already
+  bool trim_ends = false;      ///< fly segments between ends pulled in by the footprint half-width
+};
+
+class PartTspPlanner final : public Planner {
+ public:
+  /// Builds the TSP solver by name unless one is given (tests inject their own).
+  explicit PartTspPlanner(PartTspOptions options, std::unique_ptr<tsp::TspSolver> solver = nullptr);
+
+  void start(const PlannerContext& context) override;
+  void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override;
+  sim::PlannerStats stats() const override { return stats_; }
+  const partition::Partition* partition() const override { return partition_.get(); }
+  /// Per UAV: mode (cover-z2, inspect-z1, cover-z1, descending, ascending, done, failed), the next
+  /// waypoint and the waypoints still ahead.
+  void annotate(AnnotationSink& sink) const override;
+
+  const PartTspOptions& options() const { return options_; }
+  // Read-only views for tests and tools (valid after start()).
+  const part_tsp::LocalMaps& local_maps() const { return *maps_; }
+  const part_tsp::SegmentPath& path(int k) const { return uav(k).path; }
+  std::string_view mode(int k) const { return uav(k).mode; }
+  /// Plane and target value of UAV k's current plan.
+  int plan_plane(int k) const { return uav(k).plan_z; }
+  std::int8_t plan_value(int k) const { return uav(k).plan_value; }
+  /// Plans UAV k has made so far.
+  int plans_made(int k) const { return uav(k).plans; }
+
+ private:
+  struct UavState {
+    int plane = 0;               // plane it was last seen on, out of transit (0: not seen yet)
+    int last_detection = 0;      // t of its last detection (0: mission start)
+    int last_inspection = 0;     // t of its last inspection
+    int last_arrival_z1 = 0;     // t of its last arrival at z = 1
+    int plan_z = 0;              // plane the current plan was made for
+    std::int8_t plan_value = 0;  // target value of the current plan
+    int plans = 0;
+    std::string_view mode = part_tsp::kModeCoverZ2;
+    part_tsp::SegmentPath path;
+  };
+  const UavState& uav(int k) const { return uavs_[static_cast<std::size_t>(k)]; }
+  sim::Action decide_uav(int k, const sim::UavState& u, int time);
+  void make_plan(int k, grid::Cell pos, int z);
+  void skip_resolved(int k, grid::Cell pos);
+
+  PartTspOptions options_;
+  std::unique_ptr<tsp::TspSolver> solver_;
+  std::shared_ptr<const partition::Partition> partition_;
+  std::unique_ptr<part_tsp::LocalMaps> maps_;
+  std::vector<UavState> uavs_;
+  sim::PlannerStats stats_;
+  // Scratch reused by every plan.
+  std::vector<part_tsp::StripSegment> segments_;
+  std::vector<std::pair<grid::Cell, grid::Cell>> ends_;
+  std::vector<tsp::Visit> order_;
+  tsp::SegmentTsp problem_;
+};
+
+}  // namespace hullinspect::planners

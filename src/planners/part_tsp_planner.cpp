@@ -1,0 +1,133 @@
+#include "hullinspect/planners/part_tsp_planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::planners {
+
+using namespace part_tsp;
+
+PartTspPlanner::PartTspPlanner(PartTspOptions options, std::unique_ptr<tsp::TspSolver> solver)
+    : options_(std::move(options)), solver_(std::move(solver)) {
+  if (!solver_) solver_ = tsp::make_tsp_solver(options_.tsp_solver, options_.tsp_solver_options);
+}
+
+void PartTspPlanner::start(const PlannerContext& context) {
+  partition::PartitionRequest request;
+  request.hull = &context.hull;
+  request.starts.assign(context.starts.begin(), context.starts.end());
+  request.seed = options_.partition_seed;
+  partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
+  const int n = context.params.uavs;
+  maps_ = std::make_unique<LocalMaps>(partition_->owner, context.prior, options_.use_prior, n,
+                                      context.params.s1, context.params.s2);
+  uavs_.assign(static_cast<std::size_t>(n), UavState{});
+  stats_ = {};
+}
+
+void PartTspPlanner::decide(const sim::PlannerView& view, std::span<sim::Action> actions) {
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    const int uav_id = static_cast<int>(k);
+    UavState& p = uavs_[k];
+    // The local map takes this UAV's own readings only (empty in transit or after a failure).
+    const LocalEvents events = maps_->ingest(uav_id, view.sensed.readings(uav_id));
+    if (events.detection) p.last_detection = view.time;
+    if (events.inspection) p.last_inspection = view.time;
+    actions[k] = decide_uav(uav_id, view.uavs[k], view.time);
+  }
+}
+
+sim::Action PartTspPlanner::decide_uav(int k, const sim::UavState& u, int time) {
+  UavState& p = uavs_[static_cast<std::size_t>(k)];
+  if (!u.active) {
+    p.mode = kModeFailed;
+    p.path.clear();
+    return sim::Action::kHover;
+  }
+  if (u.in_transit()) {  // the FSM waits until the UAV is on a plane again
+    p.mode = u.z == 2 ? kModeDescending : kModeAscending;
+    return sim::Action::kHover;
+  }
+  const bool arrived = u.z != p.plane;  // also true at t = 0: the UAV "arrives" at its start plane
+  if (arrived) {
+    p.plane = u.z;
+    if (u.z == 1) p.last_arrival_z1 = time;
+  }
+  const FsmInput in{u.z, maps_->corrosion_to_inspect(k), maps_->unknown_cells(k),
+                    time - p.last_detection, time - std::max(p.last_inspection, p.last_arrival_z1)};
+  switch (evaluate_fsm(in, options_.r1, options_.r2)) {
+    case FsmDecision::kDone:
+      p.mode = kModeDone;
+      p.path.clear();
+      return sim::Action::kHover;
+    case FsmDecision::kChangePlane:  // the plan for the new plane is made on arrival
+      p.mode = u.z == 2 ? kModeDescending : kModeAscending;
+      p.path.clear();
+      return sim::Action::kChangePlane;
+    case FsmDecision::kStay:
+      break;
+  }
+  p.path.advance(u.pos);
+  if (options_.skip_resolved && !arrived) skip_resolved(k, u.pos);
+  if (arrived || p.path.finished()) make_plan(k, u.pos, u.z);
+  p.mode = u.z == 2 ? kModeCoverZ2
+                    : (p.plan_value == sim::kCorrosionSeen ? kModeInspectZ1 : kModeCoverZ1);
+  return p.path.next_action(u.pos);
+}
+
+void PartTspPlanner::skip_resolved(int k, grid::Cell pos) {
+  UavState& p = uavs_[static_cast<std::size_t>(k)];
+  while (!p.path.finished()) {
+    const PlannedVisit& v = p.path.current_visit();
+    const StripSegment& s = v.segment;
+    // On the segment, only the columns still ahead count (the footprint swept those behind).
+    const int from = p.path.on_segment() ? pos.x : s.x_left;
+    const int to = p.path.on_segment() ? (v.exit.x >= v.entry.x ? s.x_right : s.x_left) : s.x_right;
+    if (has_targets(*maps_, k, p.plan_z, p.plan_value, s, from, to)) return;
+    p.path.skip_current_visit();
+    p.path.advance(pos);
+  }
+}
+
+void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
+  UavState& p = uavs_[static_cast<std::size_t>(k)];
+  p.plan_z = z;
+  p.plan_value = target_value(z, maps_->corrosion_to_inspect(k));
+  if (p.plans++ > 0) ++stats_.replans;
+  divide_into_segments(*maps_, k, z, p.plan_value, segments_);
+  const int trim = options_.trim_ends ? (maps_->layout(z).s - 1) / 2 : 0;
+  ends_.clear();
+  for (const StripSegment& s : segments_) ends_.push_back(segment_ends(s, trim));
+
+  order_.clear();
+  if (segments_.size() == 1) {
+    // One segment: the optimal open path enters at the nearer end (the left one on a tie).
+    const auto& [left, right] = ends_.front();
+    order_.push_back(tsp::Visit{0, grid::manhattan(pos, right) < grid::manhattan(pos, left)});
+  } else if (segments_.size() > 1) {
+    problem_.start = pos;
+    problem_.segments.clear();
+    for (const auto& [left, right] : ends_) problem_.segments.push_back(tsp::Segment{left, right});
+    const auto t0 = std::chrono::steady_clock::now();
+    const tsp::TspSolution solution = solver_->solve(problem_);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ++stats_.tsp_solves;
+    stats_.tsp_seconds += seconds;
+    stats_.tsp_max_seconds = std::max(stats_.tsp_max_seconds, seconds);
+    order_.assign(solution.order.begin(), solution.order.end());
+  }
+  p.path.assign(segments_, ends_, order_);
+  p.path.advance(pos);
+}
+
+void PartTspPlanner::annotate(AnnotationSink& sink) const {
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    const UavState& p = uavs_[k];
+    sink.uav(static_cast<int>(k), p.mode, p.path.target(), p.path.remaining());
+  }
+}
+
+}  // namespace hullinspect::planners
