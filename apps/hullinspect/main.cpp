@@ -43,6 +43,15 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
     if (auto nl = message.find('\n'); nl != std::string::npos) message.resize(nl);
+    // CLI11 says "Could not convert: --uavs,-n = abc"; name the option first like our own errors.
+    const std::string prefix = "Could not convert: ";
+    if (message.rfind(prefix, 0) == 0) {
+      const auto eq = message.find(" = ");
+      std::string option = message.substr(prefix.size(), eq - prefix.size());
+      option = option.substr(0, option.find(','));
+      const std::string value = eq == std::string::npos ? "" : message.substr(eq + 3);
+      message = option + ": '" + value + "' is not a valid value";
+    }
     std::cerr << "hullinspect: " << message << " (see --help)\n";
     return cli::kExitBadInput;
   }

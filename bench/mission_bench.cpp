@@ -1,0 +1,54 @@
+// One whole lawnmower mission (default hull, perfect scenario, s2 = 7): the foundation's speed.
+// The partition is computed once and shared, as the experiment runner does.
+//   build/release/bench/mission_bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+
+#include <benchmark/benchmark.h>
+
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/planners/partition_cache.hpp"
+#include "hullinspect/planners/scenario.hpp"
+
+namespace {
+
+using namespace hullinspect;
+
+void run_missions(benchmark::State& state, const std::string& algorithm) {
+  const auto& hull = world::default_hull();
+  planners::MissionSpec spec;
+  spec.algorithm = algorithm;
+  spec.params.uavs = static_cast<int>(state.range(0));
+  spec.params.s2 = 7;
+  spec.corrosion = planners::scenario("perfect").corrosion(hull.width());
+  planners::PartitionCache partitions;
+  planners::MissionOptions options;
+  options.partitions = &partitions;
+  std::uint64_t seed = 1;
+  long long steps = 0;
+  for (auto _ : state) {
+    spec.seed = seed++ % 50 + 1;
+    const auto r = planners::run_mission(spec, hull, options);
+    steps += r.steps;
+    benchmark::DoNotOptimize(r.t_m);
+  }
+  state.counters["steps/mission"] =
+      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kAvgIterations);
+  state.counters["missions/s"] = benchmark::Counter(static_cast<double>(state.iterations()),
+                                                    benchmark::Counter::kIsRate);
+}
+
+void BM_LawnmowerMission(benchmark::State& state) { run_missions(state, "lawnmower"); }
+BENCHMARK(BM_LawnmowerMission)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
+
+// The simulator alone: instance generation + step loop with a trivial hovering planner is not
+// meaningful (it never completes), so time the instance draw separately.
+void BM_GenerateInstance(benchmark::State& state) {
+  const auto& hull = world::default_hull();
+  const auto corrosion = planners::scenario("imperfect").corrosion(hull.width());
+  std::uint64_t seed = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(world::generate_instance(hull, corrosion, seed++));
+}
+BENCHMARK(BM_GenerateInstance)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,152 @@
+// `hullinspect run` end to end through the built binary.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/cli_runner.hpp"
+
+namespace hullinspect::testing {
+namespace {
+
+struct BadInput {
+  std::vector<std::string> args;
+  std::string message;  // the whole stderr line
+};
+
+class RunBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(RunBadInput, OneLineExitTwoNoOutputFile) {
+  const auto dir = make_temp_dir("bad-input");
+  const std::string trace = dir + "/trace.json";
+  const std::string html = dir + "/mission.html";
+  std::vector<std::string> args = {"run", "--trace", trace, "--html", html};
+  args.insert(args.end(), GetParam().args.begin(), GetParam().args.end());
+  const auto r = run_cli(args);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, GetParam().message + "\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(std::filesystem::exists(trace));
+  EXPECT_FALSE(std::filesystem::exists(html));
+  EXPECT_TRUE(std::filesystem::is_empty(dir));  // not even a temporary file
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, RunBadInput,
+    ::testing::Values(
+        BadInput{{"--uavs", "0"}, "hullinspect: --uavs: must be at least 1 (got 0)"},
+        BadInput{{"--uavs", "-3"}, "hullinspect: --uavs: must be at least 1 (got -3)"},
+        BadInput{{"--uavs", "7000"}, "hullinspect: --uavs: must be at most the 6361 hull cells (got 7000)"},
+        BadInput{{"--s1", "4"}, "hullinspect: --s1: must be a positive odd integer (got 4)"},
+        BadInput{{"--s2", "8"}, "hullinspect: --s2: must be an odd integer greater than s1 = 5 (got 8)"},
+        BadInput{{"--s1", "7", "--s2", "7"},
+                 "hullinspect: --s2: must be an odd integer greater than s1 = 7 (got 7)"},
+        BadInput{{"--s2", "3"}, "hullinspect: --s2: must be an odd integer greater than s1 = 5 (got 3)"},
+        BadInput{{"--p-c", "1.5"}, "hullinspect: --p-c: must be a probability in [0, 1] (got 1.5)"},
+        BadInput{{"--p-tp", "-0.1"}, "hullinspect: --p-tp: must be a probability in [0, 1] (got -0.1)"},
+        BadInput{{"--p-fp", "2"}, "hullinspect: --p-fp: must be a probability in [0, 1] (got 2)"},
+        BadInput{{"--l-c", "4"}, "hullinspect: --l-c: must be a positive odd integer (got 4)"},
+        BadInput{{"--theta", "0"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 0)"},
+        BadInput{{"--theta", "180"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 180)"},
+        BadInput{{"--theta", "-5"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got -5)"},
+        BadInput{{"--time-limit", "0"}, "hullinspect: --time-limit: must be at least 1 step (got 0)"},
+        BadInput{{"--hull", "/nonexistent/hull.txt"},
+                 "hullinspect: /nonexistent/hull.txt: cannot open the hull file"},
+        BadInput{{"--scenario", "stormy"},
+                 "hullinspect: --scenario: unknown scenario 'stormy' (known: perfect, imperfect, "
+                 "inhomogeneous, combined)"},
+        BadInput{{"--algorithm", "lawnmower", "--alpha", "0.3"},
+                 "hullinspect: --alpha: unknown option (known: partitioner, partition-seed)"},
+        BadInput{{"--seed", "x1"}, "hullinspect: --seed: 'x1' is not a valid value (see --help)"},
+        BadInput{{"--start", "3;4"}, "hullinspect: --start: expects X,Y (got '3;4')"},
+        BadInput{{"--uavs", "abc"},
+                 "hullinspect: --uavs: 'abc' is not a valid value (see --help)"}));
+
+TEST(RunCommand, UnknownAlgorithmListsTheKnownOnes) {
+  const auto r = run_cli({"run", "--algorithm", "zigzag"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("hullinspect: --algorithm: unknown algorithm 'zigzag' (known: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("lawnmower"), std::string::npos);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+}
+
+TEST(RunCommand, MalformedHullFileNamesFileAndLine) {
+  const auto dir = make_temp_dir("bad-hull");
+  const std::string hull = dir + "/hull.txt";
+  std::ofstream(hull) << "XXX\nX?X\n";
+  const auto r = run_cli({"run", "--hull", hull});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + hull +
+                       ":2: unexpected character '?' in column 2; a text mask uses 'X' or '#' (hull) "
+                       "and '.' (not hull)\n");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RunCommand, JsonHasEveryDocumentedField) {
+  const auto r = run_cli({"run", "--json", "--uavs", "4", "--s2", "9", "--seed", "5"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"algorithm", "uavs", "s1", "s2", "seed", "complete", "T_c", "T_m", "moves",
+                          "plane_changes", "hovers", "redundant_observations", "planner_seconds"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["uavs"], 4);
+  EXPECT_EQ(j["s2"], 9);
+  EXPECT_EQ(j["seed"], 5);
+  EXPECT_EQ(j["complete"], true);
+  EXPECT_LE(j["T_c"].get<int>(), j["T_m"].get<int>());
+}
+
+TEST(RunCommand, TimeLimitReportsIncompleteWithoutNumbers) {
+  const auto r = run_cli({"run", "--json", "--time-limit", "50"});
+  EXPECT_EQ(r.status, 3);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["complete"], false);
+  EXPECT_TRUE(j["T_m"].is_null());
+  EXPECT_EQ(j["steps"], 50);
+}
+
+TEST(RunCommand, TraceIsWrittenAndCompactForEightUavs) {
+  const auto dir = make_temp_dir("trace");
+  const std::string trace = dir + "/t.json";
+  const auto r = run_cli({"run", "--uavs", "8", "--trace", trace, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(trace);
+  const auto t = nlohmann::json::parse(in);
+  EXPECT_EQ(t["format"], "hullinspect-trace");
+  EXPECT_EQ(t["frames"].size(), t["result"]["steps"].get<std::size_t>() + 1);
+  EXPECT_EQ(t["frames"][0]["u"].size(), 8u * 5);
+  EXPECT_EQ(t["truth"].size(), 30u);
+  EXPECT_EQ(t["partition"].size(), 30u);
+  // Replaying the changes from the initial map ends on a fully inspected map.
+  std::vector<std::string> map = t["initial_map"].get<std::vector<std::string>>();
+  for (const auto& f : t["frames"]) {
+    const auto& c = f["c"];
+    for (std::size_t i = 0; i + 1 < c.size(); i += 2) {
+      const int cell = c[i].get<int>();
+      map[static_cast<std::size_t>(cell / 230)][static_cast<std::size_t>(cell % 230)] =
+          static_cast<char>('0' + c[i + 1].get<int>());
+    }
+  }
+  for (const auto& row : map) {
+    for (char ch : row) EXPECT_TRUE(ch == '.' || ch == '1' || ch == '3') << ch;
+  }
+  EXPECT_LT(std::filesystem::file_size(trace), 2u * 1024 * 1024);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RunCommand, HelpDocumentsEveryOption) {
+  const auto r = run_cli({"run", "--help"});
+  EXPECT_EQ(r.status, 0);
+  for (const char* opt : {"--algorithm", "--uavs", "--s1", "--s2", "--theta", "--seed", "--p-c", "--l-c",
+                          "--p-tp", "--p-fp", "--hull", "--partitioner", "--time-limit", "--json",
+                          "--trace", "--html", "--r1", "--r2", "--tsp-solver", "--alpha", "--beta"}) {
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  }
+}
+
+}  // namespace
+}  // namespace hullinspect::testing

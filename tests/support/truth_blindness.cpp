@@ -1,0 +1,81 @@
+#include "support/truth_blindness.hpp"
+
+#include <fmt/format.h>
+
+#include "hullinspect/planners/mission.hpp"
+#include "hullinspect/planners/scenario.hpp"
+
+namespace hullinspect::testing {
+
+namespace {
+
+struct Recording final : planners::MissionObserver {
+  std::vector<std::vector<sim::Action>> actions;   // per step
+  std::vector<std::vector<sim::Reading>> readings;  // per t (all UAVs, in order)
+  void record_readings(const sim::Simulator& sim) {
+    std::vector<sim::Reading> all;
+    for (int k = 0; k < static_cast<int>(sim.uavs().size()); ++k) {
+      for (const auto& r : sim.view().sensed.readings(k)) all.push_back(r);
+    }
+    readings.push_back(std::move(all));
+  }
+  void on_start(const sim::Simulator& sim, const planners::Planner&) override { record_readings(sim); }
+  void on_step(const sim::Simulator& sim, const planners::Planner&) override {
+    actions.emplace_back(sim.applied_actions().begin(), sim.applied_actions().end());
+    record_readings(sim);
+  }
+};
+
+bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].index != b[i].index || a[i].value != b[i].value) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+::testing::AssertionResult planner_is_truth_blind(const std::string& algorithm, const OptionMap& options,
+                                                  const world::MissionParams& params, std::uint64_t seed,
+                                                  TruthBlindnessReport* report) {
+  const auto& hull = world::default_hull();
+  const auto corrosion = planners::scenario("imperfect").corrosion(hull.width());
+  const auto a = world::generate_instance(hull, corrosion, seed);
+  world::Instance b = a;
+  for (int i : hull.cells()) {
+    const auto c = hull.mask().cell(i);
+    if (c.y >= hull.height() - 6 && (c.x / 3 + c.y / 3) % 4 == 0) b.truth[i] = 1;
+  }
+  Recording ra;
+  Recording rb;
+  auto pa = planners::make_planner(algorithm, options);
+  auto pb = planners::make_planner(algorithm, options);
+  planners::MissionOptions oa;
+  oa.observers = {&ra};
+  planners::MissionOptions ob;
+  ob.observers = {&rb};
+  planners::run_mission(hull, a, params, *pa, oa);
+  planners::run_mission(hull, b, params, *pb, ob);
+
+  // Decision t is made from readings 0..t; it must match while those are identical.
+  std::size_t t = 0;
+  while (t < ra.readings.size() && t < rb.readings.size() && same(ra.readings[t], rb.readings[t])) ++t;
+  const std::size_t first_diff = t;
+  if (report) {
+    report->first_differing_reading = first_diff < std::min(ra.readings.size(), rb.readings.size())
+                                          ? static_cast<int>(first_diff)
+                                          : -1;
+    report->steps_compared = static_cast<int>(std::min(first_diff + 1, ra.actions.size()));
+  }
+  for (std::size_t s = 0; s <= first_diff && s < ra.actions.size() && s < rb.actions.size(); ++s) {
+    if (ra.actions[s] != rb.actions[s]) {
+      return ::testing::AssertionFailure()
+             << fmt::format("{}: decision at t = {} differs although readings were identical up to t = {}",
+                            algorithm, s, first_diff);
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace hullinspect::testing
