@@ -39,6 +39,19 @@ plt.rcParams.update({
     "pdf.fonttype": 42,
 })
 
+# How swept parameters are written on the figures (other sweep names are shown as they are).
+SWEEP_LABELS = {
+    "p_tp": "$p_{TP}$",
+    "p_fp": "$p_{FP}$",
+    "p_c": "$p_C$",
+    "l_c": "$l_C$",
+    "back_p_c": "back $p_C$",
+    "front_p_c": "front $p_C$",
+    "back_l_c": "back $l_C$",
+    "front_l_c": "front $l_C$",
+    "front_back_p_c": "front/back $p_C$",
+}
+
 LINE_STYLES = ["-", "--", ":", "-.", (0, (5, 1, 1, 1, 1, 1)), (0, (1, 3)), (0, (8, 2))]
 
 
@@ -232,10 +245,11 @@ def fig8(curves, s2, n, sweeps, plain, algorithms, colour, instances, grid_end, 
         if index % cols == 0:
             ax.set_ylabel("$c(t)$, corrosion inspected (%)")
         if kind == "sweep":
-            ax.set_title(f"sweep of {name}")
+            label = SWEEP_LABELS.get(name, name)
+            ax.set_title(f"sweep of {label}")
             handles = [Line2D([0], [0], color="black", ls=LINE_STYLES[i % len(LINE_STYLES)])
                        for i in range(len(values))]
-            ax.legend(handles, values, title=name, loc="lower right")
+            ax.legend(handles, values, title=label, loc="lower right")
         else:
             ax.set_title(f"scenario {name}")
     for index in range(len(panels), rows * cols):

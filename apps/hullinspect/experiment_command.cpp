@@ -108,7 +108,9 @@ void add_experiment_command(CLI::App& app, CommandAction& action) {
       "Results in DIR: runs.csv (one row per mission), curves.csv (mean/std of c(t), m(t) per "
       "cell), samples.csv, timings.csv, manifest.json. See docs/experiments.md.\n"
       "Example: hullinspect experiment --preset paper-quick --out results/quick");
-  cmd->add_option("--preset", args->preset, "Built-in experiment: paper, paper-quick, fig8")
+  std::string presets;
+  for (const auto& name : experiment::preset_names()) presets += (presets.empty() ? "" : ", ") + name;
+  cmd->add_option("--preset", args->preset, "Built-in experiment: " + presets)
       ->type_name("NAME");
   cmd->add_option("--config", args->config, "Experiment config (YAML, see docs/experiments.md)")
       ->type_name("FILE");

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 struct ReportArgs {
   std::string results;
   std::string out;
-  bool figures = true;
+  bool no_figures = false;
   std::string python;
 };
 
@@ -114,6 +114,11 @@ int run(const ReportArgs& a) {
   const auto runs_path = (results / experiment::kRunsFile).string();
   const auto runs = experiment::parse_csv(io::read_file(runs_path), runs_path);
   const auto rows = experiment::summarize_runs(runs, runs_path);
+  if (manifest.value("shard", "1/1") != "1/1") {
+    std::cerr << fmt::format("hullinspect: {} holds shard {} only: merge the shards for the whole "
+                             "experiment\n",
+                             a.results, manifest.value("shard", "?"));
+  }
   if (manifest.value("status", "") != "complete") {
     std::cerr << fmt::format("hullinspect: {} has status '{}': the report covers the {} runs found\n",
                              a.results, manifest.value("status", "?"), runs.rows.size());
@@ -122,8 +127,8 @@ int run(const ReportArgs& a) {
   const std::string tables = experiment::summary_markdown(rows);
   io::write_file_atomic(out / "summary.csv", experiment::summary_csv(rows));
   io::write_file_atomic(out / "summary.md", tables);
-  if (a.figures) draw_figures(a, out);
-  const auto figures = a.figures ? figure_stems(out / "figures") : std::vector<std::string>{};
+  if (!a.no_figures) draw_figures(a, out);
+  const auto figures = !a.no_figures ? figure_stems(out / "figures") : std::vector<std::string>{};
   io::write_file_atomic(out / "report.md", report_markdown(manifest, a, tables, figures));
   std::cout << tables;
   std::cout << fmt::format("report: {} ({} cells; {} figures as PNG and PDF)\n",
@@ -147,7 +152,7 @@ void add_report_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--out,-o", args->out, "Directory for the report (created; files replaced)")
       ->required()
       ->type_name("REPORTDIR");
-  cmd->add_flag("!--no-figures", args->figures, "Only the tables (no Python needed)");
+  cmd->add_flag("--no-figures", args->no_figures, "Only the tables (no Python needed)");
   cmd->add_option("--python", args->python,
                   "Python with matplotlib (default: $HULLINSPECT_PYTHON or /usr/bin/python3)")
       ->type_name("PATH");

@@ -119,6 +119,9 @@ RunnerSummary run_experiment(const ExperimentPlan& plan, const fs::path& out,
   summary.jobs = options.jobs > 0 ? options.jobs : host_cores();
   manifest["status"] = "running";
   manifest["jobs"] = summary.jobs;
+  int in_shard = 0;
+  for (int p = 0; p < static_cast<int>(plan.runs().size()); ++p) in_shard += options.shard.contains(p);
+  manifest["runs_in_shard"] = in_shard;
   write_manifest(out, manifest);
 
   // Keep the finished runs, drop torn lines and orphan rows, and continue appending.
@@ -216,7 +219,6 @@ RunnerSummary run_experiment(const ExperimentPlan& plan, const fs::path& out,
   write_final_tables(out, plan, read_stored_runs(out, plan));
   manifest["status"] = "complete";
   manifest["finished"] = utc_now();
-  manifest["runs_in_shard"] = summary.total;
   manifest["runs_done"] = summary.total;
   manifest["last_invocation"] = {
       {"missions", summary.ran},

@@ -30,9 +30,8 @@ using testing::ScratchDir;
 
 std::string cli_path() {
   if (const char* env = std::getenv("HULLINSPECT_CLI"); env != nullptr && *env != '\0') return env;
-  // Run by hand from the build tree: build/<preset>/tests/test_experiment → build/<preset>/hullinspect
-  return (std::filesystem::read_symlink("/proc/self/exe").parent_path().parent_path() / "hullinspect")
-      .string();
+  // Run by hand from the build tree: the CLI sits beside the test binary (build/<preset>/).
+  return (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "hullinspect").string();
 }
 
 /// Starts the CLI with `args`, stdout and stderr going to files in `dir`.
