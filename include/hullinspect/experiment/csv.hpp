@@ -1,0 +1,33 @@
+#pragma once
+// Minimal RFC 4180 CSV for result tables: fields are quoted only when they contain a comma, a quote
+// or a line break; one record per line.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hullinspect::experiment {
+
+/// The field as written in a CSV line (quoted if needed).
+std::string csv_field(std::string_view value);
+
+/// Joins fields into one line (no line break).
+std::string csv_line(const std::vector<std::string>& fields);
+
+/// Splits one line into fields; empty when the quoting is malformed.
+std::optional<std::vector<std::string>> split_csv_line(std::string_view line);
+
+/// A whole CSV file held in memory, with columns looked up by name.
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  /// Index of a column; throws InputError naming `source` when it is missing.
+  int column(const std::string& name, const std::string& source) const;
+};
+
+/// Parses a complete CSV file (every line ends with a line break). Throws InputError naming
+/// `source` and the line for a malformed row or a row with the wrong number of fields.
+CsvTable parse_csv(std::string_view text, const std::string& source);
+
+}  // namespace hullinspect::experiment

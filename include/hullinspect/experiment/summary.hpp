@@ -1,0 +1,40 @@
+#pragma once
+// The report's tables: mean ± standard deviation of T_c and T_m per scenario × s2 × n × algorithm,
+// with the count of incomplete missions, computed from a finished runs.csv.
+
+#include <string>
+#include <vector>
+
+#include "hullinspect/experiment/csv.hpp"
+
+namespace hullinspect::experiment {
+
+struct TimeStats {
+  int count = 0;     ///< missions that reached it
+  double mean = 0;   ///< over those missions, seconds
+  double std = 0;    ///< sample standard deviation (0 with fewer than two)
+};
+
+struct SummaryRow {
+  std::string scenario, sweep, sweep_value, algorithm;
+  int s2 = 0;
+  int uavs = 0;
+  int runs = 0;
+  int incomplete = 0;  ///< missions that hit the time limit
+  TimeStats t_c, t_m;
+};
+
+/// One row per (scenario, s2, uavs, algorithm), in the order they first appear in runs.csv.
+/// `source` names the table in errors.
+std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& source);
+
+/// summary.csv: scenario, sweep, sweep_value, s2, uavs, algorithm, runs, incomplete, T_c_count,
+/// T_c_mean, T_c_std, T_m_count, T_m_mean, T_m_std.
+std::string summary_csv(const std::vector<SummaryRow>& rows);
+
+/// Markdown: per scenario, a T_c table and a T_m table with one row per (s2, n) and one column per
+/// algorithm ("mean ± std", "[k incomplete]" when some missions did not complete). Columns are
+/// padded so the text also reads well in a terminal.
+std::string summary_markdown(const std::vector<SummaryRow>& rows);
+
+}  // namespace hullinspect::experiment

@@ -1,0 +1,345 @@
+#include "hullinspect/experiment/config.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <set>
+
+#include "config_scenarios.hpp"
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/experiment/hash.hpp"
+#include "hullinspect/io/atomic_file.hpp"
+#include "yaml_fields.hpp"
+
+namespace hullinspect::experiment {
+
+namespace {
+
+using detail::YamlFields;
+
+constexpr int kMaxSide = 8193;
+constexpr int kMaxUavs = 100000;
+constexpr int kMaxInstances = 1000000;
+constexpr int kMaxCurvePoints = 100000;
+
+std::shared_ptr<const world::HullMask> rectangle(int width, int height) {
+  grid::Grid<std::uint8_t> mask(width, height, 1);
+  return std::make_shared<const world::HullMask>(std::move(mask),
+                                                 fmt::format("rectangle {}x{}", width, height));
+}
+
+void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
+               ExperimentConfig& c) {
+  int width = 0;
+  int height = 0;
+  if (const auto g = root["grid"]) {
+    f.expect_map(g, "grid", {"width", "height", "cell_size"});
+    if (g["width"]) width = f.as_int(g["width"], "grid.width", 1, world::kMaxGridSide);
+    if (g["height"]) height = f.as_int(g["height"], "grid.height", 1, world::kMaxGridSide);
+    if (g["cell_size"]) c.cell_size = f.as_number(g["cell_size"], "grid.cell_size", 1e-6, 1e6);
+    c.lines["grid.width"] = g["width"] ? YamlFields::line(g["width"]) : YamlFields::line(g);
+    c.lines["grid.height"] = g["height"] ? YamlFields::line(g["height"]) : YamlFields::line(g);
+  }
+  const YAML::Node h = root["hull"];
+  if (h) c.hull_spec = f.as_string(h, "hull");
+  const int hull_line = h ? YamlFields::line(h) : 0;
+  if (c.hull_spec == "rectangle") {
+    if (width == 0 || height == 0) {
+      f.fail_at(hull_line, "hull", "'rectangle' needs grid.width and grid.height");
+    }
+    c.hull = rectangle(width, height);
+  } else {
+    try {
+      if (c.hull_spec == "default" || c.hull_spec == "builtin:default") {
+        c.hull = std::make_shared<const world::HullMask>(world::default_hull());
+      } else {
+        std::filesystem::path path(c.hull_spec);
+        if (path.is_relative()) path = base_dir / path;
+        c.hull = std::make_shared<const world::HullMask>(world::load_hull(path));
+      }
+    } catch (const InputError& e) {
+      f.fail_at(hull_line, "hull", e.what());
+    }
+    if (width != 0 && width != c.hull->width()) {
+      f.fail_at(c.lines["grid.width"], "grid.width",
+                fmt::format("is {} but the hull mask is {} wide", width, c.hull->width()));
+    }
+    if (height != 0 && height != c.hull->height()) {
+      f.fail_at(c.lines["grid.height"], "grid.height",
+                fmt::format("is {} but the hull mask is {} high", height, c.hull->height()));
+    }
+  }
+  c.hull_hash = stable_id(world::to_text_mask(*c.hull));
+  c.hull_width = c.hull->width();
+  c.hull_height = c.hull->height();
+  c.hull_cells = c.hull->cell_count();
+}
+
+std::vector<int> int_list(const YamlFields& f, const YAML::Node& node, const std::string& key,
+                          int min, int max, ExperimentConfig& c) {
+  std::vector<int> values;
+  const auto items = f.as_list(node, key);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const int v = f.as_int(items[i], key, min, max);
+    if (std::find(values.begin(), values.end(), v) != values.end()) {
+      f.fail(items[i], key, fmt::format("lists {} twice", v));
+    }
+    c.lines[fmt::format("{}[{}]", key, i)] = YamlFields::line(items[i]);
+    values.push_back(v);
+  }
+  return values;
+}
+
+std::vector<AlgorithmSpec> read_algorithms(const YamlFields& f, const YAML::Node& node) {
+  std::vector<AlgorithmSpec> out;
+  const auto items = f.as_list(node, "algorithms");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const YAML::Node& a = items[i];
+    const std::string key = fmt::format("algorithms[{}]", i);
+    AlgorithmSpec spec;
+    spec.line = YamlFields::line(a);
+    if (a.IsScalar()) {
+      spec.planner = f.as_label(a, key);
+    } else {
+      f.expect_map(a, key, {"name", "label", "options"});
+      if (!a["name"]) f.fail(a, key, "an algorithm entry needs a 'name' (the planner)");
+      spec.planner = f.as_label(a["name"], key + ".name");
+      if (a["label"]) spec.label = f.as_label(a["label"], key + ".label");
+      if (const auto o = a["options"]) {
+        if (!o.IsMap()) f.fail(o, key + ".options", "must be a map of option: value");
+        for (const auto& entry : o) {
+          const std::string name = f.as_string(entry.first, key + ".options");
+          const std::string path = fmt::format("{}.options.{}", key, name);
+          if (!entry.second.IsScalar()) f.fail(entry.second, path, "must be a single value");
+          if (spec.options.contains(name)) f.fail(entry.first, path, "appears twice");
+          spec.options[name] = entry.second.Scalar();
+        }
+      }
+    }
+    if (spec.label.empty()) spec.label = spec.planner;
+    for (const auto& other : out) {
+      if (other.label == spec.label) {
+        f.fail(a, key, fmt::format("label '{}' is used twice (give each entry its own 'label')",
+                                   spec.label));
+      }
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+void read_instances(const YamlFields& f, const YAML::Node& root, ExperimentConfig& c) {
+  const YAML::Node n = root["instances"];
+  const YAML::Node first = root["first_seed"];
+  if (n && n.IsSequence()) {
+    if (first) f.fail(first, "first_seed", "applies only when 'instances' is a count");
+    std::set<std::uint64_t> seen;
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      const std::uint64_t seed = f.as_seed(n[i], "instances");
+      if (!seen.insert(seed).second) f.fail(n[i], "instances", fmt::format("lists seed {} twice", seed));
+      c.seeds.push_back(seed);
+    }
+    if (c.seeds.empty()) f.fail(n, "instances", "must not be an empty list");
+    return;
+  }
+  const int count = n ? f.as_int(n, "instances", 1, kMaxInstances) : 50;
+  const std::uint64_t start = first ? f.as_seed(first, "first_seed") : 1;
+  if (start > UINT64_MAX - static_cast<std::uint64_t>(count)) {
+    f.fail(first, "first_seed", "leaves no room for the instance seeds below 2^64");
+  }
+  for (int i = 0; i < count; ++i) c.seeds.push_back(start + static_cast<std::uint64_t>(i));
+}
+
+void remember_line(ExperimentConfig& c, const YAML::Node& root, const char* key) {
+  if (root[key]) c.lines[key] = YamlFields::line(root[key]);
+}
+
+}  // namespace
+
+std::vector<int> CurveGrid::times() const {
+  std::vector<int> t;
+  for (int v = 0; v <= end; v += step) t.push_back(v);
+  return t;
+}
+
+int ExperimentConfig::line_of(const std::string& key) const {
+  auto it = lines.find(key);
+  return it == lines.end() ? 0 : it->second;
+}
+
+ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
+                              const std::filesystem::path& base_dir) {
+  YamlFields f(source);
+  YAML::Node root;
+  try {
+    root = YAML::Load(std::string(yaml));
+  } catch (const YAML::Exception& e) {
+    throw InputError(source, e.mark.line >= 0 ? e.mark.line + 1 : 0,
+                     fmt::format("invalid YAML: {}", e.msg));
+  }
+  ExperimentConfig c;
+  c.source = source;
+  c.name = std::filesystem::path(source).stem().string();
+  if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  f.expect_map(root, "",
+               {"name", "description", "hull", "grid", "scenarios", "sweeps", "s1", "s2", "theta",
+                "uavs", "start_z", "algorithms", "instances", "first_seed", "time_limit", "curve"});
+  for (const char* key : {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull"}) {
+    remember_line(c, root, key);
+  }
+  if (root["name"]) c.name = f.as_label(root["name"], "name");
+  if (root["description"]) c.description = f.as_string(root["description"], "description");
+  read_hull(f, root, base_dir, c);
+  c.scenarios = detail::parse_scenarios(f, root["scenarios"], root["sweeps"], c.hull->width());
+  if (root["s1"]) c.s1 = f.as_int(root["s1"], "s1", 1, kMaxSide);
+  if (root["s2"]) c.s2 = int_list(f, root["s2"], "s2", 1, kMaxSide, c);
+  if (root["theta"]) c.theta = f.as_number(root["theta"], "theta", 0, 180);
+  if (root["uavs"]) c.uavs = int_list(f, root["uavs"], "uavs", 1, kMaxUavs, c);
+  if (root["start_z"]) c.start_z = f.as_int(root["start_z"], "start_z", 1, 2);
+  if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
+  if (root["algorithms"]) {
+    c.algorithms = read_algorithms(f, root["algorithms"]);
+  } else {
+    c.algorithms = {AlgorithmSpec{"lawnmower", "lawnmower", {}, 0}};
+  }
+  read_instances(f, root, c);
+  if (const auto curve = root["curve"]) {
+    f.expect_map(curve, "curve", {"step", "end"});
+    if (curve["step"]) c.curve.step = f.as_int(curve["step"], "curve.step", 1, 1000000000);
+    if (curve["end"]) c.curve.end = f.as_int(curve["end"], "curve.end", 0, 1000000000);
+    if (c.curve.end / c.curve.step + 1 > kMaxCurvePoints) {
+      f.fail(curve, "curve", fmt::format("gives {} sample times; at most {} are accepted",
+                                         c.curve.end / c.curve.step + 1, kMaxCurvePoints));
+    }
+  }
+  return c;
+}
+
+ExperimentConfig load_config(const std::filesystem::path& path) {
+  const std::string text = io::read_file(path);
+  return parse_config(text, path.string(), path.parent_path());
+}
+
+void restrict_algorithms(ExperimentConfig& config, const std::vector<std::string>& labels) {
+  std::vector<AlgorithmSpec> kept;
+  for (const auto& label : labels) {
+    auto it = std::find_if(config.algorithms.begin(), config.algorithms.end(),
+                           [&](const AlgorithmSpec& a) { return a.label == label; });
+    if (it == config.algorithms.end()) {
+      std::string names;
+      for (const auto& a : config.algorithms) names += (names.empty() ? "" : ", ") + a.label;
+      throw ParameterError("algorithms",
+                           fmt::format("'{}' is not in the config (it has: {})", label, names));
+    }
+  }
+  for (const auto& a : config.algorithms) {
+    if (std::find(labels.begin(), labels.end(), a.label) != labels.end()) kept.push_back(a);
+  }
+  config.algorithms = std::move(kept);
+}
+
+void set_instance_count(ExperimentConfig& config, int count) {
+  if (count < 1) {
+    throw ParameterError("instances", fmt::format("must be at least 1 (got {})", count));
+  }
+  config.seeds.clear();
+  for (int i = 1; i <= count; ++i) config.seeds.push_back(static_cast<std::uint64_t>(i));
+}
+
+nlohmann::json config_json(const ExperimentConfig& c) {
+  using nlohmann::json;
+  json j;
+  j["name"] = c.name;
+  j["description"] = c.description;
+  j["hull"] = {{"spec", c.hull_spec},
+               {"width", c.hull_width},
+               {"height", c.hull_height},
+               {"cells", c.hull_cells},
+               {"hash", c.hull_hash}};
+  j["cell_size"] = c.cell_size;
+  json scenarios = json::array();
+  for (const auto& s : c.scenarios) {
+    json zones = json::array();
+    for (const auto& z : s.corrosion.zones) {
+      zones.push_back({{"x_begin", z.x_begin}, {"x_end", z.x_end}, {"p_c", z.p_c}, {"l_c", z.l_c}});
+    }
+    scenarios.push_back({{"name", s.name},
+                         {"sweep", s.sweep},
+                         {"sweep_value", s.sweep_value},
+                         {"zones", zones},
+                         {"p_tp", s.corrosion.p_tp},
+                         {"p_fp", s.corrosion.p_fp}});
+  }
+  j["scenarios"] = scenarios;
+  j["s1"] = c.s1;
+  j["s2"] = c.s2;
+  j["theta"] = c.theta;
+  j["uavs"] = c.uavs;
+  j["start_z"] = c.start_z;
+  json algorithms = json::array();
+  for (const auto& a : c.algorithms) {
+    algorithms.push_back({{"label", a.label}, {"planner", a.planner}, {"options", a.options}});
+  }
+  j["algorithms"] = algorithms;
+  j["seeds"] = c.seeds;
+  j["time_limit"] = c.time_limit;
+  j["curve"] = {{"step", c.curve.step}, {"end", c.curve.end}};
+  return j;
+}
+
+ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& source) {
+  try {
+    ExperimentConfig c;
+    c.source = source;
+    c.name = j.at("name").get<std::string>();
+    c.description = j.at("description").get<std::string>();
+    const auto& h = j.at("hull");
+    c.hull_spec = h.at("spec").get<std::string>();
+    c.hull_width = h.at("width").get<int>();
+    c.hull_height = h.at("height").get<int>();
+    c.hull_cells = h.at("cells").get<int>();
+    c.hull_hash = h.at("hash").get<std::string>();
+    c.cell_size = j.at("cell_size").get<double>();
+    for (const auto& s : j.at("scenarios")) {
+      ScenarioSpec spec;
+      spec.name = s.at("name").get<std::string>();
+      spec.sweep = s.at("sweep").get<std::string>();
+      spec.sweep_value = s.at("sweep_value").get<std::string>();
+      for (const auto& z : s.at("zones")) {
+        spec.corrosion.zones.push_back({z.at("x_begin").get<int>(), z.at("x_end").get<int>(),
+                                        z.at("p_c").get<double>(), z.at("l_c").get<int>()});
+      }
+      spec.corrosion.p_tp = s.at("p_tp").get<double>();
+      spec.corrosion.p_fp = s.at("p_fp").get<double>();
+      c.scenarios.push_back(std::move(spec));
+    }
+    c.s1 = j.at("s1").get<int>();
+    c.s2 = j.at("s2").get<std::vector<int>>();
+    c.theta = j.at("theta").get<double>();
+    c.uavs = j.at("uavs").get<std::vector<int>>();
+    c.start_z = j.at("start_z").get<int>();
+    for (const auto& a : j.at("algorithms")) {
+      c.algorithms.push_back({a.at("label").get<std::string>(), a.at("planner").get<std::string>(),
+                              a.at("options").get<OptionMap>(), 0});
+    }
+    c.seeds = j.at("seeds").get<std::vector<std::uint64_t>>();
+    c.time_limit = j.at("time_limit").get<int>();
+    c.curve.step = j.at("curve").at("step").get<int>();
+    c.curve.end = j.at("curve").at("end").get<int>();
+    if (c.curve.step < 1) throw InputError(source, 0, "config.curve.step must be at least 1");
+    return c;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(source, 0, fmt::format("the recorded config is malformed: {}", e.what()));
+  }
+}
+
+std::string config_fingerprint(const ExperimentConfig& config) {
+  auto j = config_json(config);
+  // The name and description do not change any result.
+  j.erase("name");
+  j.erase("description");
+  return stable_id(j.dump());
+}
+
+}  // namespace hullinspect::experiment

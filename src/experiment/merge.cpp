@@ -1,0 +1,98 @@
+#include "hullinspect/experiment/merge.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/experiment/manifest.hpp"
+#include "hullinspect/experiment/plan.hpp"
+#include "hullinspect/experiment/results_dir.hpp"
+
+namespace hullinspect::experiment {
+
+namespace fs = std::filesystem;
+
+MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& out) {
+  if (inputs.empty()) throw ParameterError("inputs", "name at least one results directory");
+  if (!is_empty_dir(out)) {
+    throw InputError(out.string(), 0, "is not empty: merge into a new directory");
+  }
+  std::vector<nlohmann::json> manifests;
+  for (const auto& dir : inputs) manifests.push_back(read_manifest(dir));
+  const std::string fingerprint = manifests[0].value("fingerprint", "");
+  for (std::size_t i = 1; i < inputs.size(); ++i) {
+    if (manifests[i].value("fingerprint", "") != fingerprint) {
+      throw InputError((inputs[i] / kManifestFile).string(), 0,
+                       fmt::format("holds a different experiment than {} (config fingerprint {} vs "
+                                   "{})",
+                                   inputs[0].string(), manifests[i].value("fingerprint", "?"),
+                                   fingerprint));
+    }
+  }
+  const auto first_manifest = (inputs[0] / kManifestFile).string();
+  if (!manifests[0].contains("config")) throw InputError(first_manifest, 0, "has no 'config'");
+  const ExperimentPlan plan(config_from_json(manifests[0]["config"], first_manifest));
+  if (config_fingerprint(plan.config()) != fingerprint) {
+    throw InputError(first_manifest, 0,
+                     "its config does not reproduce its fingerprint (edited by hand, or written by "
+                     "another version of hullinspect?)");
+  }
+
+  MergeSummary summary;
+  summary.inputs = static_cast<int>(inputs.size());
+  StoredRuns merged;
+  for (const auto& dir : inputs) {
+    StoredRuns part = read_stored_runs(dir, plan);
+    for (auto& note : part.notes) summary.notes.push_back(std::move(note));
+    for (auto& [id, record] : part.records) {
+      auto [it, inserted] = merged.records.emplace(id, record);
+      if (inserted) continue;
+      if (it->second.runs != record.runs || it->second.samples != record.samples) {
+        throw InputError(dir.string(), 0,
+                         fmt::format("run {} differs from the same run in an earlier input", id));
+      }
+      ++summary.duplicates;
+    }
+  }
+  summary.runs = static_cast<int>(merged.records.size());
+  summary.missing = static_cast<int>(plan.runs().size()) - summary.runs;
+
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw InputError(out.string(), 0, fmt::format("cannot create: {}", ec.message()));
+  write_final_tables(out, plan, merged);
+
+  nlohmann::json manifest = base_manifest(plan);
+  manifest["config_source"] = manifests[0].value("config_source", "");
+  manifest["shard"] = "1/1";
+  manifest["status"] = summary.missing == 0 ? "complete" : "partial";
+  manifest["runs_done"] = summary.runs;
+  manifest["runs_missing"] = summary.missing;
+  std::string started;
+  std::string finished;
+  nlohmann::json parts = nlohmann::json::array();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const auto& m = manifests[i];
+    const std::string s = m.value("started", "");
+    const std::string f = m.value("finished", "");
+    if (!s.empty() && (started.empty() || s < started)) started = s;
+    if (!f.empty() && f > finished) finished = f;
+    parts.push_back({{"dir", inputs[i].string()},
+                     {"shard", m.value("shard", "1/1")},
+                     {"status", m.value("status", "")},
+                     {"started", s},
+                     {"finished", f},
+                     {"git_revision", m.value("git_revision", "unknown")},
+                     {"host", m.value("host", nlohmann::json::object())},
+                     {"last_invocation", m.value("last_invocation", nlohmann::json::object())}});
+  }
+  manifest["started"] = started;
+  manifest["finished"] = finished;
+  manifest["merged_at"] = utc_now();
+  manifest["merged_from"] = parts;
+  write_manifest(out, manifest);
+  return summary;
+}
+
+}  // namespace hullinspect::experiment

@@ -1,0 +1,120 @@
+#include "hullinspect/experiment/results_dir.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/experiment/csv.hpp"
+#include "hullinspect/experiment/journal.hpp"
+#include "hullinspect/io/atomic_file.hpp"
+
+namespace hullinspect::experiment {
+
+namespace {
+
+std::unordered_map<std::string, std::string> by_id(const std::filesystem::path& file,
+                                                   const JournalRows& rows,
+                                                   const ExperimentPlan& plan) {
+  std::unordered_map<std::string, std::string> out;
+  int line = 1;
+  for (const auto& l : rows.lines) {
+    ++line;
+    const std::string id(line_id(l));
+    if (plan.run_position(id) < 0) {
+      throw InputError(file.string(), line,
+                       fmt::format("run {} is not part of this experiment (the directory holds "
+                                   "another experiment's results)",
+                                   id));
+    }
+    auto [it, inserted] = out.emplace(id, l);
+    if (!inserted && it->second != l) {
+      throw InputError(file.string(), line,
+                       fmt::format("run {} appears twice with different values", id));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPlan& plan) {
+  StoredRuns stored;
+  const auto runs_path = dir / kRunsFile;
+  const auto samples_path = dir / kSamplesFile;
+  const auto timings_path = dir / kTimingsFile;
+  const auto runs = read_journal(runs_path, runs_header());
+  const auto samples = read_journal(samples_path, samples_header(plan.config().curve));
+  const auto timings = read_journal(timings_path, timings_header());
+  for (const auto* j : {&runs, &samples, &timings}) {
+    if (j->torn) {
+      const auto& name = j == &runs ? runs_path : j == &samples ? samples_path : timings_path;
+      stored.notes.push_back(fmt::format("{}: dropped a torn last line", name.string()));
+    }
+  }
+  const auto run_lines = by_id(runs_path, runs, plan);
+  auto sample_lines = by_id(samples_path, samples, plan);
+  auto timing_lines = by_id(timings_path, timings, plan);
+  int unfinished = 0;
+  for (const auto& [id, line] : run_lines) {
+    auto s = sample_lines.find(id);
+    if (s == sample_lines.end()) {
+      ++unfinished;
+      continue;
+    }
+    RunRecord record;
+    record.runs = line;
+    record.samples = std::move(s->second);
+    auto t = timing_lines.find(id);
+    record.timings = t != timing_lines.end() ? std::move(t->second) : id + ",,,,";
+    stored.records.emplace(id, std::move(record));
+  }
+  for (const auto& entry : sample_lines) {
+    if (!run_lines.contains(entry.first)) ++unfinished;
+  }
+  if (unfinished > 0) {
+    stored.notes.push_back(
+        fmt::format("{}: ignored {} row(s) of runs that had not finished writing", dir.string(),
+                    unfinished));
+  }
+  return stored;
+}
+
+OrderedLines canonical_lines(const ExperimentPlan& plan, const StoredRuns& stored) {
+  std::vector<std::pair<int, const RunRecord*>> order;
+  order.reserve(stored.records.size());
+  for (const auto& [id, record] : stored.records) order.emplace_back(plan.run_position(id), &record);
+  std::sort(order.begin(), order.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  OrderedLines lines;
+  for (const auto& [position, record] : order) {
+    lines.runs.push_back(record->runs);
+    lines.samples.push_back(record->samples);
+    lines.timings.push_back(record->timings);
+  }
+  return lines;
+}
+
+void write_final_tables(const std::filesystem::path& dir, const ExperimentPlan& plan,
+                        const StoredRuns& stored) {
+  const OrderedLines lines = canonical_lines(plan, stored);
+  auto write = [&](const char* name, const std::vector<std::string>& header,
+                   const std::vector<std::string>& rows) {
+    std::string content = csv_line(header) + "\n";
+    for (const auto& r : rows) content += r + "\n";
+    io::write_file_atomic(dir / name, content);
+  };
+  write(kSamplesFile, samples_header(plan.config().curve), lines.samples);
+  write(kTimingsFile, timings_header(), lines.timings);
+  io::write_file_atomic(dir / kCurvesFile, curves_csv(plan, lines));
+  write(kRunsFile, runs_header(), lines.runs);
+}
+
+bool is_empty_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::exists(dir, ec)) return true;
+  if (!std::filesystem::is_directory(dir, ec)) return false;
+  return std::filesystem::directory_iterator(dir, ec) == std::filesystem::directory_iterator();
+}
+
+}  // namespace hullinspect::experiment

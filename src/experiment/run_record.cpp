@@ -1,0 +1,109 @@
+#include "hullinspect/experiment/run_record.hpp"
+
+#include <fmt/format.h>
+
+#include "hullinspect/experiment/csv.hpp"
+
+namespace hullinspect::experiment {
+
+namespace {
+
+std::string optional_time(const std::optional<int>& t) { return t ? std::to_string(*t) : ""; }
+
+template <class T>
+std::string joined(const std::vector<world::CorrosionZone>& zones, T field) {
+  std::string out;
+  for (const auto& z : zones) out += fmt::format("{}{}", out.empty() ? "" : "/", field(z));
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> runs_header() {
+  return {"run_id",       "cell_id",
+          "scenario",     "sweep",
+          "sweep_value",  "algorithm",
+          "planner",      "planner_options",
+          "hull",         "cell_size",
+          "s1",           "s2",
+          "theta",        "uavs",
+          "start_z",      "time_limit",
+          "p_c",          "l_c",
+          "zone_bounds",  "p_tp",
+          "p_fp",         "seed",
+          "complete",     "T_c",
+          "T_m",          "steps",
+          "hull_cells",   "corroded_cells",
+          "detections",   "observations",
+          "redundant_observations", "moves",
+          "hovers",       "plane_changes",
+          "steps_z1",     "steps_z2",
+          "steps_transit", "tsp_solves",
+          "replans",      "assignments"};
+}
+
+std::vector<std::string> samples_header(const CurveGrid& grid) {
+  std::vector<std::string> h = {"run_id"};
+  const auto times = grid.times();
+  for (int t : times) h.push_back(fmt::format("inspected_{}", t));
+  for (int t : times) h.push_back(fmt::format("known_{}", t));
+  return h;
+}
+
+std::vector<std::string> timings_header() {
+  return {"run_id", "wall_seconds", "planner_seconds", "tsp_seconds", "tsp_max_seconds"};
+}
+
+int value_at(const std::vector<int>& series, int t) {
+  if (series.empty()) return 0;
+  const auto i = std::min(static_cast<std::size_t>(t), series.size() - 1);
+  return series[i];
+}
+
+RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::MissionResult& r,
+                      double wall_seconds) {
+  const auto& c = plan.config();
+  const Cell& cell = plan.cells()[static_cast<std::size_t>(run.cell)];
+  const auto& s = c.scenarios[static_cast<std::size_t>(cell.scenario)];
+  const auto& a = c.algorithms[static_cast<std::size_t>(cell.algorithm)];
+  const auto& zones = s.corrosion.zones;
+  std::string options;
+  for (const auto& [k, v] : a.options) options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
+  std::string bounds = zones.empty() ? "" : std::to_string(zones.front().x_begin);
+  for (const auto& z : zones) bounds += fmt::format("/{}", z.x_end);
+  const auto total = r.totals();
+
+  RunRecord record;
+  record.runs = csv_line({
+      run.id, cell.id, s.name, s.sweep, s.sweep_value, a.label, a.planner, options, c.hull_spec,
+      fmt::format("{}", c.cell_size), std::to_string(c.s1),
+      std::to_string(c.s2[static_cast<std::size_t>(cell.s2)]), fmt::format("{}", c.theta),
+      std::to_string(c.uavs[static_cast<std::size_t>(cell.uavs)]), std::to_string(c.start_z),
+      std::to_string(c.time_limit),
+      joined(zones, [](const world::CorrosionZone& z) { return fmt::format("{}", z.p_c); }),
+      joined(zones, [](const world::CorrosionZone& z) { return std::to_string(z.l_c); }), bounds,
+      fmt::format("{}", s.corrosion.p_tp), fmt::format("{}", s.corrosion.p_fp),
+      std::to_string(run.seed), r.complete ? "1" : "0", optional_time(r.t_c), optional_time(r.t_m),
+      std::to_string(r.steps), std::to_string(r.hull_cells), std::to_string(r.corroded_cells),
+      std::to_string(r.detections), std::to_string(r.observations),
+      std::to_string(r.redundant_observations), std::to_string(total.moves),
+      std::to_string(total.hovers), std::to_string(total.plane_changes),
+      std::to_string(total.steps_z1), std::to_string(total.steps_z2),
+      std::to_string(total.steps_transit), std::to_string(r.planner.tsp_solves),
+      std::to_string(r.planner.replans), std::to_string(r.planner.assignments)});
+
+  const auto times = c.curve.times();
+  std::string samples = run.id;
+  samples.reserve(times.size() * 10);
+  for (int t : times) samples += fmt::format(",{}", value_at(r.inspected_series, t));
+  for (int t : times) samples += fmt::format(",{}", value_at(r.known_series, t));
+  record.samples = std::move(samples);
+
+  record.timings = csv_line({run.id, fmt::format("{:.6f}", wall_seconds),
+                             fmt::format("{:.6f}", r.planner_seconds),
+                             fmt::format("{:.6f}", r.planner.tsp_seconds),
+                             fmt::format("{:.6f}", r.planner.tsp_max_seconds)});
+  return record;
+}
+
+}  // namespace hullinspect::experiment

@@ -1,0 +1,202 @@
+#include "hullinspect/experiment/summary.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::experiment {
+
+namespace {
+
+int parse_int(const std::string& s, const std::string& source, int line) {
+  int v = 0;
+  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) {
+    throw InputError(source, line, fmt::format("'{}' is not an integer", s));
+  }
+  return v;
+}
+
+TimeStats stats(const std::vector<double>& v) {
+  TimeStats s;
+  s.count = static_cast<int>(v.size());
+  if (v.empty()) return s;
+  double sum = 0;
+  for (double x : v) sum += x;
+  s.mean = sum / static_cast<double>(v.size());
+  if (v.size() > 1) {
+    double sq = 0;
+    for (double x : v) sq += (x - s.mean) * (x - s.mean);
+    s.std = std::sqrt(sq / static_cast<double>(v.size() - 1));
+  }
+  return s;
+}
+
+std::string mean_std(const TimeStats& t) {
+  if (t.count == 0) return "—";
+  return fmt::format("{:.1f} ± {:.1f}", t.mean, t.std);
+}
+
+/// Display width in characters (UTF-8 aware: counts code points).
+std::size_t width(const std::string& s) {
+  std::size_t n = 0;
+  for (unsigned char c : s) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
+std::string table(const std::vector<std::vector<std::string>>& rows) {
+  std::vector<std::size_t> w(rows[0].size(), 3);
+  for (const auto& r : rows) {
+    for (std::size_t i = 0; i < r.size(); ++i) w[i] = std::max(w[i], width(r[i]));
+  }
+  std::string out;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    out += '|';
+    for (std::size_t i = 0; i < rows[r].size(); ++i) {
+      const std::size_t fill = w[i] - width(rows[r][i]);
+      out += ' ';
+      if (r > 0) out.append(fill, ' ');  // numbers right-aligned
+      out += rows[r][i];
+      if (r == 0) out.append(fill, ' ');
+      out += " |";
+    }
+    out += '\n';
+    if (r == 0) {
+      out += '|';
+      for (std::size_t i = 0; i < rows[r].size(); ++i) {
+        out += ' ';
+        out.append(w[i] - 1, '-');
+        out += ": |";
+      }
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& source) {
+  const int c_scenario = runs.column("scenario", source);
+  const int c_sweep = runs.column("sweep", source);
+  const int c_value = runs.column("sweep_value", source);
+  const int c_algorithm = runs.column("algorithm", source);
+  const int c_s2 = runs.column("s2", source);
+  const int c_uavs = runs.column("uavs", source);
+  const int c_complete = runs.column("complete", source);
+  const int c_tc = runs.column("T_c", source);
+  const int c_tm = runs.column("T_m", source);
+
+  std::vector<SummaryRow> rows;
+  std::vector<std::vector<double>> tc, tm;
+  std::map<std::tuple<std::string, int, int, std::string>, std::size_t> index;
+  int line = 1;
+  for (const auto& r : runs.rows) {
+    ++line;
+    auto at = [&](int c) -> const std::string& { return r[static_cast<std::size_t>(c)]; };
+    const int s2 = parse_int(at(c_s2), source, line);
+    const int uavs = parse_int(at(c_uavs), source, line);
+    const auto key = std::make_tuple(at(c_scenario), s2, uavs, at(c_algorithm));
+    auto [it, inserted] = index.emplace(key, rows.size());
+    if (inserted) {
+      SummaryRow row;
+      row.scenario = at(c_scenario);
+      row.sweep = at(c_sweep);
+      row.sweep_value = at(c_value);
+      row.algorithm = at(c_algorithm);
+      row.s2 = s2;
+      row.uavs = uavs;
+      rows.push_back(row);
+      tc.emplace_back();
+      tm.emplace_back();
+    }
+    SummaryRow& row = rows[it->second];
+    ++row.runs;
+    if (at(c_complete) != "1") ++row.incomplete;
+    if (!at(c_tc).empty()) tc[it->second].push_back(parse_int(at(c_tc), source, line));
+    if (!at(c_tm).empty()) tm[it->second].push_back(parse_int(at(c_tm), source, line));
+  }
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    rows[i].t_c = stats(tc[i]);
+    rows[i].t_m = stats(tm[i]);
+  }
+  return rows;
+}
+
+std::string summary_csv(const std::vector<SummaryRow>& rows) {
+  std::string out = csv_line({"scenario", "sweep", "sweep_value", "s2", "uavs", "algorithm", "runs",
+                              "incomplete", "T_c_count", "T_c_mean", "T_c_std", "T_m_count",
+                              "T_m_mean", "T_m_std"}) +
+                    "\n";
+  auto number = [](const TimeStats& t, double v) {
+    return t.count == 0 ? std::string() : fmt::format("{:.3f}", v);
+  };
+  for (const auto& r : rows) {
+    out += csv_line({r.scenario, r.sweep, r.sweep_value, std::to_string(r.s2),
+                     std::to_string(r.uavs), r.algorithm, std::to_string(r.runs),
+                     std::to_string(r.incomplete), std::to_string(r.t_c.count),
+                     number(r.t_c, r.t_c.mean), number(r.t_c, r.t_c.std),
+                     std::to_string(r.t_m.count), number(r.t_m, r.t_m.mean),
+                     number(r.t_m, r.t_m.std)}) +
+           "\n";
+  }
+  return out;
+}
+
+std::string summary_markdown(const std::vector<SummaryRow>& rows) {
+  std::vector<std::string> scenarios;
+  std::vector<std::string> algorithms;
+  for (const auto& r : rows) {
+    if (std::find(scenarios.begin(), scenarios.end(), r.scenario) == scenarios.end()) {
+      scenarios.push_back(r.scenario);
+    }
+    if (std::find(algorithms.begin(), algorithms.end(), r.algorithm) == algorithms.end()) {
+      algorithms.push_back(r.algorithm);
+    }
+  }
+  std::string out;
+  for (const auto& scenario : scenarios) {
+    std::vector<std::pair<int, int>> params;  // (s2, n) in order of appearance
+    std::map<std::pair<std::pair<int, int>, std::string>, const SummaryRow*> cell;
+    int runs = 0;
+    for (const auto& r : rows) {
+      if (r.scenario != scenario) continue;
+      const auto p = std::make_pair(r.s2, r.uavs);
+      if (std::find(params.begin(), params.end(), p) == params.end()) params.push_back(p);
+      cell[{p, r.algorithm}] = &r;
+      runs = std::max(runs, r.runs);
+    }
+    for (const bool mission : {false, true}) {
+      out += fmt::format("### {} — {} (s), mean ± std over {} instances\n\n", scenario,
+                         mission ? "T_m" : "T_c", runs);
+      std::vector<std::vector<std::string>> t;
+      std::vector<std::string> header = {"s2", "n"};
+      header.insert(header.end(), algorithms.begin(), algorithms.end());
+      t.push_back(header);
+      for (const auto& p : params) {
+        std::vector<std::string> line = {std::to_string(p.first), std::to_string(p.second)};
+        for (const auto& a : algorithms) {
+          auto it = cell.find({p, a});
+          if (it == cell.end()) {
+            line.push_back("");
+            continue;
+          }
+          const SummaryRow& r = *it->second;
+          std::string text = mean_std(mission ? r.t_m : r.t_c);
+          if (r.incomplete > 0) text += fmt::format(" [{} incomplete]", r.incomplete);
+          line.push_back(text);
+        }
+        t.push_back(line);
+      }
+      out += table(t) + "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace hullinspect::experiment

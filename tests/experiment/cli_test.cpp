@@ -1,0 +1,242 @@
+// The experiment, merge and report commands as a user runs them (the CLI as a child process, found
+// through HULLINSPECT_CLI): a run killed with SIGKILL and resumed, the report's files, exit codes
+// and one-line errors.
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <set>
+#include <thread>
+
+#include "experiment_test_support.hpp"
+#include "hullinspect/experiment/csv.hpp"
+#include "hullinspect/experiment/manifest.hpp"
+#include "hullinspect/experiment/results_dir.hpp"
+#include "hullinspect/experiment/runner.hpp"
+
+extern char** environ;
+
+namespace hullinspect::experiment {
+namespace {
+
+using testing::count_lines;
+using testing::read;
+using testing::ScratchDir;
+
+std::string cli_path() {
+  if (const char* env = std::getenv("HULLINSPECT_CLI"); env != nullptr && *env != '\0') return env;
+  // Run by hand from the build tree: the CLI sits beside the test binary (build/<preset>/).
+  return (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "hullinspect").string();
+}
+
+/// Starts the CLI with `args`, stdout and stderr going to files in `dir`.
+pid_t start_cli(const std::vector<std::string>& args, const ScratchDir& dir) {
+  std::vector<std::string> argv = {cli_path()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> raw;
+  for (auto& a : argv) raw.push_back(a.data());
+  raw.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  const std::string out = (dir / "stdout.txt").string();
+  const std::string err = (dir / "stderr.txt").string();
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, raw[0], &actions, nullptr, raw.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  EXPECT_EQ(rc, 0) << "cannot start " << raw[0];
+  return pid;
+}
+
+struct Outcome {
+  int status = -1;  ///< exit status, or -signal
+  std::string out, err;
+};
+
+Outcome wait_cli(pid_t pid, const ScratchDir& dir) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  Outcome o;
+  o.status = WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+  o.out = read(dir / "stdout.txt");
+  o.err = read(dir / "stderr.txt");
+  return o;
+}
+
+Outcome run_cli(const std::vector<std::string>& args, const ScratchDir& dir) {
+  return wait_cli(start_cli(args, dir), dir);
+}
+
+/// 2 400 quick lawnmower missions: long enough to be killed part-way.
+const char* kLongConfig =
+    "hull: rectangle\n"
+    "grid: {width: 40, height: 12}\n"
+    "scenarios: [{name: dense, p_c: 0.02, l_c: 3}]\n"
+    "uavs: [1, 2, 3, 4]\n"
+    "instances: 600\n"
+    "curve: {step: 20, end: 400}\n";
+
+TEST(ExperimentCli, KilledRunResumesToExactlyTheFullSetOfRows) {
+  ScratchDir dir("kill");
+  const auto config = dir / "long.yaml";
+  io::write_file_atomic(config, kLongConfig);
+  const auto out = dir / "results";
+  const pid_t pid = start_cli({"experiment", "--config", config.string(), "--out", out.string(),
+                               "--jobs", "1"},
+                              dir);
+  // Kill it once some rows exist.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int rows = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::error_code ec;
+    if (std::filesystem::exists(out / kRunsFile, ec)) {
+      rows = count_lines(read(out / kRunsFile)) - 1;
+      if (rows >= 30) break;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  const Outcome killed = wait_cli(pid, dir);
+  ASSERT_EQ(killed.status, -SIGKILL) << "the run finished before it could be killed: " << killed.out;
+  const int kept = count_lines(read(out / kRunsFile)) - 1;
+  ASSERT_GE(kept, 30);
+  ASSERT_LT(kept, 2400);
+  EXPECT_EQ(read_manifest(out)["status"], "running");
+
+  const Outcome refused = run_cli({"experiment", "--config", config.string(), "--out", out.string()}, dir);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_EQ(refused.err, "hullinspect: " + out.string() +
+                             ": is not empty: pass --resume to continue the experiment in it, or "
+                             "choose another --out\n");
+
+  const Outcome resumed = run_cli(
+      {"experiment", "--config", config.string(), "--out", out.string(), "--resume", "--jobs", "2"}, dir);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("2400 runs of shard 1/1"), std::string::npos) << resumed.out;
+
+  // Exactly the full set of rows, none duplicated: the same files as an uninterrupted run.
+  const ExperimentPlan plan(load_config(config));
+  const auto table = parse_csv(read(out / kRunsFile), kRunsFile);
+  std::set<std::string> ids;
+  for (const auto& r : table.rows) ids.insert(r[0]);
+  EXPECT_EQ(table.rows.size(), 2400u);
+  EXPECT_EQ(ids.size(), 2400u);
+  const auto reference = dir / "reference";
+  RunnerOptions options;
+  options.jobs = 2;
+  run_experiment(plan, reference, options);
+  for (const char* file : {kRunsFile, kSamplesFile, kCurvesFile}) {
+    EXPECT_EQ(read(out / file), read(reference / file)) << file;
+  }
+  EXPECT_EQ(read_manifest(out)["status"], "complete");
+}
+
+const char* kReportConfig =
+    "name: report-test\n"
+    "hull: rectangle\n"
+    "grid: {width: 30, height: 10}\n"
+    "scenarios: [{name: dense, p_c: 0.03, l_c: 3}]\n"
+    "sweeps: [{parameter: p_tp, base: dense, values: [1.0, 0.5]}]\n"
+    "uavs: [2]\n"
+    "algorithms: [lawnmower, {name: lawnmower, label: lm-seed2, options: {partition-seed: 2}}]\n"
+    "instances: 3\n"
+    "curve: {step: 10, end: 200}\n";
+
+TEST(ExperimentCli, ReportWritesEveryTableAndFigure) {
+  ScratchDir dir("report");
+  const auto config = dir / "small.yaml";
+  io::write_file_atomic(config, kReportConfig);
+  const auto results = dir / "results";
+  const auto report = dir / "report";
+  const Outcome ran = run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir);
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  const Outcome made = run_cli({"report", results.string(), "--out", report.string()}, dir);
+  ASSERT_EQ(made.status, 0) << made.err;
+  EXPECT_NE(made.out.find("### dense — T_c (s), mean ± std over 3 instances"), std::string::npos)
+      << made.out;
+  EXPECT_NE(made.out.find("### p_tp=0.5 — T_m (s)"), std::string::npos) << made.out;
+  EXPECT_NE(made.out.find("| s2  | n   | lawnmower"), std::string::npos) << made.out;
+
+  EXPECT_EQ(count_lines(read(report / "summary.csv")), 1 + 3 * 2);  // 3 scenarios × 2 algorithms
+  const std::string md = read(report / "report.md");
+  EXPECT_NE(md.find("# Experiment report: report-test"), std::string::npos);
+  EXPECT_EQ(read(report / "summary.md"), made.out.substr(0, made.out.rfind("report: ")));
+  for (const std::string stem : {"fig6_dense", "fig7_dense_n2", "fig8_s2-7_n2"}) {
+    for (const std::string ext : {".png", ".pdf"}) {
+      const auto file = report / "figures" / (stem + ext);
+      ASSERT_TRUE(std::filesystem::exists(file)) << file;
+      const std::string bytes = read(file);
+      EXPECT_GT(bytes.size(), 5000u) << file;
+      EXPECT_EQ(bytes.substr(0, 4), ext == ".png" ? "\x89PNG" : "%PDF") << file;
+    }
+    EXPECT_NE(md.find("![" + stem + "](figures/" + stem + ".png)"), std::string::npos) << stem;
+  }
+  EXPECT_TRUE(std::filesystem::exists(report / "plot_report.py"));
+  // Only these: no figure for anything not in the results.
+  int figures = 0;
+  for (const auto& f : std::filesystem::directory_iterator(report / "figures")) figures += f.is_regular_file();
+  EXPECT_EQ(figures, 6);
+}
+
+TEST(ExperimentCli, ErrorsAreOneLineWithExitStatus2) {
+  ScratchDir dir("errors");
+  const auto bad = dir / "bad.yaml";
+  io::write_file_atomic(bad, "s1: 5\ns2:\n  - 7\n  - 8\n");
+  const auto out = dir / "never";
+  Outcome o = run_cli({"experiment", "--config", bad.string(), "--out", out.string()}, dir);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "hullinspect: " + bad.string() +
+                       ":4: s2: must be an odd integer greater than s1 = 5 (got 8)\n");
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  o = run_cli({"experiment", "--preset", "nope", "--out", out.string()}, dir);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "hullinspect: --preset: unknown preset 'nope' (known: fig8, paper, paper-quick)\n");
+
+  o = run_cli({"experiment", "--preset", "paper-quick", "--out", out.string(), "--shard", "4/3"}, dir);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "hullinspect: --shard: must be K/N with 1 <= K <= N (got '4/3')\n");
+
+  o = run_cli({"report", (dir / "nothing").string(), "--out", (dir / "r").string()}, dir);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "hullinspect: " + (dir / "nothing" / "manifest.json").string() +
+                       ": not found (is this a hullinspect experiment directory?)\n");
+}
+
+TEST(ExperimentCli, ShardsFromSlurmAndAPartialMerge) {
+  ScratchDir dir("slurm");
+  const auto config = dir / "small.yaml";
+  io::write_file_atomic(config, kReportConfig);
+  setenv("SLURM_ARRAY_TASK_ID", "1", 1);
+  setenv("SLURM_ARRAY_TASK_COUNT", "2", 1);
+  setenv("SLURM_ARRAY_TASK_MIN", "0", 1);
+  const Outcome shard = run_cli({"experiment", "--config", config.string(), "--out", (dir / "s2").string()}, dir);
+  unsetenv("SLURM_ARRAY_TASK_ID");
+  unsetenv("SLURM_ARRAY_TASK_COUNT");
+  unsetenv("SLURM_ARRAY_TASK_MIN");
+  ASSERT_EQ(shard.status, 0) << shard.err;
+  EXPECT_TRUE(shard.err.starts_with("hullinspect: shard 2/2 (from the Slurm job array)\n")) << shard.err;
+  EXPECT_EQ(read_manifest(dir / "s2")["shard"], "2/2");
+  const Outcome partial = run_cli({"merge", (dir / "s2").string(), "--out", (dir / "m").string()}, dir);
+  EXPECT_EQ(partial.status, 3);
+  EXPECT_NE(partial.err.find("9 runs of the experiment are in none of the inputs"), std::string::npos)
+      << partial.err;
+  const Outcome first = run_cli({"experiment", "--config", config.string(), "--out",
+                                 (dir / "s1").string(), "--shard", "1/2"},
+                                dir);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const Outcome full = run_cli({"merge", (dir / "s1").string(), (dir / "s2").string(), "--out",
+                                (dir / "all").string()},
+                               dir);
+  EXPECT_EQ(full.status, 0) << full.err;
+  EXPECT_EQ(full.out, "merged 2 directories into " + (dir / "all").string() + ": 18 runs\n");
+}
+
+}  // namespace
+}  // namespace hullinspect::experiment
