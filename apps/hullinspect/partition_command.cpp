@@ -108,9 +108,17 @@ void print_summary(const PartitionArgs& args, const world::HullMask& hull,
                    const std::vector<bool>& connected) {
   std::cout << fmt::format("{}: {} UAVs on {} ({} hull cells), seed {}\n", args.partitioner,
                            args.uavs, hull.source(), hull.cell_count(), args.seed);
-  std::cout << fmt::format("  {} after {} iterations in {:.3f} ms; tolerance reached {:g} cell{}\n",
-                           p.converged ? "converged" : "NOT converged", p.iterations,
-                           p.seconds * 1e3, p.tolerance, p.tolerance == 1 ? "" : "s");
+  if (p.converged) {
+    std::cout << fmt::format(
+        "  converged after {} iterations in {:.3f} ms; tolerance reached {:g} "
+        "cell{}\n",
+        p.iterations, p.seconds * 1e3, p.tolerance, p.tolerance == 1 ? "" : "s");
+  } else {
+    std::cout << fmt::format(
+        "  NOT converged after {} iterations in {:.3f} ms; best connected "
+        "partition found, largest imbalance {:g} cells\n",
+        p.iterations, p.seconds * 1e3, p.tolerance);
+  }
   std::cout << "  UAV  start        cells     desired  connected\n";
   for (std::size_t k = 0; k < starts.size(); ++k) {
     std::cout << fmt::format("  {:>3}  {:<11}  {:>5}  {:>10.2f}  {}\n", k,

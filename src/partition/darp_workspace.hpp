@@ -1,8 +1,9 @@
 #pragma once
 // Internal to DarpPartitioner: the buffers and the per-iteration steps of DARP (SPEC §5.1).
 //
-// Representation. Hull cells are numbered 0..N-1 in (y, x) order with a 4-neighbour table, so no
-// step scans non-hull cells or checks grid bounds. The evaluation matrix of UAV r is kept as
+// Representation. Hull cells are numbered 0..N-1 in (y, x) order, so the per-cell steps never scan
+// non-hull cells; the distance transforms run on a copy of the grid padded with a ring of blocked
+// cells, so they need no bounds checks. The evaluation matrix of UAV r is kept as
 // logarithms, E_r[j] = log(evaluation): DARP's multiplicative updates (fairness multiplier,
 // connectivity correction, random factor) become additions, nothing overflows however long a run
 // is, and the argmin of the assignment is unchanged. A multiplier that scales every entry of E_r

@@ -137,9 +137,10 @@ std::vector<grid::Cell> bunched_starts(const world::HullMask& hull, int n) {
 }
 
 TEST(Darp, StartsBunchedInOneCornerEndInTheConnectedFallback) {
-  // Beyond DARP on a long hull: from close starts its regions grow as nested shells, which cannot
-  // be both connected and balanced here (docs/partition.md). The result is the documented fallback:
-  // the best connected partition found, with a warning; never a split region.
+  // Hard for DARP: seen from close starts every far cell is nearly a tie, so the multiplicative
+  // evaluations grow nested shells and only many connectivity corrections bend them into strips
+  // (docs/partition.md: n = 3 needs ~400 iterations, n >= 4 usually fails). Within a short budget
+  // the result is the documented fallback: the best connected partition found, with a warning.
   const auto& hull = world::default_hull();
   for (int n : {3, 4, 8}) {
     SCOPED_TRACE(n);

@@ -26,7 +26,8 @@ struct DarpOptions {
   int max_discrepancy = 2;
   /// Largest (and initial) gain of the fairness multiplier. In an iteration in which some UAV is
   /// over its share, UAV r's evaluation matrix is multiplied by exp(g_r · (w_r − d_r) / d_r), where
-  /// w_r is its region's weight and d_r its desired weight; otherwise the multiplier is 1.
+  /// w_r is its region's weight and d_r its desired weight (the exponent clamped to ±0.1);
+  /// otherwise the multiplier is 1.
   double fairness_gain = 1.0;
   /// Each UAV's gain g_r is multiplied by gain_growth after a step that kept the sign of its share
   /// error (up to fairness_gain) …
