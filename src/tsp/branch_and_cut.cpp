@@ -15,7 +15,7 @@ constexpr double kBoundSlack = 1e-6;
 constexpr double kPricing = 1e-9;        // columns whose reduced cost is below −kPricing enter
 constexpr int kNearest = 6;              // initial columns: each end's nearest ends
 constexpr int kStrongCandidates = 8;     // strong branching: edges tried per node
-constexpr int kStrongIterations = 50;    // strong branching: dual pivots per child
+constexpr int kStrongIterations = 25;    // strong branching: dual pivots per child
 constexpr int kRootRounds = 200;         // cutting rounds at the root, at most
 constexpr int kNodeRounds = 20;          // cutting rounds at other nodes, at most
 constexpr std::size_t kTailRounds = 5;   // tailing off: bound progress over this many rounds …
@@ -142,7 +142,7 @@ bool BranchAndCut::solve_root() {
       return false;
     }
     if (integral_solution()) {
-      if (separate_subtours() > 0) continue;
+      if (separate_subtours(false) > 0) continue;
     } else if (!tailing_off(kRootRounds) && separate() > 0) {
       continue;
     }
@@ -187,8 +187,14 @@ void BranchAndCut::finish_root_columns() {
   const int columns = lp_.columns();
   for (int j = 0; j < columns; ++j) {
     const double reduced = lp_.reduced_cost(j);
-    if (x[j] < kIntegral && reduced > room) lp_.set_bounds(j, 0.0, 0.0);
-    if (x[j] > 1.0 - kIntegral && -reduced > room) lp_.set_bounds(j, 1.0, 1.0);
+    if (x[j] < kIntegral && reduced > room) {
+      lp_.set_bounds(j, 0.0, 0.0);
+      lp_.retire(j);
+    }
+    if (x[j] > 1.0 - kIntegral && -reduced > room) {
+      lp_.set_bounds(j, 1.0, 1.0);
+      lp_.retire(j);
+    }
   }
   price(room);
   stats_.columns = lp_.columns();
@@ -334,7 +340,7 @@ BranchAndCut::NodeState BranchAndCut::solve_node() {
     purge_cuts();
     if (integral_solution()) {
       // An integral solution is a tour unless it has subtours, which are its components.
-      if (separate_subtours() > 0) continue;
+      if (separate_subtours(false) > 0) continue;
       take_integral_tour();
       return NodeState::kIntegral;
     }
@@ -345,11 +351,16 @@ BranchAndCut::NodeState BranchAndCut::solve_node() {
 }
 
 int BranchAndCut::separate() {
-  const int subtours = separate_subtours();
-  return subtours + separate_blossoms();
+  // From cheap to expensive, stopping at the first kind that finds cuts: subtours that are
+  // components, blossoms whose handle is a component of the fractional edges, subtours by
+  // minimum cuts, blossoms by odd minimum cuts.
+  if (const int found = separate_subtours(false); found > 0) return found;
+  if (const int found = separate_blossoms(false); found > 0) return found;
+  if (const int found = separate_subtours(true); found > 0) return found;
+  return separate_blossoms(true);
 }
 
-int BranchAndCut::separate_subtours() {
+int BranchAndCut::separate_subtours(bool min_cuts) {
   const auto x = lp_.values();
   const auto s = static_cast<std::size_t>(supers_);
   weight_.assign(s * s, 0.0);
@@ -390,6 +401,7 @@ int BranchAndCut::separate_subtours() {
     }
     return static_cast<int>(cuts_.size() - before);
   }
+  if (!min_cuts) return 0;
   // Connected: minimum cuts between {S, A} and each segment.
   flow_.reset(supers_);
   for (std::size_t a = 0; a < s; ++a) {
@@ -413,7 +425,7 @@ int BranchAndCut::separate_subtours() {
   return static_cast<int>(cuts_.size() - before);
 }
 
-int BranchAndCut::separate_blossoms() {
+int BranchAndCut::separate_blossoms(bool min_cuts) {
   // Padberg–Rao: with w_e = min(x_e, 1 − x_e) and T the nodes with an odd number of edges above
   // one half (the forced edge always counts), a set H with |H ∩ T| odd and w(δ(H)) < 1 gives a
   // violated blossom with F = the edges of δ(H) above one half. Only fractional edges have w > 0,
@@ -464,7 +476,7 @@ int BranchAndCut::separate_blossoms() {
     }
     // Gusfield: n − 1 minimum cuts, each a tree edge of a Gomory–Hu tree; check each cut.
     const int size = static_cast<int>(members_.size());
-    if (size < 4) continue;
+    if (!min_cuts || size < 4) continue;
     for (int i = 0; i < size; ++i)
       local_[static_cast<std::size_t>(members_[static_cast<std::size_t>(i)])] = i;
     flow_.reset(size);

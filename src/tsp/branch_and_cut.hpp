@@ -74,8 +74,8 @@ class BranchAndCut {
   int price(double room);
   void add_columns(const std::vector<int>& edges);
   int separate();
-  int separate_subtours();
-  int separate_blossoms();
+  int separate_subtours(bool min_cuts);
+  int separate_blossoms(bool min_cuts);
   bool try_blossom(const std::vector<char>& handle);
   void add_cut(Cut cut);
   bool integral_solution();

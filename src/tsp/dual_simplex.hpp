@@ -26,6 +26,9 @@ class DualSimplex {
   /// Adds the cut row Σ_{j ∈ columns} x_j ≤ rhs; its slack enters the basis. Returns its index.
   int add_row(std::span<const int> columns, double rhs);
   void set_bounds(int column, double lower, double upper);
+  /// Takes a nonbasic fixed column (lower = upper) out of the pivoting for good: it keeps its
+  /// value but its reduced cost is no longer maintained, so its bounds must never change again.
+  void retire(int column);
   /// True if cut row i's slack is basic and positive (the row is not binding).
   bool slack_row(int row) const;
   /// Removes cut rows whose slacks are basic (see slack_row); later rows are renumbered down.
@@ -85,6 +88,7 @@ class DualSimplex {
   // Columns.
   std::vector<double> cost_, lo_, up_, d_;
   std::vector<std::vector<int>> rows_of_;
+  std::vector<int> live_;              // columns not retired, in index order
   std::vector<int> state_, position_;  // position in the basis when basic
   // Slacks (one per row): bounds [0, 0] for equality rows, [0, ∞) for cut rows.
   std::vector<int> slack_state_, slack_position_;
