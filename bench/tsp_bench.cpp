@@ -3,7 +3,7 @@
 //
 //   tsp_bench                 Google Benchmark: BM_Solve/<solver>/<g>, each iteration solves the
 //                             next instance of size g (time = mean over the instances)
-//   tsp_bench --table [--time-limit S] [--sizes 5,10,...] [--solvers a,b,...]
+//   tsp_bench --table [--time-limit S] [--sizes 5,10,...] [--solvers a,b:key=value,...]
 //                             the side-by-side table of docs/tsp.md: per solver and g, the median
 //                             and 95th-percentile (nearest rank) time over the instances, each
 //                             instance's time being the median of repeated solves (repeated until
@@ -154,9 +154,15 @@ int run_table(int argc, char** argv) {
     const auto& set = instances(g);
     std::vector<tsp::TspSolution> reference;
     std::map<std::string, double> medians;
-    for (const auto& name : solvers) {
+    for (const auto& spec : solvers) {
+      // "name" or "name:key=value" (one extra solver option, e.g. heuristic:kicks=20).
+      const std::string name = spec.substr(0, spec.find(':'));
       OptionMap options;
       if (name != "heuristic") options["time_limit"] = fmt::format("{}", time_limit);
+      if (const auto colon = spec.find(':'); colon != std::string::npos) {
+        const std::string kv = spec.substr(colon + 1);
+        options[kv.substr(0, kv.find('='))] = kv.substr(kv.find('=') + 1);
+      }
       auto solver = tsp::make_tsp_solver(name, options);
       std::vector<double> times, gaps;
       int proven = 0, equal = 0, comparable = 0;
@@ -176,7 +182,7 @@ int run_table(int argc, char** argv) {
                          static_cast<double>(std::max(1LL, reference[i].length)));
         }
       }
-      medians[name] = percentile(times, 0.5);
+      medians[spec] = percentile(times, 0.5);
       double mean_gap = 0, worst_gap = 0;
       for (double v : gaps) {
         mean_gap += v / static_cast<double>(gaps.size());

@@ -12,16 +12,16 @@ constexpr double kIntegral = 1e-6;   // |x − round(x)| below this counts as in
 constexpr double kSupport = 1e-9;    // edges below this are absent from the support graph
 constexpr double kViolation = 1e-6;  // a cut must be violated by more than this
 constexpr double kBoundSlack = 1e-6;
-constexpr double kPricing = 1e-9;        // columns whose reduced cost is below −kPricing enter
-constexpr int kNearest = 6;              // initial columns: each end's nearest ends
-constexpr int kStrongCandidates = 8;     // strong branching: edges tried per node
-constexpr int kStrongIterations = 25;    // strong branching: dual pivots per child
-constexpr int kRootRounds = 200;         // cutting rounds at the root, at most
-constexpr int kNodeRounds = 20;          // cutting rounds at other nodes, at most
-constexpr std::size_t kTailRounds = 5;   // tailing off: bound progress over this many rounds …
-constexpr double kTailProgress = 0.05;   // … below this ends the cutting at a node
-constexpr int kBlossomsPerRound = 10;    // at least; g / 2 if larger
-constexpr long kPivotLimit = 1'000'000;  // per LP solve; reaching it is numerical trouble
+constexpr double kPricing = 1e-9;       // columns whose reduced cost is below −kPricing enter
+constexpr int kNearest = 6;             // initial columns: each end's nearest ends
+constexpr int kStrongCandidates = 8;    // strong branching: edges tried per node
+constexpr int kStrongIterations = 25;   // strong branching: dual pivots per child
+constexpr int kRootRounds = 200;        // cutting rounds at the root, at most
+constexpr int kNodeRounds = 20;         // cutting rounds at other nodes, at most
+constexpr std::size_t kTailRounds = 5;  // tailing off: bound progress over this many rounds …
+constexpr double kTailProgress = 0.05;  // … below this ends the cutting at a node
+constexpr int kBlossomsPerRound = 10;   // at least; g / 2 if larger
+constexpr long kPivotLimit = 200'000;   // per LP solve; reaching it is numerical trouble
 }  // namespace
 
 BranchAndCut::BranchAndCut() = default;
@@ -116,8 +116,12 @@ void BranchAndCut::build_lp() {
 }
 
 bool BranchAndCut::resolve() {
-  status_ = lp_.solve(kPivotLimit);
+  status_ = lp_.solve(kPivotLimit, deadline_);
   ++stats_.lp_solves;
+  if (status_ == DualSimplex::Status::kPivotLimit &&
+      std::chrono::steady_clock::now() >= deadline_) {
+    stopped_ = true;  // out of time, not numerical trouble
+  }
   return status_ == DualSimplex::Status::kOptimal;
 }
 
@@ -433,8 +437,11 @@ int BranchAndCut::separate_blossoms(bool min_cuts) {
   // (Gusfield's algorithm); a component with |C ∩ T| odd is itself such a set.
   const auto x = lp_.values();
   const auto n = static_cast<std::size_t>(nodes_);
-  std::vector<int> big(n, 1);  // edges above one half at each node, the forced one included
-  std::vector<std::vector<int>> fractional(n);
+  std::vector<int>& big = big_;  // edges above one half at each node, the forced one included
+  big.assign(n, 1);
+  std::vector<std::vector<int>>& fractional = fractional_;
+  fractional.resize(n);
+  for (auto& list : fractional) list.clear();
   for (int j = 0; j < lp_.columns(); ++j) {
     const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
     if (x[j] > 0.5 + kIntegral) {
@@ -450,7 +457,8 @@ int BranchAndCut::separate_blossoms(bool min_cuts) {
   pending_.clear();
   label_.assign(n, -1);
   local_.assign(n, -1);
-  std::vector<char> handle(n, 0);
+  std::vector<char>& handle = handle_;
+  handle.assign(n, 0);
   for (std::size_t root = 0; root < n; ++root) {
     if (label_[root] >= 0 || fractional[root].empty()) continue;
     members_.assign(1, static_cast<int>(root));
@@ -530,7 +538,8 @@ bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
   double rhs = 0;
   int handle_size = 0;
   int forced_inside = 0;
-  std::vector<int> teeth_free;  // free edges in F
+  std::vector<int>& teeth_free = teeth_;  // free edges in F
+  teeth_free.clear();
   int forced_teeth = 0;
   int teeth = 0;
   // The leaving edge closest to one half, for the parity fix: (free edge or -1 - forced node).
@@ -595,7 +604,7 @@ bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
   cut.subtour = false;
   cut.inside = handle;
   std::sort(teeth_free.begin(), teeth_free.end());
-  cut.teeth = std::move(teeth_free);
+  cut.teeth = teeth_free;
   cut.rhs = rhs;
   pending_.push_back({lhs - rhs, std::move(cut)});
   return true;

@@ -336,7 +336,8 @@ bool DualSimplex::refactor() {
   return true;
 }
 
-DualSimplex::Status DualSimplex::solve(long max_pivots) {
+DualSimplex::Status DualSimplex::solve(long max_pivots,
+                                       std::chrono::steady_clock::time_point deadline) {
   const auto n = cost_.size();
   alpha_.resize(n);
   long pivots = 0;
@@ -366,6 +367,8 @@ DualSimplex::Status DualSimplex::solve(long max_pivots) {
       return Status::kOptimal;
     }
     if (pivots >= max_pivots) return Status::kPivotLimit;
+    if (pivots % 64 == 63 && std::chrono::steady_clock::now() >= deadline)
+      return Status::kPivotLimit;
     const int leaving = head_[static_cast<std::size_t>(r)];
     const bool to_lower = basic_[static_cast<std::size_t>(r)] < var_lower(leaving);
     const double sign = to_lower ? -1.0 : 1.0;

@@ -9,6 +9,7 @@
 // and recomputed from the basis every `refactor interval` pivots. dual_bound() gives a lower bound
 // that stays valid whatever the numerical state (a Lagrangian bound from the current duals).
 
+#include <chrono>
 #include <span>
 #include <vector>
 
@@ -34,8 +35,10 @@ class DualSimplex {
   /// Removes cut rows whose slacks are basic (see slack_row); later rows are renumbered down.
   void remove_rows(std::span<const int> rows);
 
-  /// Dual simplex pivots until optimal, infeasible or `max_pivots`.
-  Status solve(long max_pivots);
+  /// Dual simplex pivots until optimal, infeasible, `max_pivots` or `deadline` (checked every
+  /// 64 pivots); the last two give kPivotLimit.
+  Status solve(long max_pivots, std::chrono::steady_clock::time_point deadline =
+                                    std::chrono::steady_clock::time_point::max());
 
   int columns() const { return static_cast<int>(cost_.size()); }
   int rows() const { return m_; }
@@ -49,8 +52,9 @@ class DualSimplex {
   double reduced_cost(int j) const { return d_[static_cast<std::size_t>(j)]; }
   /// Row duals π (after a solve).
   std::span<const double> duals();
-  /// max over feasible x of nothing: min over the column box of (c − Aᵀπ)ᵀx + πᵀb with π the
-  /// current duals (cut rows' duals clamped to ≤ 0) — a valid lower bound on the LP optimum.
+  /// min over the column box of (c − Aᵀπ)ᵀx + πᵀb with π the current duals (cut rows' duals
+  /// clamped to ≤ 0): a lower bound on the LP optimum that holds for any π, so numerical error can
+  /// only weaken it.
   double dual_bound();
 
   /// max |B⁻¹B − I| over the kept inverse and the basis it claims: a self-check for tests.
