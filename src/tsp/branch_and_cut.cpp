@@ -12,16 +12,16 @@ constexpr double kIntegral = 1e-6;   // |x − round(x)| below this counts as in
 constexpr double kSupport = 1e-9;    // edges below this are absent from the support graph
 constexpr double kViolation = 1e-6;  // a cut must be violated by more than this
 constexpr double kBoundSlack = 1e-6;
-constexpr double kPricing = 1e-9;        // columns whose reduced cost is below −kPricing enter
-constexpr int kNearest = 6;              // initial columns: each end's nearest ends
-constexpr int kStrongCandidates = 8;     // strong branching: edges tried per node
-constexpr int kStrongIterations = 50;    // strong branching: dual pivots per child
-constexpr int kRootRounds = 200;         // cutting rounds at the root, at most
-constexpr int kNodeRounds = 20;          // cutting rounds at other nodes, at most
-constexpr std::size_t kTailRounds = 5;   // tailing off: bound progress over this many rounds …
-constexpr double kTailProgress = 0.05;   // … below this ends the cutting at a node
-constexpr int kBlossomsPerRound = 10;    // at least; g / 2 if larger
-constexpr long kPivotLimit = 1'000'000;  // per LP solve; reaching it is numerical trouble
+constexpr double kPricing = 1e-9;       // columns whose reduced cost is below −kPricing enter
+constexpr int kNearest = 6;             // initial columns: each end's nearest ends
+constexpr int kStrongCandidates = 8;    // strong branching: edges tried per node
+constexpr int kStrongIterations = 25;   // strong branching: dual pivots per child
+constexpr int kRootRounds = 200;        // cutting rounds at the root, at most
+constexpr int kNodeRounds = 20;         // cutting rounds at other nodes, at most
+constexpr std::size_t kTailRounds = 5;  // tailing off: bound progress over this many rounds …
+constexpr double kTailProgress = 0.05;  // … below this ends the cutting at a node
+constexpr int kBlossomsPerRound = 10;   // at least; g / 2 if larger
+constexpr long kPivotLimit = 200'000;   // per LP solve; reaching it is numerical trouble
 }  // namespace
 
 BranchAndCut::BranchAndCut() = default;
@@ -116,8 +116,12 @@ void BranchAndCut::build_lp() {
 }
 
 bool BranchAndCut::resolve() {
-  status_ = lp_.solve(kPivotLimit);
+  status_ = lp_.solve(kPivotLimit, deadline_);
   ++stats_.lp_solves;
+  if (status_ == DualSimplex::Status::kPivotLimit &&
+      std::chrono::steady_clock::now() >= deadline_) {
+    stopped_ = true;  // out of time, not numerical trouble
+  }
   return status_ == DualSimplex::Status::kOptimal;
 }
 
@@ -142,7 +146,7 @@ bool BranchAndCut::solve_root() {
       return false;
     }
     if (integral_solution()) {
-      if (separate_subtours() > 0) continue;
+      if (separate_subtours(false) > 0) continue;
     } else if (!tailing_off(kRootRounds) && separate() > 0) {
       continue;
     }
@@ -187,8 +191,14 @@ void BranchAndCut::finish_root_columns() {
   const int columns = lp_.columns();
   for (int j = 0; j < columns; ++j) {
     const double reduced = lp_.reduced_cost(j);
-    if (x[j] < kIntegral && reduced > room) lp_.set_bounds(j, 0.0, 0.0);
-    if (x[j] > 1.0 - kIntegral && -reduced > room) lp_.set_bounds(j, 1.0, 1.0);
+    if (x[j] < kIntegral && reduced > room) {
+      lp_.set_bounds(j, 0.0, 0.0);
+      lp_.retire(j);
+    }
+    if (x[j] > 1.0 - kIntegral && -reduced > room) {
+      lp_.set_bounds(j, 1.0, 1.0);
+      lp_.retire(j);
+    }
   }
   price(room);
   stats_.columns = lp_.columns();
@@ -334,7 +344,7 @@ BranchAndCut::NodeState BranchAndCut::solve_node() {
     purge_cuts();
     if (integral_solution()) {
       // An integral solution is a tour unless it has subtours, which are its components.
-      if (separate_subtours() > 0) continue;
+      if (separate_subtours(false) > 0) continue;
       take_integral_tour();
       return NodeState::kIntegral;
     }
@@ -345,11 +355,16 @@ BranchAndCut::NodeState BranchAndCut::solve_node() {
 }
 
 int BranchAndCut::separate() {
-  const int subtours = separate_subtours();
-  return subtours + separate_blossoms();
+  // From cheap to expensive, stopping at the first kind that finds cuts: subtours that are
+  // components, blossoms whose handle is a component of the fractional edges, subtours by
+  // minimum cuts, blossoms by odd minimum cuts.
+  if (const int found = separate_subtours(false); found > 0) return found;
+  if (const int found = separate_blossoms(false); found > 0) return found;
+  if (const int found = separate_subtours(true); found > 0) return found;
+  return separate_blossoms(true);
 }
 
-int BranchAndCut::separate_subtours() {
+int BranchAndCut::separate_subtours(bool min_cuts) {
   const auto x = lp_.values();
   const auto s = static_cast<std::size_t>(supers_);
   weight_.assign(s * s, 0.0);
@@ -390,6 +405,7 @@ int BranchAndCut::separate_subtours() {
     }
     return static_cast<int>(cuts_.size() - before);
   }
+  if (!min_cuts) return 0;
   // Connected: minimum cuts between {S, A} and each segment.
   flow_.reset(supers_);
   for (std::size_t a = 0; a < s; ++a) {
@@ -413,7 +429,7 @@ int BranchAndCut::separate_subtours() {
   return static_cast<int>(cuts_.size() - before);
 }
 
-int BranchAndCut::separate_blossoms() {
+int BranchAndCut::separate_blossoms(bool min_cuts) {
   // Padberg–Rao: with w_e = min(x_e, 1 − x_e) and T the nodes with an odd number of edges above
   // one half (the forced edge always counts), a set H with |H ∩ T| odd and w(δ(H)) < 1 gives a
   // violated blossom with F = the edges of δ(H) above one half. Only fractional edges have w > 0,
@@ -421,8 +437,11 @@ int BranchAndCut::separate_blossoms() {
   // (Gusfield's algorithm); a component with |C ∩ T| odd is itself such a set.
   const auto x = lp_.values();
   const auto n = static_cast<std::size_t>(nodes_);
-  std::vector<int> big(n, 1);  // edges above one half at each node, the forced one included
-  std::vector<std::vector<int>> fractional(n);
+  std::vector<int>& big = big_;  // edges above one half at each node, the forced one included
+  big.assign(n, 1);
+  std::vector<std::vector<int>>& fractional = fractional_;
+  fractional.resize(n);
+  for (auto& list : fractional) list.clear();
   for (int j = 0; j < lp_.columns(); ++j) {
     const auto e = static_cast<std::size_t>(edge_of_column_[static_cast<std::size_t>(j)]);
     if (x[j] > 0.5 + kIntegral) {
@@ -438,7 +457,8 @@ int BranchAndCut::separate_blossoms() {
   pending_.clear();
   label_.assign(n, -1);
   local_.assign(n, -1);
-  std::vector<char> handle(n, 0);
+  std::vector<char>& handle = handle_;
+  handle.assign(n, 0);
   for (std::size_t root = 0; root < n; ++root) {
     if (label_[root] >= 0 || fractional[root].empty()) continue;
     members_.assign(1, static_cast<int>(root));
@@ -464,7 +484,7 @@ int BranchAndCut::separate_blossoms() {
     }
     // Gusfield: n − 1 minimum cuts, each a tree edge of a Gomory–Hu tree; check each cut.
     const int size = static_cast<int>(members_.size());
-    if (size < 4) continue;
+    if (!min_cuts || size < 4) continue;
     for (int i = 0; i < size; ++i)
       local_[static_cast<std::size_t>(members_[static_cast<std::size_t>(i)])] = i;
     flow_.reset(size);
@@ -518,7 +538,8 @@ bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
   double rhs = 0;
   int handle_size = 0;
   int forced_inside = 0;
-  std::vector<int> teeth_free;  // free edges in F
+  std::vector<int>& teeth_free = teeth_;  // free edges in F
+  teeth_free.clear();
   int forced_teeth = 0;
   int teeth = 0;
   // The leaving edge closest to one half, for the parity fix: (free edge or -1 - forced node).
@@ -583,7 +604,7 @@ bool BranchAndCut::try_blossom(const std::vector<char>& handle) {
   cut.subtour = false;
   cut.inside = handle;
   std::sort(teeth_free.begin(), teeth_free.end());
-  cut.teeth = std::move(teeth_free);
+  cut.teeth = teeth_free;
   cut.rhs = rhs;
   pending_.push_back({lhs - rhs, std::move(cut)});
   return true;

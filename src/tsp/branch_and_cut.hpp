@@ -13,12 +13,18 @@
 //    forced edges included), separated by the Padberg–Rao odd-cut method on the fractional edges
 //    (Gomory–Hu tree by Gusfield's algorithm). They remove the half-integral odd cycles that make
 //    the plain subtour LP weak on these instances.
+// Separation escalates from cheap to expensive and stops at the first kind that finds cuts; at most
+// max(10, g/2) blossoms per round, the most violated first; a node stops cutting after a round
+// limit or when the bound stalls (tailing off) and is branched on; cuts that are not binding are
+// dropped once there are more cuts than nodes (the LP's cost grows with the square of its rows).
 // Column generation at the root: the LP starts from the local search's tour edges, every edge at S
 // and A and each end's nearest ends, and is priced against all edges until no reduced cost is
 // negative. Then edges whose reduced cost shows they cannot beat the incumbent are dropped for good
 // and the others enter the LP, so the tree needs no pricing. Depth-first branch-and-bound on one
 // warm-started LP, branching on an edge chosen by strong branching; a node is pruned when its LP
-// bound cannot beat the incumbent by 1 (lengths are integers).
+// bound (a Lagrangian bound from the duals, valid whatever the LP's numerical state) cannot beat
+// the incumbent by 1 (lengths are integers). Deterministic: no randomness, no clocks except the
+// deadline.
 
 #include <chrono>
 #include <memory>
@@ -74,8 +80,8 @@ class BranchAndCut {
   int price(double room);
   void add_columns(const std::vector<int>& edges);
   int separate();
-  int separate_subtours();
-  int separate_blossoms();
+  int separate_subtours(bool min_cuts);
+  int separate_blossoms(bool min_cuts);
   bool try_blossom(const std::vector<char>& handle);
   void add_cut(Cut cut);
   bool integral_solution();
@@ -125,7 +131,9 @@ class BranchAndCut {
     Cut cut;
   };
   std::vector<Pending> pending_;
-  std::vector<char> side_;
+  std::vector<char> side_, handle_;
+  std::vector<int> big_, teeth_;
+  std::vector<std::vector<int>> fractional_;
 };
 
 }  // namespace hullinspect::tsp::detail

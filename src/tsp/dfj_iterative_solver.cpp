@@ -165,7 +165,10 @@ TspSolution DfjIterativeSolver::solve(const SegmentTsp& problem) {
     model.setLogLevel(0);
     model.messageHandler()->setLogLevel(0);
     model.solver()->messageHandler()->setLogLevel(0);
-    if (options_.time_limit > 0) model.setMaximumSeconds(remaining);
+    if (options_.time_limit > 0) {
+      model.setUseElapsedTime(true);  // wall-clock, like the limit of the other solvers
+      model.setMaximumSeconds(remaining);
+    }
     model.branchAndBound();
     if (!model.isProvenOptimal() || model.bestSolution() == nullptr) break;
     const double* x = model.bestSolution();

@@ -24,6 +24,7 @@ void DualSimplex::reset(std::span<const double> equality_rhs) {
   up_.clear();
   d_.clear();
   rows_of_.clear();
+  live_.clear();
   state_.clear();
   position_.clear();
   slack_state_.clear();
@@ -81,6 +82,7 @@ double DualSimplex::value_of_nonbasic(int var) const {
 int DualSimplex::add_column(std::span<const int> rows, double cost, double lower, double upper) {
   const int j = static_cast<int>(cost_.size());
   rows_of_.emplace_back(rows.begin(), rows.end());
+  live_.push_back(j);
   cost_.push_back(cost);
   lo_.push_back(lower);
   up_.push_back(upper);
@@ -150,6 +152,13 @@ void DualSimplex::set_bounds(int j, double lower, double upper) {
     for (int i : rows_of_[jj]) a += inverse(p, i);
     basic_[static_cast<std::size_t>(p)] -= a * shift;
   }
+}
+
+void DualSimplex::retire(int j) {
+  if (position_[static_cast<std::size_t>(j)] >= 0 ||
+      lo_[static_cast<std::size_t>(j)] != up_[static_cast<std::size_t>(j)])
+    return;
+  std::erase(live_, j);
 }
 
 bool DualSimplex::slack_row(int row) const {
@@ -327,7 +336,8 @@ bool DualSimplex::refactor() {
   return true;
 }
 
-DualSimplex::Status DualSimplex::solve(long max_pivots) {
+DualSimplex::Status DualSimplex::solve(long max_pivots,
+                                       std::chrono::steady_clock::time_point deadline) {
   const auto n = cost_.size();
   alpha_.resize(n);
   long pivots = 0;
@@ -357,6 +367,8 @@ DualSimplex::Status DualSimplex::solve(long max_pivots) {
       return Status::kOptimal;
     }
     if (pivots >= max_pivots) return Status::kPivotLimit;
+    if (pivots % 64 == 63 && std::chrono::steady_clock::now() >= deadline)
+      return Status::kPivotLimit;
     const int leaving = head_[static_cast<std::size_t>(r)];
     const bool to_lower = basic_[static_cast<std::size_t>(r)] < var_lower(leaving);
     const double sign = to_lower ? -1.0 : 1.0;
@@ -372,7 +384,8 @@ DualSimplex::Status DualSimplex::solve(long max_pivots) {
         max_ratio = std::min(max_ratio, (std::max(-d, 0.0) + kDualTolerance) / -a);
       }
     };
-    for (std::size_t j = 0; j < n; ++j) {
+    for (const int live : live_) {
+      const auto j = static_cast<std::size_t>(live);
       if (position_[j] >= 0) continue;
       double a = 0;
       for (int i : rows_of_[j]) a += rho_[static_cast<std::size_t>(i)];
@@ -406,9 +419,10 @@ DualSimplex::Status DualSimplex::solve(long max_pivots) {
         found = true;
       }
     };
-    for (std::size_t j = 0; j < n; ++j) {
+    for (const int live : live_) {
+      const auto j = static_cast<std::size_t>(live);
       if (position_[j] >= 0 || lo_[j] == up_[j]) continue;
-      second_pass(static_cast<int>(j), alpha_[j], d_[j], state_[j]);
+      second_pass(live, alpha_[j], d_[j], state_[j]);
     }
     for (int i = 0; i < m_; ++i) {
       if (slack_position_[static_cast<std::size_t>(i)] >= 0 ||
@@ -452,7 +466,8 @@ DualSimplex::Status DualSimplex::solve(long max_pivots) {
     const double d_entering = entering >= 0 ? d_[static_cast<std::size_t>(entering)]
                                             : slack_d_[static_cast<std::size_t>(-1 - entering)];
     const double theta = d_entering / alpha_rq;
-    for (std::size_t j = 0; j < n; ++j) {
+    for (const int live : live_) {
+      const auto j = static_cast<std::size_t>(live);
       if (position_[j] < 0) d_[j] -= theta * alpha_[j];
     }
     for (int i = 0; i < m_; ++i) {

@@ -9,6 +9,7 @@
 // and recomputed from the basis every `refactor interval` pivots. dual_bound() gives a lower bound
 // that stays valid whatever the numerical state (a Lagrangian bound from the current duals).
 
+#include <chrono>
 #include <span>
 #include <vector>
 
@@ -26,13 +27,18 @@ class DualSimplex {
   /// Adds the cut row Σ_{j ∈ columns} x_j ≤ rhs; its slack enters the basis. Returns its index.
   int add_row(std::span<const int> columns, double rhs);
   void set_bounds(int column, double lower, double upper);
+  /// Takes a nonbasic fixed column (lower = upper) out of the pivoting for good: it keeps its
+  /// value but its reduced cost is no longer maintained, so its bounds must never change again.
+  void retire(int column);
   /// True if cut row i's slack is basic and positive (the row is not binding).
   bool slack_row(int row) const;
   /// Removes cut rows whose slacks are basic (see slack_row); later rows are renumbered down.
   void remove_rows(std::span<const int> rows);
 
-  /// Dual simplex pivots until optimal, infeasible or `max_pivots`.
-  Status solve(long max_pivots);
+  /// Dual simplex pivots until optimal, infeasible, `max_pivots` or `deadline` (checked every
+  /// 64 pivots); the last two give kPivotLimit.
+  Status solve(long max_pivots, std::chrono::steady_clock::time_point deadline =
+                                    std::chrono::steady_clock::time_point::max());
 
   int columns() const { return static_cast<int>(cost_.size()); }
   int rows() const { return m_; }
@@ -46,8 +52,9 @@ class DualSimplex {
   double reduced_cost(int j) const { return d_[static_cast<std::size_t>(j)]; }
   /// Row duals π (after a solve).
   std::span<const double> duals();
-  /// max over feasible x of nothing: min over the column box of (c − Aᵀπ)ᵀx + πᵀb with π the
-  /// current duals (cut rows' duals clamped to ≤ 0) — a valid lower bound on the LP optimum.
+  /// min over the column box of (c − Aᵀπ)ᵀx + πᵀb with π the current duals (cut rows' duals
+  /// clamped to ≤ 0): a lower bound on the LP optimum that holds for any π, so numerical error can
+  /// only weaken it.
   double dual_bound();
 
   /// max |B⁻¹B − I| over the kept inverse and the basis it claims: a self-check for tests.
@@ -85,6 +92,7 @@ class DualSimplex {
   // Columns.
   std::vector<double> cost_, lo_, up_, d_;
   std::vector<std::vector<int>> rows_of_;
+  std::vector<int> live_;              // columns not retired, in index order
   std::vector<int> state_, position_;  // position in the basis when basic
   // Slacks (one per row): bounds [0, 0] for equality rows, [0, ∞) for cut rows.
   std::vector<int> slack_state_, slack_position_;

@@ -32,7 +32,7 @@ const std::vector<TspSolverInfo>& registry() {
   static const HeuristicOptions heuristic;
   static const std::vector<TspSolverInfo> entries = {
       {"exact",
-       "proves optimality: dynamic program for small g, branch-and-cut on CLP above",
+       "proves optimality: dynamic program for small g, branch-and-cut above",
        {{"time_limit", text(exact.time_limit),
          "seconds before returning the best tour with optimal = false (0 = none)"},
         {"dp_max_segments", text(exact.dp_max_segments),

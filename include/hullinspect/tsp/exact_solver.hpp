@@ -1,7 +1,8 @@
 #pragma once
 // "exact" (the default TSP solver): proves optimality. Small instances go to a dynamic program over
-// (visited segments, exit end); larger ones to a branch-and-cut on CLP that starts from the local
-// search's tour. See docs/tsp.md for the method and measurements.
+// (visited segments, exit end); larger ones to a branch-and-cut (subtour and blossom cuts, strong
+// branching, its own small dual simplex) that starts from the local search's tour. See docs/tsp.md
+// for the method and measurements.
 
 #include <cstdint>
 #include <memory>
