@@ -120,6 +120,7 @@ void CoopFrontierPlanner::assign_frontiers() {
   for (std::size_t j = 0; j < indices.size(); ++j) {
     const int i = indices[j];
     utility_[j] =
+        options_.base_utility +
         frontier_utility(options_.alpha, use_prior ? prior_field_.distance(i) : grid::kUnreachable,
                          use_detected ? detected_field_.distance(i) : grid::kUnreachable);
   }

@@ -25,6 +25,7 @@ std::unique_ptr<Planner> make_coop_frontier(const OptionMap& options) {
   CoopFrontierOptions o;
   o.alpha = reader.get_double("alpha", o.alpha, 0.0, 1.0);
   o.beta = reader.get_double("beta", o.beta, 0.0, 1e6);
+  o.base_utility = reader.get_double("base-utility", o.base_utility, 0.0, 1e6);
   o.radius_factor = reader.get_double("radius-factor", o.radius_factor, 0.0, 1e3);
   o.endgame_stay_low = reader.get_bool("endgame-stay-low", o.endgame_stay_low);
   reader.reject_unknown();
@@ -92,6 +93,9 @@ const std::vector<PlannerInfo>& registry() {
          "weight of the prior term 1/d_HP in the frontier utility (eq. 13), [0, 1]"},
         {"beta", fmt::format("{}", CoopFrontierOptions{}.beta),
          "weight of the travel term 1/d(r, f) in the assignment (eq. 15), >= 0"},
+        {"base-utility", fmt::format("{}", CoopFrontierOptions{}.base_utility),
+         "constant added to every frontier utility so eq. 16 keeps spreading the fleet when eq. 13 "
+         "is 0 (paper: 0)"},
         {"radius-factor", fmt::format("{}", CoopFrontierOptions{}.radius_factor),
          "close-up inspection radius in units of the standoff difference dz (paper: 2)"},
         {"endgame-stay-low", CoopFrontierOptions{}.endgame_stay_low ? "true" : "false",

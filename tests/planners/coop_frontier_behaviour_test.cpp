@@ -39,7 +39,7 @@ TEST(CoopFrontierBehaviour, AdjacentUavsAreSentToDifferentFrontiers) {
   const auto hull = world::parse_text_mask(testing::full_mask(60, 7), "test");
   const auto instance = hand_instance(hull, {{10, 3}, {50, 3}}, {{10, 3}, {50, 3}});
   const auto params = params_with(7, {{24, 3}, {25, 3}});
-  CoopFrontierPlanner planner({.alpha = 0.5, .beta = 1.0});
+  CoopFrontierPlanner planner({.alpha = 0.5, .beta = 1.0, .base_utility = 0.0});
   LockStep run(hull, instance, params, planner);
   const auto& actions = run.decide();
   ASSERT_TRUE(planner.target(0));
@@ -57,6 +57,28 @@ TEST(CoopFrontierBehaviour, AdjacentUavsAreSentToDifferentFrontiers) {
   EXPECT_EQ(*planner.target(0), (Cell{11, 3}));
   EXPECT_EQ(*planner.target(1), (Cell{49, 3}));
   EXPECT_EQ(planner.stats().assignments, 2);
+}
+
+TEST(CoopFrontierBehaviour, BaseUtilitySpreadsUavsWhenEquation13IsZero) {
+  // No prior and nothing detected: U_f = 0 everywhere. Two UAVs share the start cell (24, 3) of a
+  // 60 × 7 hull and see x = 21…27; the frontiers nearest to them are (20, 3) and (28, 3), both 4
+  // away, and the tie goes to the lower x.
+  const auto hull = world::parse_text_mask(testing::full_mask(60, 7), "test");
+  const auto instance = hand_instance(hull, {}, {});
+  const auto params = params_with(7, {{24, 3}, {24, 3}});
+  // γ = 0 (the paper): the reduction multiplies zeros, so both take (20, 3).
+  CoopFrontierPlanner plain({.alpha = 1.0, .beta = 8.0, .base_utility = 0.0});
+  LockStep run(hull, instance, params, plain);
+  run.decide();
+  EXPECT_EQ(*plain.target(0), (Cell{20, 3}));
+  EXPECT_EQ(*plain.target(1), (Cell{20, 3}));
+  // γ = 0.5: UAV 0 takes (20, 3) with 0.5 + 8/4; then U(20, 3) = 0 and U(28, 3) = 0.5 · 8/14, so
+  // UAV 1 scores 2.286 at (28, 3) against 2 at (20, 3).
+  CoopFrontierPlanner spread({.alpha = 1.0, .beta = 8.0, .base_utility = 0.5});
+  LockStep run2(hull, instance, params, spread);
+  run2.decide();
+  EXPECT_EQ(*spread.target(0), (Cell{20, 3}));
+  EXPECT_EQ(*spread.target(1), (Cell{28, 3}));
 }
 
 TEST(CoopFrontierBehaviour, DetectionSwitchesToInspectAndBackToExplore) {
@@ -140,7 +162,7 @@ struct EndGameWorld {
 
 TEST(CoopFrontierBehaviour, EndGameTakesTheNearestCorrosionCellAndDescends) {
   EndGameWorld w;
-  CoopFrontierPlanner planner({.alpha = 0.5, .beta = 1.0});
+  CoopFrontierPlanner planner({.alpha = 0.5, .beta = 1.0, .base_utility = 0.0});
   LockStep run(w.hull, w.instance, w.params, planner);
   int t = 0;
   while (true) {
@@ -225,11 +247,13 @@ TEST(CoopFrontierBehaviour, AnnotatesModesTargetsAndFrontiers) {
 TEST(CoopFrontierRegistry, BuildsFromOptionsAndRejectsBadOnes) {
   auto p = make_planner(
       "coop-frontier",
-      {{"alpha", "0.3"}, {"beta", "2.5"}, {"radius-factor", "1"}, {"endgame-stay-low", "true"}});
+      {{"alpha", "0.3"}, {"beta", "2.5"}, {"base-utility", "0.25"}, {"radius-factor", "1"},
+       {"endgame-stay-low", "true"}});
   const auto* cf = dynamic_cast<const CoopFrontierPlanner*>(p.get());
   ASSERT_NE(cf, nullptr);
   EXPECT_EQ(cf->options().alpha, 0.3);
   EXPECT_EQ(cf->options().beta, 2.5);
+  EXPECT_EQ(cf->options().base_utility, 0.25);
   EXPECT_EQ(cf->options().radius_factor, 1.0);
   EXPECT_TRUE(cf->options().endgame_stay_low);
 
@@ -244,8 +268,8 @@ TEST(CoopFrontierRegistry, BuildsFromOptionsAndRejectsBadOnes) {
     FAIL() << "unknown option accepted";
   } catch (const ParameterError& e) {
     EXPECT_STREQ(e.what(),
-                 "coop-frontier.gamma: unknown option (known: alpha, beta, radius-factor, "
-                 "endgame-stay-low)");
+                 "coop-frontier.gamma: unknown option (known: alpha, beta, base-utility, "
+                 "radius-factor, endgame-stay-low)");
   }
   bool listed = false;
   for (const auto& info : planner_registry()) listed = listed || info.name == "coop-frontier";

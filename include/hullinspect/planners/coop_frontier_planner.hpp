@@ -22,7 +22,12 @@ struct CoopFrontierOptions {
   /// Tuned on seeds 1001–1030 (docs/coop-frontier.md; the spec's untuned value is 0.5).
   double alpha = 1.0;
   /// β of eq. 15: weight of the travel term 1/d(r, f), ≥ 0. Tuned with α (untuned: 1.0).
-  double beta = 8.0;
+  double beta = 4.0;
+  /// γ ≥ 0 added to every frontier's utility: U_f = γ + eq. 13. The paper has none (γ = 0); with
+  /// γ > 0 the reductions of eq. 16 keep spreading the fleet once no prior is left to see and no
+  /// detection is waiting, where eq. 13 is 0 everywhere. Tuned with α and β
+  /// (docs/coop-frontier.md).
+  double base_utility = 0.5;
   /// Close-up radius of the INSPECT target rule in units of Δζ (the paper's 2·Δζ), ≥ 0.
   double radius_factor = 2.0;
   /// End game (F empty): an INSPECT UAV whose target set is empty takes the nearest unclaimed
