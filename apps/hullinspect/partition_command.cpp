@@ -1,8 +1,224 @@
+// hullinspect partition: divide a hull among n UAVs and report the regions (and write them).
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string_view>
+
 #include "commands.hpp"
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/grid/distance.hpp"
+#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/partition/partitioner.hpp"
+#include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::cli {
 
-// Placeholder until the partition command lands; keeps the subcommand list in one place.
-void add_partition_command(CLI::App&, CommandAction&) {}
+namespace {
+
+// One symbol per UAV in the --out mask; '.' marks non-hull cells.
+constexpr std::string_view kRegionSymbols =
+    "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
+
+struct PartitionArgs {
+  int uavs = 0;
+  std::string hull = "default";
+  std::vector<std::string> starts;
+  std::uint64_t seed = 0;
+  std::string partitioner{partition::kDefaultPartitioner};
+  std::vector<std::string> options;  // key=value
+  bool json = false;
+  std::string out_path;
+};
+
+grid::Cell parse_start(const std::string& text) {
+  int x = 0;
+  int y = 0;
+  char comma = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
+    throw ParameterError("start", fmt::format("expects X,Y (got '{}')", text));
+  }
+  return {x, y};
+}
+
+// Explicit starts that snap onto one hull cell: name the cells as the user gave them.
+void reject_shared_starts(const std::vector<grid::Cell>& given,
+                          const std::vector<grid::Cell>& snapped) {
+  for (std::size_t k = 0; k < given.size(); ++k) {
+    for (std::size_t other = 0; other < k; ++other) {
+      if (snapped[k] != snapped[other]) continue;
+      throw ParameterError(
+          "start", fmt::format("UAVs {} and {} both start on cell ({}, {}) (given ({}, {}) and "
+                               "({}, {}); cells off the hull snap to the nearest hull cell); every "
+                               "UAV needs its own start cell",
+                               other, k, snapped[k].x, snapped[k].y, given[other].x, given[other].y,
+                               given[k].x, given[k].y));
+    }
+  }
+}
+
+OptionMap parse_options(const std::vector<std::string>& pairs) {
+  OptionMap map;
+  for (const auto& kv : pairs) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw ParameterError("option", fmt::format("expects KEY=VALUE (got '{}')", kv));
+    }
+    map[kv.substr(0, eq)] = kv.substr(eq + 1);
+  }
+  return map;
+}
+
+// Independent check of each region's 4-connectivity, for the report.
+std::vector<bool> connected_regions(const world::HullMask& hull, const partition::Partition& p,
+                                    int n) {
+  std::vector<bool> connected(static_cast<std::size_t>(n), false);
+  grid::Grid<std::uint8_t> region(hull.width(), hull.height(), 0);
+  grid::Grid<int> labels;
+  grid::BfsScratch scratch;
+  for (int k = 0; k < n; ++k) {
+    for (int i = 0; i < region.size(); ++i) region[i] = p.owner[i] == k;
+    connected[static_cast<std::size_t>(k)] = grid::label_components(region, labels, scratch) == 1;
+  }
+  return connected;
+}
+
+std::string region_mask(const world::HullMask& hull, const partition::Partition& p,
+                        const PartitionArgs& args) {
+  std::string text = fmt::format(
+      "; hullinspect partition: {}, {} UAVs, seed {}, hull {}\n"
+      "; one symbol per cell, top row (y = {}) first: UAV 0-9, then A-Z = 10-35, a-z = 36-61; "
+      "'.' = not hull\n",
+      args.partitioner, args.uavs, args.seed, hull.source(), hull.height() - 1);
+  for (int y = hull.height() - 1; y >= 0; --y) {
+    for (int x = 0; x < hull.width(); ++x) {
+      const int k = p.owner(x, y);
+      text += k < 0 ? '.' : kRegionSymbols[static_cast<std::size_t>(k)];
+    }
+    text += '\n';
+  }
+  return text;
+}
+
+void print_summary(const PartitionArgs& args, const world::HullMask& hull,
+                   const std::vector<grid::Cell>& starts, const partition::Partition& p,
+                   const std::vector<bool>& connected) {
+  std::cout << fmt::format("{}: {} UAVs on {} ({} hull cells), seed {}\n", args.partitioner,
+                           args.uavs, hull.source(), hull.cell_count(), args.seed);
+  std::cout << fmt::format("  {} after {} iterations in {:.3f} ms; tolerance reached {:g} cell{}\n",
+                           p.converged ? "converged" : "NOT converged", p.iterations,
+                           p.seconds * 1e3, p.tolerance, p.tolerance == 1 ? "" : "s");
+  std::cout << "  UAV  start        cells     desired  connected\n";
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    std::cout << fmt::format("  {:>3}  {:<11}  {:>5}  {:>10.2f}  {}\n", k,
+                             fmt::format("({}, {})", starts[k].x, starts[k].y), p.region_cells[k],
+                             p.desired_weight[k], connected[k] ? "yes" : "NO");
+  }
+}
+
+nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hull,
+                            const std::vector<grid::Cell>& starts, const partition::Partition& p,
+                            const std::vector<bool>& connected) {
+  nlohmann::json regions = nlohmann::json::array();
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    regions.push_back({{"uav", k},
+                       {"start", {starts[k].x, starts[k].y}},
+                       {"cells", p.region_cells[k]},
+                       {"desired", p.desired_weight[k]},
+                       {"connected", static_cast<bool>(connected[k])}});
+  }
+  return {{"partitioner", args.partitioner},
+          {"hull", hull.source()},
+          {"hull_cells", hull.cell_count()},
+          {"uavs", args.uavs},
+          {"seed", args.seed},
+          {"iterations", p.iterations},
+          {"converged", p.converged},
+          {"tolerance", p.tolerance},
+          {"seconds", p.seconds},
+          {"regions", regions},
+          {"warnings", p.warnings}};
+}
+
+int run_partition(const PartitionArgs& args) {
+  const world::HullMask hull = world::load_hull(args.hull);
+  world::MissionParams params;
+  params.uavs = args.uavs;
+  for (const auto& s : args.starts) params.starts.push_back(parse_start(s));
+  try {
+    world::validate(params, hull);
+  } catch (const ParameterError& e) {
+    // The library names the field "starts"; on this command line it is --start.
+    if (e.name() != "starts") throw;
+    throw ParameterError("start", e.problem());
+  }
+  if (!args.out_path.empty() && args.uavs > static_cast<int>(kRegionSymbols.size())) {
+    throw ParameterError("out",
+                         fmt::format("a region mask has symbols for at most {} UAVs (got {})",
+                                     kRegionSymbols.size(), args.uavs));
+  }
+  std::unique_ptr<partition::Partitioner> partitioner;
+  try {
+    partitioner = partition::make_partitioner(args.partitioner, parse_options(args.options));
+  } catch (const ParameterError& e) {
+    // Partitioner options come from -O, so name them as "darp.cc" rather than as a flag.
+    if (e.name() == "partitioner" || e.name() == "option") throw;
+    throw ParameterError("option", fmt::format("{}: {}", e.name(), e.problem()));
+  }
+  partition::PartitionRequest request;
+  request.hull = &hull;
+  request.starts = world::start_cells(params, hull);
+  request.seed = args.seed;
+  reject_shared_starts(params.starts, request.starts);
+  const partition::Partition result = partitioner->partition(request);
+  const auto connected = connected_regions(hull, result, args.uavs);
+  if (!args.out_path.empty()) io::write_file_atomic(args.out_path, region_mask(hull, result, args));
+  if (args.json) {
+    std::cout << summary_json(args, hull, request.starts, result, connected).dump() << "\n";
+  } else {
+    print_summary(args, hull, request.starts, result, connected);
+    for (const auto& w : result.warnings) std::cerr << "hullinspect: warning: " << w << "\n";
+  }
+  return result.converged ? 0 : 3;
+}
+
+}  // namespace
+
+void add_partition_command(CLI::App& app, CommandAction& action) {
+  auto args = std::make_shared<PartitionArgs>();
+  CLI::App* cmd =
+      app.add_subcommand("partition", "Divide the hull among the UAVs and report the regions");
+  cmd->footer(
+      "Exit status: 0 converged, 3 not converged (the best connected partition found is still "
+      "reported and written), 2 invalid input, 1 other failure.\n"
+      "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
+  cmd->add_option("--uavs,-n", args->uavs, "Fleet size n (1 … number of hull cells)")->required();
+  cmd->add_option("--hull", args->hull,
+                  "Hull mask: 'default', a text mask or a PGM image (see docs/formats.md)")
+      ->type_name("FILE")
+      ->capture_default_str();
+  cmd->add_option("--start", args->starts,
+                  "Start cell x,y of each UAV (repeat once per UAV; default: spread along the "
+                  "hull); cells off the hull are snapped to the nearest hull cell")
+      ->type_name("X,Y");
+  cmd->add_option("--seed", args->seed, "Partitioner seed")->capture_default_str();
+  cmd->add_option("--partitioner", args->partitioner, "Partitioner: darp, stripes")
+      ->capture_default_str();
+  cmd->add_option("--option,-O", args->options,
+                  "Partitioner option as key=value, e.g. iteration-limit=500 (repeatable; see "
+                  "docs/partition.md)")
+      ->type_name("KEY=VALUE");
+  cmd->add_flag("--json", args->json,
+                "Print one JSON object (partitioner, hull, hull_cells, uavs, seed, iterations, "
+                "converged, tolerance, seconds, regions, warnings)");
+  cmd->add_option("--out", args->out_path,
+                  "Write the assignment matrix A as a text mask: one symbol per UAV (0-9, A-Z, "
+                  "a-z), '.' for non-hull cells, top row first")
+      ->type_name("FILE");
+  cmd->callback([args, &action] { action = [args] { return run_partition(*args); }; });
+}
 
 }  // namespace hullinspect::cli

@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/partition/darp_partitioner.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/partition/stripes_partitioner.hpp"
 
@@ -14,8 +15,14 @@ std::unique_ptr<Partitioner> make_stripes(const OptionMap& options) {
   return std::make_unique<StripesPartitioner>();
 }
 
+std::unique_ptr<Partitioner> make_darp(const OptionMap& options) {
+  return std::make_unique<DarpPartitioner>(read_darp_options(options));
+}
+
 const std::vector<PartitionerInfo>& registry() {
   static const std::vector<PartitionerInfo> entries = {
+      {"darp", "DARP (SPEC 5.1): connected, balanced regions grown from the start cells",
+       darp_option_specs(), &make_darp},
       {"stripes", "equal-area vertical bands, in the order of the start cells' x", {}, &make_stripes},
   };
   return entries;

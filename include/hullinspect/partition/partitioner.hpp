@@ -57,6 +57,6 @@ std::span<const PartitionerInfo> partitioner_registry();
 /// Throws ParameterError("partitioner", …) for an unknown name.
 std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const OptionMap& options = {});
 /// The default partitioner's name.
-inline constexpr std::string_view kDefaultPartitioner = "stripes";
+inline constexpr std::string_view kDefaultPartitioner = "darp";
 
 }  // namespace hullinspect::partition

@@ -1,0 +1,270 @@
+#include "hullinspect/partition/darp_partitioner.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "darp_workspace.hpp"
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::partition {
+
+namespace {
+
+// The evaluation matrices take n × N floats; refuse sizes that cannot be meant (≈ 1 GiB).
+constexpr long long kMaxMatrixEntries = 1LL << 28;
+
+std::string cell_text(grid::Cell c) {
+  return fmt::format("({}, {})", c.x, c.y);
+}
+
+// Start cells as flat indices: outside the grid is an error, off the hull is snapped, and two UAVs
+// on one cell (also after snapping) is an error naming both.
+std::vector<int> checked_starts(const world::HullMask& hull, std::span<const grid::Cell> starts) {
+  std::vector<int> index;
+  std::vector<grid::Cell> snapped;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const grid::Cell c = starts[k];
+    if (!hull.mask().contains(c)) {
+      throw ParameterError(
+          "starts", fmt::format("start cell {} of UAV {} is outside the {} × {} grid", cell_text(c),
+                                k, hull.width(), hull.height()));
+    }
+    snapped.push_back(hull.is_hull(c) ? c : hull.snap(c));
+  }
+  for (std::size_t k = 0; k < snapped.size(); ++k) {
+    for (std::size_t other = 0; other < k; ++other) {
+      if (snapped[other] != snapped[k]) continue;
+      const bool moved = snapped[k] != starts[k] || snapped[other] != starts[other];
+      throw ParameterError(
+          "starts", fmt::format("UAVs {} and {} both start on cell {}{}; every UAV needs its own "
+                                "start cell",
+                                other, k, cell_text(snapped[k]),
+                                moved ? " (after snapping to the nearest hull cell)" : ""));
+    }
+    index.push_back(hull.mask().index(snapped[k]));
+  }
+  return index;
+}
+
+void check_weights(const world::HullMask& hull, const grid::Grid<double>& weights) {
+  if (weights.width() != hull.width() || weights.height() != hull.height()) {
+    throw ParameterError("weights",
+                         fmt::format("grid is {} × {} but the hull is {} × {}", weights.width(),
+                                     weights.height(), hull.width(), hull.height()));
+  }
+  for (int i : hull.cells()) {
+    const double w = weights[i];
+    if (!(w > 0) || !std::isfinite(w)) {
+      throw ParameterError("weights", fmt::format("hull cell {} has weight {}; weights must be "
+                                                  "finite and > 0",
+                                                  cell_text(hull.mask().cell(i)), w));
+    }
+  }
+}
+
+std::vector<double> checked_shares(std::span<const double> shares, int n) {
+  if (shares.empty()) return std::vector<double>(static_cast<std::size_t>(n), 1.0);
+  if (static_cast<int>(shares.size()) != n) {
+    throw ParameterError("shares", fmt::format("gives {} shares for {} UAVs", shares.size(), n));
+  }
+  for (std::size_t k = 0; k < shares.size(); ++k) {
+    if (!(shares[k] > 0) || !std::isfinite(shares[k])) {
+      throw ParameterError("shares", fmt::format("share of UAV {} is {}; shares must be finite and "
+                                                 "> 0",
+                                                 k, shares[k]));
+    }
+  }
+  return {shares.begin(), shares.end()};
+}
+
+bool divides_exactly(std::span<const double> desired, double unit) {
+  return std::all_of(desired.begin(), desired.end(), [&](double d) {
+    const double cells = d / unit;
+    return std::abs(cells - std::round(cells)) <= 1e-9 * std::max(1.0, cells);
+  });
+}
+
+}  // namespace
+
+std::vector<OptionSpec> darp_option_specs() {
+  const DarpOptions d;
+  return {
+      {"iteration-limit", std::to_string(d.iteration_limit),
+       "iterations at the first tolerance; halves each time the tolerance grows"},
+      {"cc", fmt::format("{}", d.cc), "connectivity correction variation: factors in [1-cc, 1+cc]"},
+      {"rl", fmt::format("{}", d.rl), "random level: factors in [1-rl, 1+rl]"},
+      {"max-discrepancy", std::to_string(d.max_discrepancy),
+       "largest tolerance (cells) before falling back to the best connected partition"},
+      {"fairness-gain", fmt::format("{}", d.fairness_gain),
+       "largest gain g of the fairness multiplier exp(g * (w - d) / d)"},
+      {"gain-growth", fmt::format("{}", d.gain_growth),
+       "gain factor after a step that kept the sign"},
+      {"gain-shrink", fmt::format("{}", d.gain_shrink), "gain factor after a step that flipped it"},
+      {"repair-fallback", d.repair_fallback ? "true" : "false",
+       "fallback may repair the best-balanced iterate into a connected partition"},
+  };
+}
+
+DarpOptions read_darp_options(const OptionMap& options) {
+  OptionReader reader(options, "darp");
+  DarpOptions o;
+  o.iteration_limit = reader.get_int("iteration-limit", o.iteration_limit, 1, 1'000'000);
+  o.cc = reader.get_double("cc", o.cc, 0.0, 0.5);
+  o.rl = reader.get_double("rl", o.rl, 0.0, 0.1);
+  o.max_discrepancy = reader.get_int("max-discrepancy", o.max_discrepancy, 0, 1'000'000);
+  o.fairness_gain = reader.get_double("fairness-gain", o.fairness_gain, 1e-6, 10.0);
+  o.gain_growth = reader.get_double("gain-growth", o.gain_growth, 1.0, 10.0);
+  o.gain_shrink = reader.get_double("gain-shrink", o.gain_shrink, 0.01, 1.0);
+  o.repair_fallback = reader.get_bool("repair-fallback", o.repair_fallback);
+  reader.reject_unknown();
+  return o;
+}
+
+DarpPartitioner::DarpPartitioner(DarpOptions options) : options_(options) {
+  auto check = [](bool ok, const char* name, const std::string& problem) {
+    if (!ok) throw ParameterError(std::string("darp.") + name, problem);
+  };
+  check(options_.iteration_limit >= 1, "iteration-limit", "must be at least 1");
+  check(options_.cc >= 0 && options_.cc <= 0.5, "cc", "must be in [0, 0.5]");
+  check(options_.rl >= 0 && options_.rl <= 0.1, "rl", "must be in [0, 0.1]");
+  check(options_.max_discrepancy >= 0, "max-discrepancy", "must be at least 0");
+  check(options_.fairness_gain > 0 && options_.fairness_gain <= 10, "fairness-gain",
+        "must be in (0, 10]");
+  check(options_.gain_growth >= 1 && options_.gain_growth <= 10, "gain-growth",
+        "must be in [1, 10]");
+  check(options_.gain_shrink > 0 && options_.gain_shrink <= 1, "gain-shrink", "must be in (0, 1]");
+}
+
+Partition DarpPartitioner::partition(const PartitionRequest& request) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (request.hull == nullptr)
+    throw ParameterError("hull", "no hull given to the darp partitioner");
+  const world::HullMask& hull = *request.hull;
+  const int n = static_cast<int>(request.starts.size());
+  if (n < 1) throw ParameterError("uavs", "must be at least 1 (got 0)");
+  const int limit =
+      std::min(hull.cell_count(), static_cast<int>(std::numeric_limits<std::int16_t>::max()));
+  if (n > limit) {
+    throw ParameterError("uavs", fmt::format("must be at most {} for a hull of {} cells (got {})",
+                                             limit, hull.cell_count(), n));
+  }
+  if (static_cast<long long>(n) * hull.cell_count() > kMaxMatrixEntries) {
+    throw ParameterError(
+        "uavs", fmt::format("{} UAVs on {} hull cells need {} evaluation entries; "
+                            "at most {} are supported",
+                            n, hull.cell_count(), static_cast<long long>(n) * hull.cell_count(),
+                            kMaxMatrixEntries));
+  }
+  const std::vector<int> starts = checked_starts(hull, request.starts);
+  const bool weighted = request.weights.size() > 0;
+  if (weighted) check_weights(hull, request.weights);
+  const std::vector<double> shares = checked_shares(request.shares, n);
+
+  // Desired weights, and the weight of "one cell" of tolerance: 1, or the heaviest hull cell.
+  double total = 0;
+  double unit = 1;
+  if (weighted) {
+    unit = 0;
+    for (int i : hull.cells()) {
+      total += request.weights[i];
+      unit = std::max(unit, request.weights[i]);
+    }
+  } else {
+    total = hull.cell_count();
+  }
+  const double share_total = std::accumulate(shares.begin(), shares.end(), 0.0);
+  Partition out;
+  out.desired_weight.resize(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < shares.size(); ++k)
+    out.desired_weight[k] = total * shares[k] / share_total;
+  out.owner = grid::Grid<std::int16_t>(hull.width(), hull.height(), -1);
+  auto finish = [&]() {
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+
+  if (n == 1) {
+    for (int i : hull.cells()) out.owner[i] = 0;
+    out.region_cells = {hull.cell_count()};
+    out.region_weight = {total};
+    out.tolerance = 0;
+    return finish();
+  }
+
+  detail::DarpWorkspace ws(hull, starts, weighted ? &request.weights : nullptr, out.desired_weight,
+                           options_, request.seed);
+  // Goal: every region connected and within `tolerance` cells of its desired weight. The tolerance
+  // starts at 1 cell (0 when the shares divide exactly); after `limit` iterations it grows by one
+  // and the limit halves, up to max_discrepancy. Total iterations ≤ 2 · iteration_limit +
+  // max_discrepancy.
+  const double slack = 1e-9 * total;  // for sums of non-integer weights
+  int tolerance = divides_exactly(out.desired_weight, unit) ? 0 : 1;
+  tolerance = std::min(tolerance, options_.max_discrepancy);
+  int level_limit = options_.iteration_limit;
+  int iterations = 0;
+  bool converged = false;
+  bool from_best = false;
+  while (!converged) {
+    for (int it = 0; it < level_limit; ++it) {
+      ++iterations;
+      ws.assign();
+      ws.check_connectivity();
+      const double discrepancy = ws.discrepancy();
+      if (ws.all_connected()) {
+        if (discrepancy <= tolerance * unit + slack) {
+          converged = true;
+          break;
+        }
+        ws.remember_connected(discrepancy);
+      }
+      if (options_.repair_fallback) ws.remember_balanced(discrepancy + ws.stray_weight());
+      ws.update(tolerance * unit);
+    }
+    if (converged || tolerance >= options_.max_discrepancy) break;
+    ++tolerance;
+    level_limit = std::max(1, level_limit / 2);
+    // The best connected partition seen so far may already meet the relaxed goal.
+    if (ws.has_connected() && ws.best_connected_discrepancy() <= tolerance * unit + slack) {
+      converged = true;
+      from_best = true;
+    }
+  }
+
+  out.iterations = iterations;
+  out.converged = converged;
+  using Which = detail::DarpWorkspace::Which;
+  if (converged) {
+    ws.export_assignment(from_best ? Which::kBestConnected : Which::kCurrent, out.owner,
+                         out.region_cells, out.region_weight);
+    out.tolerance = tolerance * unit;
+    return finish();
+  }
+  const double connected_before_repair =
+      ws.has_connected() ? ws.best_connected_discrepancy() : -1.0;
+  if (options_.repair_fallback) ws.repair_best_balanced();
+  if (!ws.has_connected()) {
+    throw Error(fmt::format(
+        "darp: no partition with 4-connected regions found in {} iterations ({} UAVs on hull "
+        "'{}'); try other start cells, a larger darp.iteration-limit, or the stripes partitioner",
+        iterations, n, hull.source()));
+  }
+  ws.export_assignment(Which::kBestConnected, out.owner, out.region_cells, out.region_weight);
+  out.tolerance = ws.best_connected_discrepancy();
+  const bool repaired = connected_before_repair < 0 || out.tolerance < connected_before_repair;
+  out.warnings.push_back(fmt::format(
+      "darp did not balance the regions within {} cell(s) in {} iterations; returned the best "
+      "connected partition found{} (largest imbalance {:g})",
+      options_.max_discrepancy, iterations,
+      repaired
+          ? ", the best-balanced iterate with its stray pieces merged into neighbouring regions"
+          : "",
+      out.tolerance));
+  return finish();
+}
+
+}  // namespace hullinspect::partition
