@@ -108,7 +108,8 @@ void BM_Mission(benchmark::State& state, bool use_prior, const std::string& solv
     planners::PartTspPlanner planner(options);
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = process_cpu_seconds();
-    const auto result = planners::run_mission(hull, instances()[next], params, planner, mission_options);
+    const auto result =
+        planners::run_mission(hull, instances()[next], params, planner, mission_options);
     cpu_seconds.push_back(process_cpu_seconds() - cpu0);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     benchmark::DoNotOptimize(result.t_m);
@@ -135,15 +136,30 @@ void BM_Mission(benchmark::State& state, bool use_prior, const std::string& solv
 
 BENCHMARK(BM_Partition)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact, true, std::string("exact"), OptionMap{})
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact_dp12, true, std::string("exact"),
                   OptionMap{{"dp_max_segments", "12"}})
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_Mission, part_tsp_dfj, true, std::string("dfj-iterative"), OptionMap{})
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_Mission, part_tsp0_exact, false, std::string("exact"), OptionMap{})
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_Mission, part_tsp0_dfj, false, std::string("dfj-iterative"), OptionMap{})
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 
 BENCHMARK_MAIN();
