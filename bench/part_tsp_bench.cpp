@@ -78,15 +78,17 @@ void BM_Partition(benchmark::State& state) {
   state.SetLabel(planners::PartTspOptions{}.partitioner);
 }
 
-void BM_Mission(benchmark::State& state, bool use_prior, const std::string& solver) {
+void BM_Mission(benchmark::State& state, bool use_prior, const std::string& solver,
+                OptionMap solver_options) {
   const auto& hull = world::default_hull();
   const auto params = params_for(static_cast<int>(state.range(0)));
   planners::PartitionCache partitions;
   planners::PartTspOptions options;
   options.use_prior = use_prior;
   options.tsp_solver = solver;
+  options.tsp_solver_options = solver_options;
   try {
-    planners::PartTspPlanner probe(options);
+    const planners::PartTspPlanner probe(options);
   } catch (const Error& e) {
     state.SkipWithError(e.what());
     return;
@@ -106,7 +108,8 @@ void BM_Mission(benchmark::State& state, bool use_prior, const std::string& solv
     planners::PartTspPlanner planner(options);
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = process_cpu_seconds();
-    const auto result = planners::run_mission(hull, instances()[next], params, planner, mission_options);
+    const auto result =
+        planners::run_mission(hull, instances()[next], params, planner, mission_options);
     cpu_seconds.push_back(process_cpu_seconds() - cpu0);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     benchmark::DoNotOptimize(result.t_m);
@@ -124,19 +127,39 @@ void BM_Mission(benchmark::State& state, bool use_prior, const std::string& solv
   state.counters["mean_cpu_ms"] = mean(cpu_seconds) * 1e3;
   state.counters["tsp_ms"] = tsp_seconds / runs * 1e3;
   state.counters["tsp_solves"] = static_cast<double>(solves) / runs;
-  state.SetLabel((use_prior ? "part-tsp " : "part-tsp0 ") + solver);
+  std::string label = (use_prior ? "part-tsp " : "part-tsp0 ") + solver;
+  for (const auto& [key, value] : solver_options) label += " " + key + "=" + value;
+  state.SetLabel(label);
 }
 
 }  // namespace
 
 BENCHMARK(BM_Partition)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact, true, std::string("exact"))
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Mission, part_tsp_dfj, true, std::string("dfj-iterative"))
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Mission, part_tsp0_exact, false, std::string("exact"))
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Mission, part_tsp0_dfj, false, std::string("dfj-iterative"))
-    ->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact, true, std::string("exact"), OptionMap{})
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact_dp12, true, std::string("exact"),
+                  OptionMap{{"dp_max_segments", "12"}})
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp_dfj, true, std::string("dfj-iterative"), OptionMap{})
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp0_exact, false, std::string("exact"), OptionMap{})
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Mission, part_tsp0_dfj, false, std::string("dfj-iterative"), OptionMap{})
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 
 BENCHMARK_MAIN();

@@ -8,7 +8,9 @@ namespace hullinspect::planners::part_tsp {
 
 namespace {
 constexpr int kCellsSlot = 0;
-int value_slot(std::int8_t value) { return value == sim::kUnknown ? 1 : 2; }
+int value_slot(std::int8_t value) {
+  return value == sim::kUnknown ? 1 : 2;
+}
 }  // namespace
 
 LocalMaps::LocalMaps(const grid::Grid<std::int16_t>& owner, const grid::Grid<std::int8_t>& prior,
@@ -68,7 +70,8 @@ int LocalMaps::column_count(int k, int z, std::int8_t value, int strip, int x) c
   const Region& r = region(k);
   if (x < r.x_begin || x >= r.x_begin + r.width) return 0;
   const auto& cols = r.columns[static_cast<std::size_t>(z - 1)];
-  return cols[static_cast<std::size_t>((strip * r.width + (x - r.x_begin)) * 3 + value_slot(value))];
+  return cols[static_cast<std::size_t>((strip * r.width + (x - r.x_begin)) * 3 +
+                                       value_slot(value))];
 }
 
 int LocalMaps::column_cells(int k, int z, int strip, int x) const {

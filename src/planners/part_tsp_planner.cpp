@@ -7,7 +7,24 @@
 
 namespace hullinspect::planners {
 
-using namespace part_tsp;
+using part_tsp::divide_into_segments;
+using part_tsp::evaluate_fsm;
+using part_tsp::FsmDecision;
+using part_tsp::FsmInput;
+using part_tsp::has_targets;
+using part_tsp::kModeAscending;
+using part_tsp::kModeCoverZ1;
+using part_tsp::kModeCoverZ2;
+using part_tsp::kModeDescending;
+using part_tsp::kModeDone;
+using part_tsp::kModeFailed;
+using part_tsp::kModeInspectZ1;
+using part_tsp::LocalEvents;
+using part_tsp::LocalMaps;
+using part_tsp::PlannedVisit;
+using part_tsp::segment_ends;
+using part_tsp::StripSegment;
+using part_tsp::target_value;
 
 PartTspPlanner::PartTspPlanner(PartTspOptions options, std::unique_ptr<tsp::TspSolver> solver)
     : options_(std::move(options)), solver_(std::move(solver)) {

@@ -23,8 +23,8 @@ void divide_into_segments(const LocalMaps& maps, int k, int z, std::int8_t value
   }
 }
 
-bool has_targets(const LocalMaps& maps, int k, int z, std::int8_t value, const StripSegment& segment,
-                 int x_from, int x_to) {
+bool has_targets(const LocalMaps& maps, int k, int z, std::int8_t value,
+                 const StripSegment& segment, int x_from, int x_to) {
   const int lo = std::max(std::min(x_from, x_to), segment.x_left);
   const int hi = std::min(std::max(x_from, x_to), segment.x_right);
   for (int x = lo; x <= hi; ++x) {

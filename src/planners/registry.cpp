@@ -45,7 +45,9 @@ std::unique_ptr<Planner> make_part_tsp(const OptionMap& options, bool use_prior)
   o.trim_ends = reader.get_bool("trim-ends", o.trim_ends);
   // "tsp.<key>=<value>" goes to the TSP solver as its option <key> (it checks them itself).
   for (const auto& [key, value] : options) {
-    if (key.rfind("tsp.", 0) == 0) o.tsp_solver_options[key.substr(4)] = reader.get_string(key, value);
+    if (key.rfind("tsp.", 0) == 0) {
+      o.tsp_solver_options[key.substr(4)] = reader.get_string(key, value);
+    }
   }
   reader.reject_unknown();
   partition::make_partitioner(o.partitioner);  // fail early on an unknown name
@@ -61,16 +63,17 @@ std::unique_ptr<Planner> make_part_tsp_without_prior(const OptionMap& options) {
 
 std::vector<OptionSpec> part_tsp_options() {
   const PartTspOptions d;
-  return {{"r1", std::to_string(d.r1), "steps since the last detection before descending"},
-          {"r2", std::to_string(d.r2),
-           "steps since the last inspection (or arrival at z = 1) before ascending"},
-          {"tsp-solver", d.tsp_solver, "segment-TSP solver by name (exact, dfj-iterative, heuristic)"},
-          {"partitioner", std::string(partition::kDefaultPartitioner), "partitioner by name"},
-          {"partition-seed", "0", "seed of the partitioner"},
-          {"skip-resolved", "false",
-           "refinement: drop plan segments whose targets are all resolved (re-plan when none is left)"},
-          {"trim-ends", "false", "refinement: pull segment ends in by the footprint half-width"},
-          {"tsp.<key>", "", "option <key> of the TSP solver (e.g. tsp.dp_max_segments=12 for exact)"}};
+  return {
+      {"r1", std::to_string(d.r1), "steps since the last detection before descending"},
+      {"r2", std::to_string(d.r2),
+       "steps since the last inspection (or arrival at z = 1) before ascending"},
+      {"tsp-solver", d.tsp_solver, "segment-TSP solver by name (exact, dfj-iterative, heuristic)"},
+      {"partitioner", std::string(partition::kDefaultPartitioner), "partitioner by name"},
+      {"partition-seed", "0", "seed of the partitioner"},
+      {"skip-resolved", "false",
+       "refinement: drop plan segments whose targets are all resolved (re-plan when none is left)"},
+      {"trim-ends", "false", "refinement: pull segment ends in by the footprint half-width"},
+      {"tsp.<key>", "", "option <key> of the TSP solver (e.g. tsp.dp_max_segments=12 for exact)"}};
 }
 
 const std::vector<PlannerInfo>& registry() {

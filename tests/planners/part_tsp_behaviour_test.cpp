@@ -10,8 +10,8 @@
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/planners/scenario.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
+#include "hullinspect/planners/scenario.hpp"
 #include "part_tsp_recorder.hpp"
 #include "part_tsp_test_support.hpp"
 #include "support/mission_checker.hpp"
@@ -69,8 +69,8 @@ struct Run {
 
 /// Runs one mission with the recorder and the shared checker attached; fails the test if the
 /// mission does not complete or breaks an invariant.
-std::unique_ptr<Run> run(const HandInstance& h, const world::MissionParams& params, PartTspOptions o,
-                         planners::PartitionSource* partitions = nullptr) {
+std::unique_ptr<Run> run(const HandInstance& h, const world::MissionParams& params,
+                         PartTspOptions o, planners::PartitionSource* partitions = nullptr) {
   auto out = std::make_unique<Run>();
   o.partitioner = "stripes";
   auto planner = make_part_tsp(o);
@@ -98,7 +98,9 @@ world::MissionParams small_params(std::vector<grid::Cell> starts) {
 
 // 30 × 10, two clusters far from the start (2, 5): nothing corroded is in view during the first
 // steps, so t_d counts from the mission start.
-bool two_clusters(int x, int y) { return in_box(x, y, 20, 22, 1, 2) || in_box(x, y, 12, 13, 8, 8); }
+bool two_clusters(int x, int y) {
+  return in_box(x, y, 20, 22, 1, 2) || in_box(x, y, 12, 13, 8, 8);
+}
 
 int first_plane_change(const MissionRecorder& r, int k, int from = 0) {
   for (int t = from; t <= r.last_time(); ++t) {

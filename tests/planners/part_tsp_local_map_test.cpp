@@ -71,7 +71,7 @@ TEST(PartTspLocalMaps, DetectionIsTheFirstSightFromZ2EvenOfAPriorCell) {
   const auto owner = two_regions();
   LocalMaps maps(owner, prior_with({{1, 1}}), true, 2, 3, 5);
   const std::vector<sim::Reading> seen = {reading(owner, 1, 1, sim::kCorrosionSeen)};
-  EXPECT_TRUE(maps.ingest(0, seen).detection);  // already 2 from the prior: still a detection
+  EXPECT_TRUE(maps.ingest(0, seen).detection);   // already 2 from the prior: still a detection
   EXPECT_FALSE(maps.ingest(0, seen).detection);  // second sight: not
   EXPECT_EQ(maps.corrosion_to_inspect(0), 1);
   const std::vector<sim::Reading> close = {reading(owner, 1, 1, sim::kInspected)};

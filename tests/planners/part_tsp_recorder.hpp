@@ -15,13 +15,13 @@ class MissionRecorder final : public planners::MissionObserver, public planners:
  public:
   struct Frame {
     int time = 0;
-    std::vector<sim::UavState> uavs;    ///< at `time`
-    std::vector<sim::Action> actions;   ///< applied at time − 1 (empty at t = 0)
-    std::vector<std::string> modes;     ///< annotations after the decision of time − 1
+    std::vector<sim::UavState> uavs;   ///< at `time`
+    std::vector<sim::Action> actions;  ///< applied at time − 1 (empty at t = 0)
+    std::vector<std::string> modes;    ///< annotations after the decision of time − 1
     std::vector<grid::Cell> targets;
     std::vector<std::vector<grid::Cell>> plans;
     std::vector<std::vector<sim::Reading>> readings;  ///< per UAV, sensed at `time`
-    grid::Grid<std::int8_t> map;        ///< M at `time`
+    grid::Grid<std::int8_t> map;                      ///< M at `time`
   };
 
   void on_start(const sim::Simulator& sim, const planners::Planner& planner) override {
@@ -30,7 +30,8 @@ class MissionRecorder final : public planners::MissionObserver, public planners:
   void on_step(const sim::Simulator& sim, const planners::Planner& planner) override {
     record(sim, planner, true);
   }
-  void uav(int k, std::string_view mode, grid::Cell target, std::span<const grid::Cell> plan) override {
+  void uav(int k, std::string_view mode, grid::Cell target,
+           std::span<const grid::Cell> plan) override {
     auto& f = frames.back();
     const auto uk = static_cast<std::size_t>(k);
     if (f.modes.size() <= uk) {

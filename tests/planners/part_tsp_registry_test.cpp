@@ -13,7 +13,8 @@ namespace {
 
 const PlannerInfo& info(std::string_view name) {
   const auto all = planner_registry();
-  const auto it = std::find_if(all.begin(), all.end(), [&](const auto& i) { return i.name == name; });
+  const auto it =
+      std::find_if(all.begin(), all.end(), [&](const auto& i) { return i.name == name; });
   EXPECT_NE(it, all.end()) << name;
   return *it;
 }
@@ -31,9 +32,9 @@ TEST(PartTspRegistry, BothPlannersDeclareTheirOptions) {
   for (const char* name : {"part-tsp", "part-tsp0"}) {
     std::vector<std::string> names;
     for (const auto& o : info(name).options) names.push_back(o.name);
-    EXPECT_EQ(names, (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner",
-                                               "partition-seed", "skip-resolved", "trim-ends",
-                                               "tsp.<key>"}))
+    EXPECT_EQ(names,
+              (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner", "partition-seed",
+                                        "skip-resolved", "trim-ends", "tsp.<key>"}))
         << name;
     EXPECT_EQ(info(name).options[0].default_value, "2");
     EXPECT_EQ(info(name).options[1].default_value, "0");
@@ -78,7 +79,8 @@ TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {
   EXPECT_EQ(error_of("part-tsp0", {{"alpha", "0.5"}}),
             "part-tsp0.alpha: unknown option (known: r1, r2, tsp-solver, partitioner, "
             "partition-seed, skip-resolved, trim-ends)");
-  EXPECT_EQ(error_of("part-tsp", {{"tsp-solver", "nope"}}).rfind("tsp_solver: unknown TSP solver 'nope'", 0),
+  EXPECT_EQ(error_of("part-tsp", {{"tsp-solver", "nope"}})
+                .rfind("tsp_solver: unknown TSP solver 'nope'", 0),
             0u);
   EXPECT_EQ(error_of("part-tsp", {{"partitioner", "nope"}}).rfind("partitioner: unknown", 0), 0u);
   EXPECT_EQ(error_of("part-tsp", {{"tsp.bogus", "1"}}).rfind("exact.bogus: ", 0), 0u)

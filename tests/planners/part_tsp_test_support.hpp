@@ -51,10 +51,13 @@ class ReferenceSegmentTsp final : public tsp::TspSolver {
     // dp[(mask * g + s) * 2 + e]: shortest path flying `mask`, ending at end e of segment s.
     std::vector<long long> dp(static_cast<std::size_t>(full) * g * 2, inf);
     std::vector<int> from(dp.size(), -1);
-    auto at = [&](int mask, int s, int e) { return (static_cast<std::size_t>(mask) * g + s) * 2 + e; };
+    auto at = [&](int mask, int s, int e) {
+      return (static_cast<std::size_t>(mask) * g + s) * 2 + e;
+    };
     for (int s = 0; s < g; ++s) {
       const long long len = grid::manhattan(p.segments[s].first, p.segments[s].second);
-      for (int e = 0; e < 2; ++e) dp[at(1 << s, s, e)] = grid::manhattan(p.start, end(s, 1 - e)) + len;
+      for (int e = 0; e < 2; ++e)
+        dp[at(1 << s, s, e)] = grid::manhattan(p.start, end(s, 1 - e)) + len;
     }
     for (int mask = 1; mask < full; ++mask) {
       for (int s = 0; s < g; ++s) {

@@ -1,7 +1,7 @@
 #pragma once
-// The local maps M^k of Part-TSP (SPEC §5.3): UAV k knows only its region R_k, and only from its own
-// readings (no communication). Regions are disjoint, so all the M^k live in one grid where a cell
-// holds the value of its owner's map.
+// The local maps M^k of Part-TSP (SPEC §5.3): UAV k knows only its region R_k, and only from its
+// own readings (no communication). Regions are disjoint, so all the M^k live in one grid where a
+// cell holds the value of its owner's map.
 //
 // Alongside the values it keeps, per UAV, h (cells with M^k = 2), the number of unknown cells and,
 // for the strip layout of each plane, how many cells of R_k in each strip column hold 0 or 2. Those
@@ -26,12 +26,15 @@ struct StripLayout {
   int strip_of(int y) const { return y / s; }
   int first_row(int j) const { return j * s; }
   int last_row(int j) const { return (j + 1) * s < height ? (j + 1) * s - 1 : height - 1; }
-  int flight_row(int j) const { return j * s + (s - 1) / 2 < height ? j * s + (s - 1) / 2 : height - 1; }
+  int flight_row(int j) const {
+    return j * s + (s - 1) / 2 < height ? j * s + (s - 1) / 2 : height - 1;
+  }
 };
 
 /// What one UAV's readings of one step meant for its local map.
 struct LocalEvents {
-  bool detection = false;   ///< it saw, from z = 2, a corroded cell of R_k it had not seen from z = 2
+  bool detection =
+      false;  ///< it saw, from z = 2, a corroded cell of R_k it had not seen from z = 2
   bool inspection = false;  ///< a cell of R_k turned to 3 in M^k
 };
 

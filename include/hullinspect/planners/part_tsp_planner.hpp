@@ -24,8 +24,8 @@ namespace hullinspect::planners {
 struct PartTspOptions {
   bool use_prior = true;  ///< false: Part-TSP₀ (local maps start without the prior's 2s)
   int r1 = 2;             ///< steps since the last detection before descending
-  int r2 = 0;             ///< steps since the last inspection (or arrival at z = 1) before ascending
-  std::string tsp_solver = "exact";  ///< segment-TSP solver by name
+  int r2 = 0;  ///< steps since the last inspection (or arrival at z = 1) before ascending
+  std::string tsp_solver{tsp::kDefaultTspSolver};  ///< segment-TSP solver by name ("exact")
   OptionMap tsp_solver_options;
   std::string partitioner{partition::kDefaultPartitioner};  ///< by name
   OptionMap partitioner_options;

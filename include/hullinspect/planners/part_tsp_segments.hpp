@@ -1,7 +1,7 @@
 #pragma once
 // Segment division of Part-TSP (SPEC §5.3, paper IV-A.2): in each strip of s_z rows, a column is
-// targeted when a cell of the strip in that column belongs to R_k and holds the target value in M^k;
-// a segment is a maximal run of targeted columns, flown along the strip's flight row.
+// targeted when a cell of the strip in that column belongs to R_k and holds the target value in
+// M^k; a segment is a maximal run of targeted columns, flown along the strip's flight row.
 
 #include <cstdint>
 #include <vector>
@@ -26,8 +26,8 @@ void divide_into_segments(const LocalMaps& maps, int k, int z, std::int8_t value
 
 /// Whether some column between x_from and x_to (inclusive, either order) of the segment's strip
 /// still holds a cell of R_k with `value`.
-bool has_targets(const LocalMaps& maps, int k, int z, std::int8_t value, const StripSegment& segment,
-                 int x_from, int x_to);
+bool has_targets(const LocalMaps& maps, int k, int z, std::int8_t value,
+                 const StripSegment& segment, int x_from, int x_to);
 
 /// The two ends the UAV flies between: (x_left, row) and (x_right, row); with `trim` > 0 (the
 /// footprint half-width) both ends move inwards by `trim`, meeting in the middle when the segment
