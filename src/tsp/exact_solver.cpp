@@ -4,6 +4,8 @@
 #include <chrono>
 
 #include "branch_and_cut.hpp"
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/tsp/dfj_iterative_solver.hpp"
 #include "end_costs.hpp"
 #include "local_search.hpp"
 #include "segment_dp.hpp"
@@ -49,8 +51,23 @@ TspSolution ExactSolver::solve(const SegmentTsp& problem) {
     deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                              std::chrono::duration<double>(options_.time_limit));
   }
-  const auto stats = branch_and_cut_->solve(*costs_, entries_, length, deadline);
-  return detail::make_solution(problem, entries_, stats.optimal, started);
+  try {
+    const auto stats = branch_and_cut_->solve(*costs_, entries_, length, deadline);
+    return detail::make_solution(problem, entries_, stats.optimal, started);
+  } catch (const LogicError&) {
+    // Rarely the branch-and-cut reaches an integral LP point that its separation does not cut off
+    // ("no fractional edge to branch on"; an open defect, see docs/tsp.md). The CBC-based DFJ
+    // reference still proves optimality, only more slowly, so missions never stop on it.
+    ++reference_fallbacks_;
+    DfjIterativeOptions reference_options;
+    if (options_.time_limit > 0) {
+      reference_options.time_limit =
+          std::max(1e-3, options_.time_limit - detail::seconds_since(started));
+    }
+    TspSolution solution = DfjIterativeSolver(reference_options).solve(problem);
+    solution.seconds = detail::seconds_since(started);
+    return solution;
+  }
 }
 
 }  // namespace hullinspect::tsp

@@ -35,6 +35,8 @@ class ExactSolver final : public TspSolver {
   TspSolution solve(const SegmentTsp& problem) override;
   /// Reads "time_limit", "dp_max_segments", "kicks"; rejects unknown keys.
   static ExactOptions read_options(const OptionMap& options);
+  /// Solves handed to the dfj-iterative reference because the branch-and-cut gave up.
+  long long reference_fallbacks() const { return reference_fallbacks_; }
 
  private:
   ExactOptions options_;
@@ -43,6 +45,7 @@ class ExactSolver final : public TspSolver {
   std::unique_ptr<detail::LocalSearch> search_;
   std::unique_ptr<detail::BranchAndCut> branch_and_cut_;
   std::vector<int> entries_;
+  long long reference_fallbacks_ = 0;
 };
 
 }  // namespace hullinspect::tsp

@@ -1,0 +1,30 @@
+// Missions that once failed, kept so they never fail again.
+
+#include <gtest/gtest.h>
+
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/planners/scenario.hpp"
+#include "support/mission_checker.hpp"
+
+namespace hullinspect::planners {
+namespace {
+
+TEST(PartTspRegression, ExactSolverNeverStopsAMission) {
+  // The exact solver's branch-and-cut once threw "no fractional edge to branch on" in this mission
+  // (found by the paper-quick preset); it now hands such instances to the DFJ reference.
+  MissionSpec spec;
+  spec.algorithm = "part-tsp";
+  spec.params.uavs = 8;
+  spec.params.s2 = 7;
+  spec.seed = 1;
+  spec.corrosion = scenario("combined").corrosion(230);
+  testing::MissionChecker checker;
+  MissionOptions options;
+  options.observers = {&checker};
+  const auto r = run_mission(spec, world::default_hull(), options);
+  EXPECT_TRUE(r.complete);
+  EXPECT_TRUE(checker.ok());
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
