@@ -53,6 +53,7 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
 
 world::HullMask load_mission_hull(const MissionArgs& a) { return world::load_hull(a.hull); }
 
+namespace {
 grid::Cell parse_cell(const std::string& text) {
   int x = 0;
   int y = 0;
@@ -63,6 +64,7 @@ grid::Cell parse_cell(const std::string& text) {
   }
   return {x, y};
 }
+}  // namespace
 
 planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hull) {
   planners::MissionSpec spec;

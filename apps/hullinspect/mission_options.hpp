@@ -31,8 +31,6 @@ struct MissionArgs {
 };
 
 void add_mission_options(CLI::App& cmd, MissionArgs& args);
-/// Parses "X,Y" (a --start value); throws ParameterError("start", …).
-grid::Cell parse_cell(const std::string& text);
 world::HullMask load_mission_hull(const MissionArgs& args);
 /// Turns the arguments into a spec; throws ParameterError naming the option.
 planners::MissionSpec build_spec(const MissionArgs& args, const world::HullMask& hull);

@@ -8,7 +8,6 @@
 #include <string_view>
 
 #include "commands.hpp"
-#include "mission_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/grid/distance.hpp"
 #include "hullinspect/io/atomic_file.hpp"
@@ -33,6 +32,17 @@ struct PartitionArgs {
   bool json = false;
   std::string out_path;
 };
+
+grid::Cell parse_start(const std::string& text) {
+  int x = 0;
+  int y = 0;
+  char comma = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
+    throw ParameterError("start", fmt::format("expects X,Y (got '{}')", text));
+  }
+  return {x, y};
+}
 
 // Explicit starts that snap onto one hull cell: name the cells as the user gave them.
 void reject_shared_starts(const std::vector<grid::Cell>& given,
@@ -145,7 +155,7 @@ int run_partition(const PartitionArgs& args) {
   const world::HullMask hull = world::load_hull(args.hull);
   world::MissionParams params;
   params.uavs = args.uavs;
-  for (const auto& s : args.starts) params.starts.push_back(parse_cell(s));
+  for (const auto& s : args.starts) params.starts.push_back(parse_start(s));
   try {
     world::validate(params, hull);
   } catch (const ParameterError& e) {

@@ -34,8 +34,11 @@ std::vector<grid::Cell> LawnmowerPlanner::sweep(const grid::Grid<std::int16_t>& 
 }
 
 void LawnmowerPlanner::start(const PlannerContext& context) {
-  partition_ = partition_for(context, options_.partitioner, options_.partitioner_options,
-                             options_.partition_seed);
+  partition::PartitionRequest request;
+  request.hull = &context.hull;
+  request.starts.assign(context.starts.begin(), context.starts.end());
+  request.seed = options_.partition_seed;
+  partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
   followers_.assign(static_cast<std::size_t>(n), WaypointFollower{});
   for (int k = 0; k < n; ++k) {

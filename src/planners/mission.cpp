@@ -17,16 +17,6 @@ std::shared_ptr<const partition::Partition> DirectPartitionSource::get(
   return std::make_shared<const partition::Partition>(p->partition(request));
 }
 
-std::shared_ptr<const partition::Partition> partition_for(const PlannerContext& context,
-                                                          std::string_view partitioner,
-                                                          const OptionMap& options, std::uint64_t seed) {
-  partition::PartitionRequest request;
-  request.hull = &context.hull;
-  request.starts.assign(context.starts.begin(), context.starts.end());
-  request.seed = seed;
-  return context.partitions.get(partitioner, options, request);
-}
-
 sim::MissionResult run_mission(const world::HullMask& hull, const world::Instance& instance,
                                const world::MissionParams& params, Planner& planner,
                                const MissionOptions& options) {

@@ -32,8 +32,11 @@ PartTspPlanner::PartTspPlanner(PartTspOptions options, std::unique_ptr<tsp::TspS
 }
 
 void PartTspPlanner::start(const PlannerContext& context) {
-  partition_ = partition_for(context, options_.partitioner, options_.partitioner_options,
-                             options_.partition_seed);
+  partition::PartitionRequest request;
+  request.hull = &context.hull;
+  request.starts.assign(context.starts.begin(), context.starts.end());
+  request.seed = options_.partition_seed;
+  partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
   maps_ = std::make_unique<LocalMaps>(partition_->owner, context.prior, options_.use_prior, n,
                                       context.params.s1, context.params.s2);

@@ -44,11 +44,6 @@ struct PlannerContext {
   PartitionSource& partitions;
 };
 
-/// The partition of the context's hull among its start cells, by the named partitioner and seed.
-std::shared_ptr<const partition::Partition> partition_for(const PlannerContext& context,
-                                                          std::string_view partitioner,
-                                                          const OptionMap& options, std::uint64_t seed);
-
 /// Receives what a planner wants shown in traces and the viewer; only called when tracing.
 class AnnotationSink {
  public:
