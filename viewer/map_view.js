@@ -136,6 +136,7 @@
           }
         });
       }
+      this.drawNoFly(ctx);
       const states = [];
       for (let k = 0; k < r.uavCount; ++k) states.push(r.uavState(t, k));
       if (this.show.footprints) {
@@ -187,6 +188,33 @@
         ctx.strokeRect(x * cp - 1, (r.H - 1 - y) * cp - 1, cp + 2, cp + 2);
         ctx.strokeStyle = '#fff';
         ctx.strokeRect(x * cp - 2.5, (r.H - 1 - y) * cp - 2.5, cp + 5, cp + 5);
+      }
+    }
+
+    // No-fly positions hatched (black diagonals), unreachable hull cells cross-hatched (grey: seen
+    // only from z = 2; dark: never seen).
+    drawNoFly(ctx) {
+      const r = this.replay;
+      if (!r.noFly && !r.unreachable) return;
+      const cp = this.cellPx;
+      ctx.lineWidth = 1;
+      for (let i = 0; i < r.W * r.H; ++i) {
+        const nf = r.noFly ? r.noFly[i] : 0;
+        const un = r.unreachable ? r.unreachable[i] : 0;
+        if (!nf && !un) continue;
+        const x = (i % r.W) * cp;
+        const y = (r.H - 1 - Math.floor(i / r.W)) * cp;
+        ctx.beginPath();
+        if (nf) {
+          ctx.moveTo(x, y + cp);
+          ctx.lineTo(x + cp, y);
+        }
+        if (un) {
+          ctx.moveTo(x, y);
+          ctx.lineTo(x + cp, y + cp);
+        }
+        ctx.strokeStyle = nf ? '#111' : (un === 2 ? '#444' : '#999');
+        ctx.stroke();
       }
     }
 

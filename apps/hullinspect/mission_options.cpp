@@ -4,6 +4,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/no_fly.hpp"
 
 namespace hullinspect::cli {
 
@@ -49,6 +50,27 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
   cmd.add_option("--beta", a.beta, "Coop-Frontier: weight β of the distance term in eq. 15");
   cmd.add_option("--option,-O", a.planner_options, "Any other planner option as key=value (repeatable)")
       ->type_name("KEY=VALUE");
+  add_no_fly_options(cmd, a.no_fly, a.no_fly_boxes);
+}
+
+void add_no_fly_options(CLI::App& cmd, std::string& file, std::vector<std::string>& boxes) {
+  cmd.add_option("--no-fly", file,
+                 "No-fly positions: a mask the hull's size (text or PGM; hull-marked cells are "
+                 "no-fly; see docs/model.md)")
+      ->type_name("FILE");
+  cmd.add_option("--no-fly-box", boxes,
+                 "A no-fly rectangle of cells, corners inclusive (repeatable)")
+      ->type_name("X0,Y0,X1,Y1");
+}
+
+std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& file,
+                                                             const std::vector<std::string>& boxes,
+                                                             const world::HullMask& hull) {
+  if (file.empty() && boxes.empty()) return nullptr;
+  std::vector<world::CellBox> cell_boxes;
+  for (const auto& b : boxes) cell_boxes.push_back(world::parse_cell_box(b, "no-fly-box"));
+  return std::make_shared<const grid::Grid<std::uint8_t>>(
+      world::make_no_fly_mask(hull, file, cell_boxes));
 }
 
 world::HullMask load_mission_hull(const MissionArgs& a) { return world::load_hull(a.hull); }
@@ -78,6 +100,7 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   p.start_z = a.start_z;
   p.time_limit = a.time_limit;
   for (const auto& s : a.starts) p.starts.push_back(parse_cell(s));
+  p.no_fly = build_no_fly(a.no_fly, a.no_fly_boxes, hull);
 
   planners::Scenario sc{"custom", "", 0.005, 0.005, 5, 5, 1.0, 0.0};
   if (!a.scenario.empty()) sc = planners::scenario(a.scenario);

@@ -39,7 +39,8 @@ std::vector<std::string> runs_header() {
           "hovers",       "plane_changes",
           "steps_z1",     "steps_z2",
           "steps_transit", "tsp_solves",
-          "replans",      "assignments"};
+          "replans",      "assignments",
+          "unreachable_cells"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -90,7 +91,8 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
       std::to_string(total.hovers), std::to_string(total.plane_changes),
       std::to_string(total.steps_z1), std::to_string(total.steps_z2),
       std::to_string(total.steps_transit), std::to_string(r.planner.tsp_solves),
-      std::to_string(r.planner.replans), std::to_string(r.planner.assignments)});
+      std::to_string(r.planner.replans), std::to_string(r.planner.assignments),
+      std::to_string(r.unreachable_cells)});
 
   const auto times = c.curve.times();
   std::string samples = run.id;

@@ -68,6 +68,10 @@ grid::Cell HullMask::snap(grid::Cell c) const {
 }
 
 HullMask parse_text_mask(std::string_view text, const std::string& source) {
+  return HullMask(parse_text_grid(text, source), source);
+}
+
+grid::Grid<std::uint8_t> parse_text_grid(std::string_view text, const std::string& source) {
   std::vector<std::string> rows;
   std::vector<int> row_lines;
   int line_no = 0;
@@ -117,7 +121,7 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
     const int y = height - 1 - r;  // first text row is the top of the hull
     for (int x = 0; x < width; ++x) mask(x, y) = rows[static_cast<std::size_t>(r)][x] != '.';
   }
-  return HullMask(std::move(mask), source);
+  return mask;
 }
 
 namespace {
@@ -174,6 +178,10 @@ class PgmHeaderReader {
 }  // namespace
 
 HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
+  return HullMask(parse_pgm_grid(bytes, source), source);
+}
+
+grid::Grid<std::uint8_t> parse_pgm_grid(std::string_view bytes, const std::string& source) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
     throw InputError(source, 1, "not a PGM image (expected magic 'P2' or 'P5')");
   }
@@ -220,7 +228,7 @@ HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
       mask(x, y) = 2 * v > maxval;
     }
   }
-  return HullMask(std::move(mask), source);
+  return mask;
 }
 
 const HullMask& default_hull() {
@@ -230,6 +238,10 @@ const HullMask& default_hull() {
 
 HullMask load_hull(const std::filesystem::path& path) {
   if (path == "default" || path == "builtin:default") return default_hull();
+  return HullMask(load_mask_grid(path), path.string());
+}
+
+grid::Grid<std::uint8_t> load_mask_grid(const std::filesystem::path& path) {
   const std::string name = path.string();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name, 0, "cannot open the hull file");
@@ -238,9 +250,9 @@ HullMask load_hull(const std::filesystem::path& path) {
   const std::string bytes = buffer.str();
   if (bytes.size() > 64u * 1024 * 1024) throw InputError(name, 0, "file is larger than 64 MiB");
   if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
-    return parse_pgm_mask(bytes, name);
+    return parse_pgm_grid(bytes, name);
   }
-  return parse_text_mask(bytes, name);
+  return parse_text_grid(bytes, name);
 }
 
 std::string to_text_mask(const HullMask& hull) {

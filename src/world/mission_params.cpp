@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/grid/distance.hpp"
 
 namespace hullinspect::world {
 
@@ -68,7 +69,46 @@ void validate(const MissionParams& p, const HullMask& hull) {
                                                  c.x, c.y, hull.width(), hull.height()));
     }
   }
+  if (p.no_fly) {
+    if (p.no_fly->width() != hull.width() || p.no_fly->height() != hull.height()) {
+      throw ParameterError("no-fly", fmt::format("mask is {} × {} but the hull is {} × {}",
+                                                 p.no_fly->width(), p.no_fly->height(),
+                                                 hull.width(), hull.height()));
+    }
+    int allowed_hull = 0;
+    for (int i : hull.cells()) allowed_hull += (*p.no_fly)[i] == 0 ? 1 : 0;
+    if (allowed_hull < p.uavs) {
+      throw ParameterError("no-fly", fmt::format("leaves {} hull cells outside no-fly zones for {} "
+                                                 "UAVs to start on",
+                                                 allowed_hull, p.uavs));
+    }
+    for (const auto& c : start_cells(p, hull)) {
+      if ((*p.no_fly)[c] != 0) {
+        throw ParameterError("starts", fmt::format("start cell ({}, {}) is a no-fly position",
+                                                   c.x, c.y));
+      }
+    }
+  }
 }
+
+namespace {
+// The nearest hull cell to c that is not a no-fly position; ties: lowest y, then lowest x.
+grid::Cell snap_allowed(const HullMask& hull, const grid::Grid<std::uint8_t>& no_fly,
+                        grid::Cell c) {
+  grid::Cell best = hull.snap(c);
+  int best_d = grid::kUnreachable;
+  for (int i : hull.cells()) {  // (y, x) order, so the first strict minimum wins ties
+    if (no_fly[i] != 0) continue;
+    const grid::Cell h = hull.mask().cell(i);
+    const int d = grid::manhattan(h, c);
+    if (d < best_d) {
+      best_d = d;
+      best = h;
+    }
+  }
+  return best;
+}
+}  // namespace
 
 std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull) {
   std::vector<grid::Cell> cells;
@@ -82,7 +122,7 @@ std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull
   for (int k = 0; k < p.uavs; ++k) {
     // floor((k + 0.5)·a/n) in integers: (2k + 1)·a / (2n)
     const int x = static_cast<int>((2LL * k + 1) * a / (2LL * p.uavs));
-    cells.push_back(hull.snap({x, b / 2}));
+    cells.push_back(p.no_fly ? snap_allowed(hull, *p.no_fly, {x, b / 2}) : hull.snap({x, b / 2}));
   }
   return cells;
 }

@@ -54,6 +54,9 @@ struct ExperimentConfig {
   int hull_height = 0;
   int hull_cells = 0;
   double cell_size = 0.5;
+  /// No-fly positions (null = none) and how the config stated them ({file, boxes-m, hash}).
+  std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
+  nlohmann::json no_fly_spec;
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
   int s1 = 5;
   std::vector<int> s2 = {7};

@@ -56,6 +56,12 @@ HullMask parse_text_mask(std::string_view text, const std::string& source);
 /// Parses a P2 or P5 PGM; pixels with value > maxval/2 are hull; the first image row is y = b-1.
 HullMask parse_pgm_mask(std::string_view bytes, const std::string& source);
 
+/// The same formats read as a plain 0/1 grid, without the hull's checks (empty or disconnected
+/// masks are fine): no-fly masks and other per-cell maps. Throws InputError naming the file/line.
+grid::Grid<std::uint8_t> load_mask_grid(const std::filesystem::path& path);
+grid::Grid<std::uint8_t> parse_text_grid(std::string_view text, const std::string& source);
+grid::Grid<std::uint8_t> parse_pgm_grid(std::string_view bytes, const std::string& source);
+
 /// Writes the mask in the text format (round-trips through parse_text_mask).
 std::string to_text_mask(const HullMask& hull);
 
