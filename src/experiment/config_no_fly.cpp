@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "hullinspect/core/errors.hpp"
@@ -21,8 +22,8 @@ std::pair<int, int> cell_span(double lo, double hi, double cell) {
 
 }  // namespace
 
-void read_no_fly(const YamlFields& f, const YAML::Node& root,
-                 const std::filesystem::path& base_dir, ExperimentConfig& c) {
+void read_no_fly(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
+                 ExperimentConfig& c) {
   const YAML::Node node = root["no-fly"];
   if (!node) return;
   f.expect_map(node, "no-fly", {"file", "boxes-m"});
@@ -61,7 +62,8 @@ void read_no_fly(const YamlFields& f, const YAML::Node& root,
     spec["boxes-m"] = std::move(boxes_json);
   }
   try {
-    c.no_fly = std::make_shared<const world::NoFlyMask>(world::make_no_fly_mask(*c.hull, file, boxes));
+    c.no_fly =
+        std::make_shared<const world::NoFlyMask>(world::make_no_fly_mask(*c.hull, file, boxes));
   } catch (const Error& e) {
     f.fail(node, "no-fly", e.what());
   }

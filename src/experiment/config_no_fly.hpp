@@ -14,7 +14,7 @@
 namespace hullinspect::experiment::detail {
 
 /// Reads root["no-fly"] (if present) into c.no_fly and c.no_fly_spec; the hull must be read.
-void read_no_fly(const YamlFields& f, const YAML::Node& root,
-                 const std::filesystem::path& base_dir, ExperimentConfig& c);
+void read_no_fly(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
+                 ExperimentConfig& c);
 
 }  // namespace hullinspect::experiment::detail

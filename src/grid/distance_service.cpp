@@ -94,7 +94,8 @@ Cell DistanceService::next_step(Cell from, Cell to) {
   if (to.x != from.x) preferred[count++] = {from.x + (to.x > from.x ? 1 : -1), from.y};
   if (to.y != from.y) preferred[count++] = {from.x, from.y + (to.y > from.y ? 1 : -1)};
   if (!has_no_fly()) return preferred[0];
-  for (int d = 0; d < 4; ++d) preferred[count++] = {from.x + kNeighbourDx[d], from.y + kNeighbourDy[d]};
+  for (int d = 0; d < 4; ++d)
+    preferred[count++] = {from.x + kNeighbourDx[d], from.y + kNeighbourDy[d]};
   const Grid<int>& f = cached_field(allowed_.index(to));
   const int here = f[from];
   if (here >= kUnreachable) return from;

@@ -126,7 +126,8 @@ Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly,
 }
 
 grid::DistanceService make_distance_service(const Reachability& reach) {
-  if (!reach.any_no_fly) return grid::DistanceService(reach.flyable.width(), reach.flyable.height());
+  if (!reach.any_no_fly)
+    return grid::DistanceService(reach.flyable.width(), reach.flyable.height());
   return grid::DistanceService(reach.flyable);
 }
 

@@ -156,7 +156,8 @@ class NoFlyMissions : public ::testing::TestWithParam<Case> {};
 TEST_P(NoFlyMissions, CompletesUnderTheChecker) {
   const Case& c = GetParam();
   const auto all = layouts();
-  const auto it = std::find_if(all.begin(), all.end(), [&](const Layout& l) { return l.name == c.layout; });
+  const auto it =
+      std::find_if(all.begin(), all.end(), [&](const Layout& l) { return l.name == c.layout; });
   ASSERT_NE(it, all.end());
   const auto& hull = small_hull();
   for (std::uint64_t seed : {1, 2}) {
@@ -177,8 +178,8 @@ TEST_P(NoFlyMissions, CompletesUnderTheChecker) {
     options.observers.push_back(&checker);
     const auto result = planners::run_mission(spec, hull, options);
     EXPECT_TRUE(checker.ok()) << c.layout << " " << c.algorithm << " seed " << seed;
-    EXPECT_TRUE(result.complete) << c.layout << " " << c.algorithm << " seed " << seed << ": m = "
-                                 << result.m_percent(result.steps);
+    EXPECT_TRUE(result.complete) << c.layout << " " << c.algorithm << " seed " << seed
+                                 << ": m = " << result.m_percent(result.steps);
     const auto starts = world::start_cells(spec.params, hull);
     const auto [u1, u2] = brute_unreachable(hull, it->no_fly, starts, 5, 7);
     EXPECT_EQ(result.unreachable_cells, u1);
@@ -196,14 +197,15 @@ std::vector<Case> cases() {
   return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryPlanner, NoFlyMissions, ::testing::ValuesIn(cases()),
-                         [](const auto& info) {
-                           std::string name = info.param.layout + "_" + info.param.algorithm;
-                           for (char& ch : name) {
-                             if (ch == '-') ch = '_';
-                           }
-                           return name;
-                         });
+std::string case_name(const ::testing::TestParamInfo<Case>& param) {
+  std::string name = param.param.layout + "_" + param.param.algorithm;
+  for (char& ch : name) {
+    if (ch == '-') ch = '_';
+  }
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryPlanner, NoFlyMissions, ::testing::ValuesIn(cases()), case_name);
 
 TEST(NoFlyAccounting, UnreachableCellsLeaveTheMetrics) {
   const auto& hull = small_hull();
@@ -288,8 +290,9 @@ TEST(NoFlyInputs, BoxesAreCheckedAndParsed) {
     world::make_no_fly_mask(hull, {}, std::span<const world::CellBox>(&outside, 1));
     FAIL() << "no error";
   } catch (const ParameterError& e) {
-    EXPECT_STREQ(e.what(),
-                 "no-fly-box: box 50,0,60,3 must satisfy 0 <= X0 <= X1 < 60 and 0 <= Y0 <= Y1 < 20");
+    EXPECT_STREQ(
+        e.what(),
+        "no-fly-box: box 50,0,60,3 must satisfy 0 <= X0 <= X1 < 60 and 0 <= Y0 <= Y1 < 20");
   }
 }
 
@@ -310,8 +313,9 @@ TEST(NoFlySimulator, AMoveOntoANoFlyPositionIsAPlannerError) {
     sim.step(std::span<const sim::Action>(&east, 1));
     FAIL() << "no error";
   } catch (const LogicError& e) {
-    EXPECT_STREQ(e.what(),
-                 "UAV 0 at (10, 10) was told to move east onto the no-fly position (11, 10) at t = 0");
+    EXPECT_STREQ(
+        e.what(),
+        "UAV 0 at (10, 10) was told to move east onto the no-fly position (11, 10) at t = 0");
   }
 }
 
