@@ -27,6 +27,7 @@ void read_no_fly(const YamlFields& f, const YAML::Node& root, const std::filesys
   const YAML::Node node = root["no-fly"];
   if (!node) return;
   f.expect_map(node, "no-fly", {"file", "boxes-m"});
+  c.lines["no-fly"] = YamlFields::line(node);
   std::filesystem::path file;
   nlohmann::json spec = nlohmann::json::object();
   if (node["file"]) {
