@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 #include "export_writers.hpp"
 
 namespace hullinspect::io::detail {
@@ -14,6 +16,14 @@ constexpr int kNavWaypoint = 16;      // MAV_CMD_NAV_WAYPOINT
 constexpr int kFrameRelativeAlt = 3;  // MAV_FRAME_GLOBAL_RELATIVE_ALT
 constexpr int kFirmwarePx4 = 12;      // MAV_AUTOPILOT_PX4
 constexpr int kVehicleQuadrotor = 2;  // MAV_TYPE_QUADROTOR
+}  // namespace
+
+namespace {
+// Values are rounded as the wpl text writes them (1e-10 degrees, about 0.01 mm; 0.1 mm; 0.001°), so
+// both formats carry the same numbers.
+double round_to(double v, double per_unit) {
+  return std::round(v * per_unit) / per_unit;
+}
 }  // namespace
 
 double acceptance_radius_m(const ExportPlan& plan) {
@@ -28,13 +38,14 @@ std::vector<NavWaypoint> nav_waypoints(const ExportPlan& plan, const UavWaypoint
     const auto& w = uav.waypoints[i];
     const auto& p = w.pose;
     NavWaypoint n;
-    n.hold_s = hold_seconds(w, uav.waypoints[i == 0 ? 0 : i - 1], speed);
+    n.hold_s = round_to(hold_seconds(w, uav.waypoints[i == 0 ? 0 : i - 1], speed), 1e4);
     n.acceptance_m = acceptance_radius_m(plan);
-    n.yaw_deg = geo.compass_deg(p.yaw);
+    n.yaw_deg = round_to(geo.compass_deg(p.yaw), 1e3);
+    if (n.yaw_deg >= 360) n.yaw_deg = 0;
     const GeoPoint g = geo.to_wgs84(p.x, p.y, p.z);
-    n.lat = g.lat;
-    n.lon = g.lon;
-    n.rel_alt = g.alt - geo.origin().alt;
+    n.lat = round_to(g.lat, 1e10);
+    n.lon = round_to(g.lon, 1e10);
+    n.rel_alt = round_to(g.alt - geo.origin().alt, 1e4);
     items.push_back(n);
   }
   return items;
@@ -71,7 +82,7 @@ std::string write_qgc_plan(const ExportPlan& plan, const UavWaypoints& uav,
     for (const auto& [x, y] : {std::pair{near.x - half, y0}, std::pair{near.x + half, y0},
                                std::pair{near.x + half, y1}, std::pair{near.x - half, y1}}) {
       const GeoPoint g = geo.to_wgs84(x, y, 0);
-      ring.push_back({g.lat, g.lon});
+      ring.push_back({round_to(g.lat, 1e10), round_to(g.lon, 1e10)});
     }
     polygons.push_back({{"inclusion", false}, {"polygon", ring}, {"version", 1}});
   }

@@ -117,6 +117,25 @@ TEST_F(ExportCli, RejectsAMalformedTrace) {
   EXPECT_FALSE(fs::exists(dir_ + "/never"));
 }
 
+TEST_F(ExportCli, RejectsATraceThatCannotBePlacedInMetres) {
+  const auto good = io::read_trace(trace_);
+  auto bad = good;
+  bad["grid"]["cell_size_m"] = 0;
+  const std::string path = dir_ + "/cell.json";
+  io::write_file_atomic(path, bad.dump());
+  auto r = run_cli({"export", path, "--out", dir_ + "/never"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "hullinspect: " + path + ": grid.cell_size_m: expected a positive number of metres\n");
+  bad = good;
+  bad["camera"]["theta_deg"] = 180;
+  io::write_file_atomic(path, bad.dump());
+  r = run_cli({"export", path, "--out", dir_ + "/never"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + path + ": camera.theta_deg: expected degrees in (0, 180)\n");
+  EXPECT_FALSE(fs::exists(dir_ + "/never"));
+}
+
 TEST_F(ExportCli, WritesOneFilePerUavAndSaysSo) {
   const std::string out = dir_ + "/csv";
   const auto r = run_cli({"export", trace_, "--out", out});

@@ -79,6 +79,8 @@ TEST(WaypointAction, NamesRoundTrip) {
 
 TEST(ShipFrame, FlatHullPortAndStarboard) {
   ShipFrameSpec spec;  // 0.5 m cells, s1 = 5, s2 = 7, θ = 90°: ζ1 = 1.25 m, ζ2 = 1.75 m
+  EXPECT_EQ(spec.side, HullSide::kStarboard);  // as a plain mask
+  spec.side = HullSide::kPort;
   ShipFrame port(spec);
   EXPECT_DOUBLE_EQ(port.standoff_m(1), 1.25);
   EXPECT_DOUBLE_EQ(port.standoff_m(2), 1.75);
@@ -105,6 +107,7 @@ TEST(ShipFrame, FlatHullPortAndStarboard) {
 
 TEST(ShipFrame, DepthAndNormalFromAMesh) {
   ShipFrameSpec spec;
+  spec.side = HullSide::kPort;
   spec.theta_deg = 60;  // ζ = s·cell / (2·tan 30°)
   spec.depth = grid::Grid<double>(2, 1, 0.0);
   spec.depth(1, 0) = 0.4;
