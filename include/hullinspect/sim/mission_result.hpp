@@ -10,7 +10,7 @@ struct UavCounters {
   int moves = 0;
   int hovers = 0;
   int plane_changes = 0;
-  int steps_z1 = 0;  ///< steps ending on plane 1 (not in transit)
+  int steps_z1 = 0;       ///< steps ending on plane 1 (not in transit)
   int steps_z2 = 0;
   int steps_transit = 0;  ///< steps spent changing plane
 };
@@ -40,7 +40,7 @@ struct MissionResult {
   long long observations = 0;            ///< hull-cell readings
   long long redundant_observations = 0;  ///< readings that changed nothing and detected nothing
   long long detections = 0;
-  double planner_seconds = 0;  ///< CPU time in the planner (start + decide)
+  double planner_seconds = 0;            ///< CPU time in the planner (start + decide)
   PlannerStats planner;
 
   double c_percent(int t) const;  ///< c(t), 100 when there is no corrosion
