@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <string>
 
@@ -111,28 +112,45 @@ TEST(TspWorkBudget, StopsDeterministicallyWithABound) {
   EXPECT_GE(a.length, best.length);
 }
 
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
 TEST(TspTimeLimits, HonouredWithinTenPercentAndFiftyMilliseconds) {
-  // Hard g = 80 instances that neither solver proves within 0.3 s. The limit is wall-clock, so a
-  // loaded machine can only lengthen a solve: the fastest of three tries is checked.
+  // Hard g = 80 instances that neither solver proves within 0.3 s. The limit is wall-clock, and a
+  // loaded machine can only lengthen a solve (the CI machine runs ~8 builds on 2 cores): of three
+  // tries, the wall time of the fastest one that got at least half a core is checked; if none
+  // did, the CPU time of the fastest (the solver must not compute past its deadline either way).
   constexpr double kLimit = 0.3;
+  constexpr double kAllowed = kLimit * 1.1 + 0.05 + kSanitizerSlack;
   for (const std::string name : {"exact", "dfj-iterative"}) {
     for (std::uint64_t seed : {1, 2}) {
       const SegmentTsp p = random_strip_instance(80, seed, 230, 30, 60);
       OptionMap options{{"time_limit", "0.3"}};
       if (name == "exact") options["work_budget"] = "0";  // the deadline alone stops it
       auto solver = make_tsp_solver(name, options);
-      double fastest = 1e9;
+      double fastest_wall = 1e9;
+      double fastest_cpu = 1e9;
       for (int attempt = 0; attempt < 3; ++attempt) {
         const auto started = std::chrono::steady_clock::now();
+        const double cpu_started = thread_cpu_seconds();
         const TspSolution s = solver->solve(p);
-        fastest = std::min(
-            fastest,
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+        const double cpu = thread_cpu_seconds() - cpu_started;
+        const double wall =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        if (cpu >= 0.5 * wall) fastest_wall = std::min(fastest_wall, wall);
+        fastest_cpu = std::min(fastest_cpu, cpu);
         ASSERT_TRUE(valid_solution(p, s));
         EXPECT_LE(s.lower_bound, s.length);
         EXPECT_FALSE(s.fallback);
       }
-      EXPECT_LE(fastest, kLimit * 1.1 + 0.05 + kSanitizerSlack) << name << ", seed " << seed;
+      if (fastest_wall < 1e9) {
+        EXPECT_LE(fastest_wall, kAllowed) << name << ", seed " << seed << " (wall clock)";
+      } else {
+        EXPECT_LE(fastest_cpu, kAllowed) << name << ", seed " << seed << " (CPU, machine loaded)";
+      }
     }
   }
 }
