@@ -41,7 +41,7 @@ const std::vector<TspSolverInfo>& registry() {
         {"max_segments", text(exact.max_segments),
          "above this g: the local search's tour and a lower bound, no proof (0 = no limit)"},
         {"work_budget", text(exact.work_budget),
-         "LP work (10^6 units of rows^2 per pivot, ~1 ms each) before returning the best tour "
+         "LP work (10^6 units of rows^2 per pivot, ~2 ms each) before returning the best tour "
          "and a bound, no proof (0 = none)"}},
        &make_exact},
       {"dfj-iterative",

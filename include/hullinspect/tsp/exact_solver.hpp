@@ -33,9 +33,9 @@ struct ExactOptions {
   int max_segments = 120;
   /// Work the branch-and-cut may do before it returns its best tour and its root bound with
   /// optimal = false, in millions of units of Σ m² over its LP pivots (m rows): a deterministic
-  /// bound (the same answer on every machine and load, unlike time_limit), about 1 ms of CPU per
+  /// bound (the same answer on every machine and load, unlike time_limit), about 2 ms of CPU per
   /// unit here (docs/tsp.md). 0 = no budget.
-  double work_budget = 100;
+  double work_budget = 50;
 };
 
 class ExactSolver final : public TspSolver {
