@@ -1,0 +1,22 @@
+// Every registered planner, whatever it is, cannot reach the ground truth C.
+
+#include <gtest/gtest.h>
+
+#include "hullinspect/planners/planner.hpp"
+#include "support/truth_blindness.hpp"
+
+namespace hullinspect::planners {
+namespace {
+
+TEST(TruthBlindness, EveryRegisteredPlannerDecidesOnlyFromWhatWasSensed) {
+  world::MissionParams params;
+  params.uavs = 4;
+  for (const auto& info : planner_registry()) {
+    testing::TruthBlindnessReport report;
+    EXPECT_TRUE(testing::planner_is_truth_blind(info.name, {}, params, 5, &report)) << info.name;
+    EXPECT_GE(report.first_differing_reading, 1) << info.name;  // the two missions did diverge
+  }
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
