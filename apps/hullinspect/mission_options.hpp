@@ -35,7 +35,4 @@ world::HullMask load_mission_hull(const MissionArgs& args);
 /// Turns the arguments into a spec; throws ParameterError naming the option.
 planners::MissionSpec build_spec(const MissionArgs& args, const world::HullMask& hull);
 
-/// Writes the HTML replay viewer for a trace (implemented with the view command).
-void write_viewer_html(const nlohmann::json& trace, const std::string& path);
-
 }  // namespace hullinspect::cli

@@ -10,9 +10,10 @@
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/grid/distance.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -32,17 +33,6 @@ struct PartitionArgs {
   bool json = false;
   std::string out_path;
 };
-
-grid::Cell parse_start(const std::string& text) {
-  int x = 0;
-  int y = 0;
-  char comma = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
-    throw ParameterError("start", fmt::format("expects X,Y (got '{}')", text));
-  }
-  return {x, y};
-}
 
 // Explicit starts that snap onto one hull cell: name the cells as the user gave them.
 void reject_shared_starts(const std::vector<grid::Cell>& given,
@@ -152,10 +142,14 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
 }
 
 int run_partition(const PartitionArgs& args) {
+  io::OutputSet outputs;
+  if (args.hull != "default") outputs.add_input(args.hull, "hull");
+  outputs.add_output(args.out_path, "out");
+  outputs.check();
   const world::HullMask hull = world::load_hull(args.hull);
   world::MissionParams params;
   params.uavs = args.uavs;
-  for (const auto& s : args.starts) params.starts.push_back(parse_start(s));
+  for (const auto& s : args.starts) params.starts.push_back(parse_xy(s));
   try {
     world::validate(params, hull);
   } catch (const ParameterError& e) {
@@ -183,7 +177,10 @@ int run_partition(const PartitionArgs& args) {
   reject_shared_starts(params.starts, request.starts);
   const partition::Partition result = partitioner->partition(request);
   const auto connected = connected_regions(hull, result, args.uavs);
-  if (!args.out_path.empty()) io::write_file_atomic(args.out_path, region_mask(hull, result, args));
+  if (!args.out_path.empty()) {
+    outputs.write(args.out_path, region_mask(hull, result, args));
+    outputs.commit();
+  }
   if (args.json) {
     std::cout << summary_json(args, hull, request.starts, result, connected).dump() << "\n";
   } else {

@@ -1,6 +1,7 @@
 // hullinspect report: tables (Markdown, CSV) and figures (PNG, PDF) from an experiment's results.
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -9,11 +10,13 @@
 
 #include "experiment_commands.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/experiment/build_data.hpp"
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
 #include "hullinspect/experiment/summary.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "subprocess.hpp"
 
 namespace hullinspect::cli {
@@ -78,21 +81,23 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
   const auto& config = m.at("config");
   std::string md = fmt::format("# Experiment report: {}\n\n", config.value("name", "?"));
   if (!config.value("description", "").empty()) md += config.value("description", "") + "\n\n";
-  md += fmt::format("- Results: `{}` — status {}, {} of {} runs, {} instances per cell\n", a.results,
-                    m.value("status", "?"), m.value("runs_done", 0), m.value("runs_total", 0),
-                    config.at("seeds").size());
+  md += fmt::format("- Results: `{}` — status {}, {} of {} runs, {} instances per cell\n",
+                    a.results, m.value("status", "?"), m.value("runs_done", 0),
+                    m.value("runs_total", 0), config.at("seeds").size());
   md += fmt::format("- Config: `{}` (fingerprint {}); hullinspect {} (git {})\n",
                     m.value("config_source", "?"), m.value("fingerprint", "?"),
                     m.value("version", "?"), m.value("git_revision", "unknown"));
   md += fmt::format("- Ran from {} to {}\n", m.value("started", "?"), m.value("finished", "?"));
-  md += "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
-        "over the missions that reached the time; \"[k incomplete]\" counts missions stopped by the "
-        "time limit, which are never counted as a number.\n\n";
+  md +=
+      "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
+      "over the missions that reached the time; \"[k incomplete]\" counts missions stopped by the "
+      "time limit, which are never counted as a number.\n\n";
   md += "## Tables\n\nAlso in `summary.csv`.\n\n" + tables;
   if (!figures.empty()) {
-    md += "## Figures\n\nFig. 6-style bars (`fig6_*`), Fig. 7-style curves (`fig7_*`) and Fig. "
-          "8-style sweeps (`fig8_*`); each also as PDF. Redraw them with `/usr/bin/python3 "
-          "plot_report.py`.\n\n";
+    md +=
+        "## Figures\n\nFig. 6-style bars (`fig6_*`), Fig. 7-style curves (`fig7_*`) and Fig. "
+        "8-style sweeps (`fig8_*`); each also as PDF. Redraw them with `/usr/bin/python3 "
+        "plot_report.py`.\n\n";
     for (const auto& f : figures) {
       md += fmt::format("### {}\n\n![{}](figures/{}.png)\n\n[PDF](figures/{}.pdf)\n\n", f, f, f, f);
     }
@@ -100,9 +105,35 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
   return md;
 }
 
+// The Python that draws the figures must exist before anything is written.
+void check_python(const std::string& python) {
+  const bool has_slash = python.find('/') != std::string::npos;
+  if (has_slash) {
+    if (::access(python.c_str(), X_OK) == 0 && !fs::is_directory(python)) return;
+  } else if (const char* path = std::getenv("PATH"); path != nullptr) {
+    std::string dirs = path;
+    std::size_t start = 0;
+    while (start <= dirs.size()) {
+      const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+      const fs::path candidate = fs::path(dirs.substr(start, end - start)) / python;
+      if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return;
+      start = end + 1;
+    }
+  }
+  throw ParameterError("python", fmt::format("'{}' is not an executable program (install "
+                                             "python3-matplotlib with scripts/setup, or pass "
+                                             "--no-figures)",
+                                             escape_for_message(python, 200)));
+}
+
 int run(const ReportArgs& a) {
   const fs::path results(a.results);
   const fs::path out(a.out);
+  io::OutputSet outputs;
+  outputs.add_input(results / experiment::kRunsFile, "results");
+  outputs.add_output_dir(out, "out");
+  outputs.check();
+  if (!a.no_figures) check_python(a.python);
   const auto manifest = experiment::read_manifest(results);
   for (const char* file : {experiment::kRunsFile, experiment::kCurvesFile}) {
     if (!fs::exists(results / file)) {
@@ -115,13 +146,15 @@ int run(const ReportArgs& a) {
   const auto runs = experiment::parse_csv(io::read_file(runs_path), runs_path);
   const auto rows = experiment::summarize_runs(runs, runs_path);
   if (manifest.value("shard", "1/1") != "1/1") {
-    std::cerr << fmt::format("hullinspect: {} holds shard {} only: merge the shards for the whole "
-                             "experiment\n",
-                             a.results, manifest.value("shard", "?"));
+    std::cerr << fmt::format(
+        "hullinspect: {} holds shard {} only: merge the shards for the whole "
+        "experiment\n",
+        a.results, manifest.value("shard", "?"));
   }
   if (manifest.value("status", "") != "complete") {
-    std::cerr << fmt::format("hullinspect: {} has status '{}': the report covers the {} runs found\n",
-                             a.results, manifest.value("status", "?"), runs.rows.size());
+    std::cerr << fmt::format(
+        "hullinspect: {} has status '{}': the report covers the {} runs found\n", a.results,
+        manifest.value("status", "?"), runs.rows.size());
   }
   fs::create_directories(out);
   const std::string tables = experiment::summary_markdown(rows);

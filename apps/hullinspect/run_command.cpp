@@ -7,9 +7,10 @@
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
+#include "hullinspect/io/viewer_html.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/scenario.hpp"
 #include "mission_options.hpp"
@@ -30,7 +31,9 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
   std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
                            spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
                            r.complete ? "complete" : "INCOMPLETE (time limit reached)");
-  auto time = [](const std::optional<int>& t) { return t ? fmt::format("{} s", *t) : std::string("—"); };
+  auto time = [](const std::optional<int>& t) {
+    return t ? fmt::format("{} s", *t) : std::string("—");
+  };
   std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
                            time(r.t_m), r.corroded_cells, r.hull_cells);
   std::cout << fmt::format(
@@ -46,6 +49,11 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
 }
 
 int run(const RunArgs& args) {
+  io::OutputSet outputs;
+  if (args.mission.hull != "default") outputs.add_input(args.mission.hull, "hull");
+  outputs.add_output(args.trace_path, "trace");
+  outputs.add_output(args.html_path, "html");
+  outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
@@ -58,11 +66,13 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
-  const sim::MissionResult result = planners::run_mission(hull, instance, spec.params, *planner, options);
+  const sim::MissionResult result =
+      planners::run_mission(hull, instance, spec.params, *planner, options);
   if (tracing) {
     const auto trace = recorder->finish(result);
-    if (!args.trace_path.empty()) io::write_file_atomic(args.trace_path, trace.dump() + "\n");
-    if (!args.html_path.empty()) write_viewer_html(trace, args.html_path);
+    if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
+    if (!args.html_path.empty()) outputs.write(args.html_path, io::viewer_html(trace));
+    outputs.commit();
   }
   if (args.json) {
     std::cout << io::result_json(spec, result).dump() << "\n";

@@ -120,8 +120,9 @@ std::vector<AlgorithmSpec> read_algorithms(const YamlFields& f, const YAML::Node
     if (spec.label.empty()) spec.label = spec.planner;
     for (const auto& other : out) {
       if (other.label == spec.label) {
-        f.fail(a, key, fmt::format("label '{}' is used twice (give each entry its own 'label')",
-                                   spec.label));
+        f.fail(
+            a, key,
+            fmt::format("label '{}' is used twice (give each entry its own 'label')", spec.label));
       }
     }
     out.push_back(std::move(spec));
@@ -137,7 +138,8 @@ void read_instances(const YamlFields& f, const YAML::Node& root, ExperimentConfi
     std::set<std::uint64_t> seen;
     for (std::size_t i = 0; i < n.size(); ++i) {
       const std::uint64_t seed = f.as_seed(n[i], "instances");
-      if (!seen.insert(seed).second) f.fail(n[i], "instances", fmt::format("lists seed {} twice", seed));
+      if (!seen.insert(seed).second)
+        f.fail(n[i], "instances", fmt::format("lists seed {} twice", seed));
       c.seeds.push_back(seed);
     }
     if (c.seeds.empty()) f.fail(n, "instances", "must not be an empty list");
@@ -209,15 +211,16 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
     if (curve["step"]) c.curve.step = f.as_int(curve["step"], "curve.step", 1, 1000000000);
     if (curve["end"]) c.curve.end = f.as_int(curve["end"], "curve.end", 0, 1000000000);
     if (c.curve.end / c.curve.step + 1 > kMaxCurvePoints) {
-      f.fail(curve, "curve", fmt::format("gives {} sample times; at most {} are accepted",
-                                         c.curve.end / c.curve.step + 1, kMaxCurvePoints));
+      f.fail(curve, "curve",
+             fmt::format("gives {} sample times; at most {} are accepted",
+                         c.curve.end / c.curve.step + 1, kMaxCurvePoints));
     }
   }
   return c;
 }
 
 ExperimentConfig load_config(const std::filesystem::path& path) {
-  const std::string text = io::read_file(path);
+  const std::string text = io::read_file(path, kMaxConfigBytes);
   return parse_config(text, path.string(), path.parent_path());
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 
 namespace hullinspect::experiment::detail {
 
@@ -19,7 +20,7 @@ std::string join(std::initializer_list<std::string_view> names) {
 }
 
 std::string shown(const YAML::Node& node) {
-  if (node.IsScalar()) return fmt::format("'{}'", node.Scalar());
+  if (node.IsScalar()) return fmt::format("'{}'", escape_for_message(node.Scalar()));
   if (node.IsSequence()) return "a list";
   if (node.IsMap()) return "a map";
   return "nothing";
@@ -32,7 +33,8 @@ int YamlFields::line(const YAML::Node& node) {
   return mark.line >= 0 ? mark.line + 1 : 0;
 }
 
-void YamlFields::fail(const YAML::Node& node, std::string_view key, std::string_view problem) const {
+void YamlFields::fail(const YAML::Node& node, std::string_view key,
+                      std::string_view problem) const {
   fail_at(line(node), key, problem);
 }
 
@@ -48,7 +50,7 @@ void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
   std::set<std::string> seen;
   for (const auto& entry : node) {
     const YAML::Node& k = entry.first;
-    const std::string name = k.IsScalar() ? k.Scalar() : std::string("?");
+    const std::string name = k.IsScalar() ? escape_for_message(k.Scalar()) : std::string("?");
     const std::string path = key.empty() ? name : fmt::format("{}.{}", key, name);
     bool ok = false;
     for (auto n : known) ok = ok || n == name;
@@ -58,48 +60,32 @@ void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
 }
 
 int YamlFields::as_int(const YAML::Node& node, std::string_view key, int min, int max) const {
-  long long value = 0;
-  bool ok = node.IsScalar();
-  if (ok) {
-    const std::string& s = node.Scalar();
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-    ok = ec == std::errc() && end == s.data() + s.size();
+  if (!node.IsScalar()) fail(node, key, fmt::format("must be an integer (got {})", shown(node)));
+  try {
+    return parse_integer<int>(node.Scalar(), min, max);
+  } catch (const NumberError& e) {
+    fail(node, key, e.what());
   }
-  if (!ok) fail(node, key, fmt::format("must be an integer (got {})", shown(node)));
-  if (value < min || value > max) {
-    fail(node, key, fmt::format("must be an integer in [{}, {}] (got {})", min, max, value));
-  }
-  return static_cast<int>(value);
 }
 
 std::uint64_t YamlFields::as_seed(const YAML::Node& node, std::string_view key) const {
-  std::uint64_t value = 0;
-  bool ok = node.IsScalar() && !node.Scalar().empty() && node.Scalar()[0] != '-';
-  if (ok) {
-    const std::string& s = node.Scalar();
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-    ok = ec == std::errc() && end == s.data() + s.size();
+  if (!node.IsScalar())
+    fail(node, key, fmt::format("must be an integer seed (got {})", shown(node)));
+  try {
+    return parse_integer<std::uint64_t>(node.Scalar());
+  } catch (const NumberError& e) {
+    fail(node, key, e.what());
   }
-  if (!ok) {
-    fail(node, key, fmt::format("must be a non-negative integer seed below 2^64 (got {})", shown(node)));
-  }
-  return value;
 }
 
 double YamlFields::as_number(const YAML::Node& node, std::string_view key, double min,
                              double max) const {
-  double value = 0;
-  bool ok = node.IsScalar();
-  if (ok) {
-    const std::string& s = node.Scalar();
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-    ok = ec == std::errc() && end == s.data() + s.size() && std::isfinite(value);
+  if (!node.IsScalar()) fail(node, key, fmt::format("must be a number (got {})", shown(node)));
+  try {
+    return parse_real(node.Scalar(), min, max);
+  } catch (const NumberError& e) {
+    fail(node, key, e.what());
   }
-  if (!ok) fail(node, key, fmt::format("must be a number (got {})", shown(node)));
-  if (value < min || value > max) {
-    fail(node, key, fmt::format("must be a number in [{}, {}] (got {})", min, max, node.Scalar()));
-  }
-  return value;
 }
 
 std::string YamlFields::as_string(const YAML::Node& node, std::string_view key) const {
@@ -130,9 +116,10 @@ std::string label_problem(std::string_view label) {
   if (label.empty()) return "must not be empty";
   for (char c : label) {
     if (c == ',' || c == '"' || c == '\n' || c == '\r') {
-      return fmt::format("'{}' must not contain commas, quotes or line breaks (it names a CSV "
-                         "value)",
-                         label);
+      return fmt::format(
+          "'{}' must not contain commas, quotes or line breaks (it names a CSV "
+          "value)",
+          escape_for_message(label));
     }
   }
   return {};

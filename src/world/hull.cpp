@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/io/atomic_file.hpp"
 
 namespace hullinspect::world {
 
@@ -43,13 +45,13 @@ HullMask::HullMask(grid::Grid<std::uint8_t> is_hull, std::string source)
     }
     std::string parts;
     for (std::size_t k = 0; k < sizes.size() && k < 5; ++k) {
-      parts += fmt::format("{}{} cells from ({}, {})", k ? "; " : "", sizes[k], first[k].x,
-                           first[k].y);
+      parts +=
+          fmt::format("{}{} cells from ({}, {})", k ? "; " : "", sizes[k], first[k].x, first[k].y);
     }
     if (sizes.size() > 5) parts += "; …";
-    throw InputError(source_, 0,
-                     fmt::format("the hull is not 4-connected: {} components ({})", components,
-                                 parts));
+    throw InputError(
+        source_, 0,
+        fmt::format("the hull is not 4-connected: {} components ({})", components, parts));
   }
 }
 
@@ -89,7 +91,7 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
         throw InputError(source, line_no,
                          fmt::format("unexpected character '{}' in column {}; a text mask uses 'X' "
                                      "or '#' (hull) and '.' (not hull)",
-                                     ch, col + 1));
+                                     escape_for_message(std::string_view(&line[col], 1)), col + 1));
       }
     }
     if (!rows.empty() && line.size() != rows.front().size()) {
@@ -98,9 +100,9 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
                                    rows.front().size()));
     }
     if (line.size() > static_cast<std::size_t>(kMaxGridSide)) {
-      throw InputError(source, line_no,
-                       fmt::format("row has {} cells; at most {} are accepted", line.size(),
-                                   kMaxGridSide));
+      throw InputError(
+          source, line_no,
+          fmt::format("row has {} cells; at most {} are accepted", line.size(), kMaxGridSide));
     }
     rows.push_back(std::move(line));
     row_lines.push_back(line_no);
@@ -175,7 +177,9 @@ class PgmHeaderReader {
 
 HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
-    throw InputError(source, 1, "not a PGM image (expected magic 'P2' or 'P5')");
+    throw InputError(source, 1,
+                     fmt::format("not a greyscale PGM image (magic '{}'; expected 'P2' or 'P5')",
+                                 escape_for_message(bytes.substr(0, 2))));
   }
   const bool binary = bytes[1] == '5';
   PgmHeaderReader reader(bytes, source);
@@ -231,13 +235,8 @@ const HullMask& default_hull() {
 HullMask load_hull(const std::filesystem::path& path) {
   if (path == "default" || path == "builtin:default") return default_hull();
   const std::string name = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(name, 0, "cannot open the hull file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string bytes = buffer.str();
-  if (bytes.size() > 64u * 1024 * 1024) throw InputError(name, 0, "file is larger than 64 MiB");
-  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
+  const std::string bytes = io::read_file(path, kMaxHullFileBytes);
+  if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '0' && bytes[1] <= '9') {
     return parse_pgm_mask(bytes, name);
   }
   return parse_text_mask(bytes, name);

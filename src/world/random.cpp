@@ -3,7 +3,9 @@
 namespace hullinspect::world {
 
 namespace {
-constexpr std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+constexpr std::uint64_t rotl(std::uint64_t x, int k) {
+  return (x << k) | (x >> (64 - k));
+}
 }  // namespace
 
 std::uint64_t splitmix64(std::uint64_t& state) {
@@ -18,6 +20,16 @@ RandomStream::RandomStream(std::uint64_t seed, std::uint64_t stream) {
   std::uint64_t mix = stream * 0xD1B54A32D192ED03ULL + 0x8CB92BA72F3D8DD7ULL;
   std::uint64_t state = seed ^ splitmix64(mix);
   for (auto& word : s_) word = splitmix64(state);
+}
+
+RandomStream RandomStream::from_state(std::uint64_t s0, std::uint64_t s1, std::uint64_t s2,
+                                      std::uint64_t s3) {
+  RandomStream rng;
+  rng.s_[0] = s0;
+  rng.s_[1] = s1;
+  rng.s_[2] = s2;
+  rng.s_[3] = s3;
+  return rng;
 }
 
 std::uint64_t RandomStream::next() {
