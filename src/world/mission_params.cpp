@@ -88,6 +88,24 @@ void validate(const MissionParams& p, const HullMask& hull) {
                                                  c.x, c.y, hull.width(), hull.height()));
     }
   }
+  // Explicit starts that snap onto one hull cell: refused here, before any planning starts.
+  if (!p.starts.empty()) {
+    const auto snapped = start_cells(p, hull);
+    grid::Grid<int> first(hull.width(), hull.height(), -1);
+    for (std::size_t k = 0; k < snapped.size(); ++k) {
+      int& owner = first(snapped[k].x, snapped[k].y);
+      if (owner >= 0) {
+        const auto other = static_cast<std::size_t>(owner);
+        throw ParameterError(
+            "starts", fmt::format("UAVs {} and {} both start on cell ({}, {}) (given ({}, {}) and "
+                                  "({}, {}); cells off the hull snap to the nearest hull cell); "
+                                  "every UAV needs its own start cell",
+                                  other, k, snapped[k].x, snapped[k].y, p.starts[other].x,
+                                  p.starts[other].y, p.starts[k].x, p.starts[k].y));
+      }
+      owner = static_cast<int>(k);
+    }
+  }
 }
 
 std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull) {
