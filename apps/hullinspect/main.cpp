@@ -74,6 +74,8 @@ int main(int argc, char** argv) {
   cli::add_tsp_command(app, action);
   cli::add_experiment_commands(app, action);
   cli::add_view_command(app, action);
+  cli::add_export_command(app, action);
+  cli::add_plan_command(app, action);
   cli::require_exact_numbers(app);
   try {
     app.parse(argc, argv);

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
@@ -24,6 +25,7 @@ struct RunArgs {
   bool json = false;
   std::string trace_path;
   std::string html_path;
+  ExportArgs output;  // --export DIR --format F (docs/export.md)
 };
 
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
@@ -54,12 +56,13 @@ int run(const RunArgs& args) {
   outputs.add_output(args.trace_path, "trace");
   outputs.add_output(args.html_path, "html");
   outputs.check();
+  const auto export_request = resolve_export(args.output, "--export");
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
   const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
-  const bool tracing = !args.trace_path.empty() || !args.html_path.empty();
+  const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;
   planners::MissionOptions options;
   if (tracing) {
@@ -72,6 +75,8 @@ int run(const RunArgs& args) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
     if (!args.html_path.empty()) outputs.write(args.html_path, io::viewer_html(trace));
+    // The export commits its own files (all or none); the trace and HTML follow it.
+    if (export_request) write_export(trace, *export_request, {args.mission.hull});
     outputs.commit();
   }
   if (args.json) {
@@ -100,6 +105,7 @@ void add_run_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--html", args->html_path,
                   "Write a self-contained HTML replay of the mission to FILE")
       ->type_name("FILE");
+  add_export_options(*cmd, args->output, "--export");
   cmd->callback([args, &action] { action = [args] { return run(*args); }; });
 }
 
