@@ -58,7 +58,7 @@ namespace {
     throw NumberError(fmt::format("must be a finite number of magnitude at most 1e15 (got '{}')",
                                   escape_for_message(shown)));
   }
-  throw NumberError(fmt::format("must be a finite number in [{:g}, {:g}] (got '{}')", min, max,
+  throw NumberError(fmt::format("must be a number in [{:g}, {:g}] (got '{}')", min, max,
                                 escape_for_message(shown)));
 }
 }  // namespace

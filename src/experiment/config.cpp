@@ -10,6 +10,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 #include "yaml_fields.hpp"
 
 namespace hullinspect::experiment {
@@ -218,6 +219,9 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   }
   return c;
 }
+
+// An experiment config larger than this is refused before it is read whole.
+constexpr std::size_t kMaxConfigBytes = std::size_t{16} << 20;
 
 ExperimentConfig load_config(const std::filesystem::path& path) {
   const std::string text = io::read_file(path, kMaxConfigBytes);

@@ -10,6 +10,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/build_data.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 #include "hullinspect/io/json_document.hpp"
 #include "hullinspect/version.hpp"
 

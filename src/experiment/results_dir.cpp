@@ -7,7 +7,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/journal.hpp"
-#include "hullinspect/experiment/run_record.hpp"
+#include "hullinspect/experiment/run_row_check.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 
 namespace hullinspect::experiment {

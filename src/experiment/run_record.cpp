@@ -4,6 +4,7 @@
 
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/experiment/csv.hpp"
+#include "hullinspect/experiment/run_row_check.hpp"
 
 namespace hullinspect::experiment {
 

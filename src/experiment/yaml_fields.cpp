@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "hullinspect/core/errors.hpp"
@@ -60,32 +61,44 @@ void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
 }
 
 int YamlFields::as_int(const YAML::Node& node, std::string_view key, int min, int max) const {
-  if (!node.IsScalar()) fail(node, key, fmt::format("must be an integer (got {})", shown(node)));
+  long long value = 0;
   try {
-    return parse_integer<int>(node.Scalar(), min, max);
-  } catch (const NumberError& e) {
-    fail(node, key, e.what());
+    if (!node.IsScalar()) throw NumberError("not a scalar");
+    value = parse_integer<long long>(node.Scalar());
+  } catch (const NumberError&) {
+    fail(node, key, fmt::format("must be an integer (got {})", shown(node)));
   }
+  if (value < min || value > max) {
+    fail(node, key, fmt::format("must be an integer in [{}, {}] (got {})", min, max, value));
+  }
+  return static_cast<int>(value);
 }
 
 std::uint64_t YamlFields::as_seed(const YAML::Node& node, std::string_view key) const {
-  if (!node.IsScalar())
-    fail(node, key, fmt::format("must be an integer seed (got {})", shown(node)));
   try {
+    if (!node.IsScalar()) throw NumberError("not a scalar");
     return parse_integer<std::uint64_t>(node.Scalar());
-  } catch (const NumberError& e) {
-    fail(node, key, e.what());
+  } catch (const NumberError&) {
+    fail(node, key,
+         fmt::format("must be a non-negative integer seed below 2^64 (got {})", shown(node)));
   }
 }
 
 double YamlFields::as_number(const YAML::Node& node, std::string_view key, double min,
                              double max) const {
-  if (!node.IsScalar()) fail(node, key, fmt::format("must be a number (got {})", shown(node)));
+  double value = 0;
   try {
-    return parse_real(node.Scalar(), min, max);
-  } catch (const NumberError& e) {
-    fail(node, key, e.what());
+    if (!node.IsScalar()) throw NumberError("not a scalar");
+    value = parse_real(node.Scalar(), -std::numeric_limits<double>::max(),
+                       std::numeric_limits<double>::max());
+  } catch (const NumberError&) {
+    fail(node, key, fmt::format("must be a number (got {})", shown(node)));
   }
+  if (value < min || value > max) {
+    fail(node, key, fmt::format("must be a number in [{}, {}] (got {})", min, max,
+                                escape_for_message(node.Scalar())));
+  }
+  return value;
 }
 
 std::string YamlFields::as_string(const YAML::Node& node, std::string_view key) const {

@@ -1,4 +1,5 @@
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -54,10 +55,13 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   }
 }
 
-std::string read_file(const std::filesystem::path& path, std::size_t limit) {
+std::string read_file(const std::filesystem::path& path, std::size_t limit, const char* what) {
   const std::string name = path.string();
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw InputError(name, 0, fmt::format("cannot open: {}", std::strerror(errno)));
+  if (fd < 0) {
+    if (errno == ENOENT) throw InputError(name, 0, fmt::format("cannot open {}", what));
+    throw InputError(name, 0, fmt::format("cannot open {}: {}", what, std::strerror(errno)));
+  }
   struct stat st {};
   if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
     ::close(fd);
@@ -88,6 +92,10 @@ std::string read_file(const std::filesystem::path& path, std::size_t limit) {
   }
   ::close(fd);
   return bytes;
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  return read_file(path, kDefaultInputLimit);
 }
 
 }  // namespace hullinspect::io

@@ -54,10 +54,21 @@ class PathTrackingSax {
   bool parse_error(std::size_t position, const std::string& /*token*/,
                    const nlohmann::detail::exception& e) {
     position_ = position;
+    // A number no double holds (out_of_range.406) is a field's problem; a syntax error is a
+    // position's, shown as FILE:LINE only.
+    number_error_ = e.id == 406;
     problem_ = e.what();
+    // "[json.exception.parse_error.101] parse error at line 3, column 1: syntax error ...": the
+    // line is reported as FILE:LINE, so keep only what went wrong.
     if (auto close = problem_.find("] "); close != std::string::npos) {
       problem_ = problem_.substr(close + 2);
     }
+    if (problem_.starts_with("parse error")) {
+      if (auto colon = problem_.find(": "); colon != std::string::npos) {
+        problem_ = problem_.substr(colon + 2);
+      }
+    }
+    std::replace(problem_.begin(), problem_.end(), '\n', ' ');
     return false;
   }
 
@@ -77,6 +88,7 @@ class PathTrackingSax {
   }
   std::size_t position() const { return position_; }
   const std::string& problem() const { return problem_; }
+  bool number_error() const { return number_error_; }
 
  private:
   struct Frame {
@@ -91,6 +103,7 @@ class PathTrackingSax {
   nlohmann::detail::json_sax_dom_parser<json> dom_;
   std::vector<Frame> frames_;
   std::size_t position_ = 0;
+  bool number_error_ = false;
   std::string problem_;
 };
 
@@ -109,9 +122,9 @@ json parse_json_document(std::string_view text, const std::string& source, std::
     const auto end = std::min(sax.position(), text.size());
     const int line = 1 + static_cast<int>(std::count(
                              text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
-    const std::string field = sax.path();
+    const std::string field = sax.number_error() ? sax.path() : std::string();
     throw InputError(source, line,
-                     fmt::format("not {}: {}{}", what, escape_for_message(sax.problem(), 200),
+                     fmt::format("not {}: {}{}", what, escape_for_message(sax.problem(), 400),
                                  field.empty() ? "" : " (in " + field + ")"));
   }
   return result;

@@ -11,6 +11,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 #include "hullinspect/io/json_document.hpp"
 
 namespace hullinspect::io {
@@ -244,6 +245,9 @@ void validate_trace(const json& trace, const std::string& source) {
                   std::numeric_limits<std::int64_t>::max());
   }
 }
+
+// A trace file larger than this is refused before it is read whole.
+constexpr std::size_t kMaxTraceBytes = std::size_t{1} << 30;
 
 json read_trace(const std::filesystem::path& path) {
   const std::string text = read_file(path, kMaxTraceBytes);

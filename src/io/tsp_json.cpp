@@ -5,6 +5,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 #include "hullinspect/io/json_document.hpp"
 
 namespace hullinspect::io {
@@ -40,7 +41,7 @@ grid::Cell parse_cell(const json& value, const std::string& where, const std::st
 }  // namespace
 
 tsp::SegmentTsp parse_tsp_instance(std::string_view text, const std::string& source) {
-  const json document = parse_json_document(text, source, "a JSON TSP instance");
+  const json document = parse_json_document(text, source, "valid JSON");
   if (!document.is_object()) {
     throw InputError(source, 0, R"(expected a JSON object {"start": [x, y], "segments": [...]})");
   }
@@ -73,6 +74,9 @@ tsp::SegmentTsp parse_tsp_instance(std::string_view text, const std::string& sou
   }
   return problem;
 }
+
+// An instance file larger than this is refused before it is read whole.
+constexpr std::size_t kMaxTspInstanceBytes = std::size_t{64} << 20;
 
 tsp::SegmentTsp read_tsp_instance(const std::filesystem::path& path) {
   return parse_tsp_instance(read_file(path, kMaxTspInstanceBytes), path.string());

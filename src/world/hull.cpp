@@ -9,13 +9,19 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/grid/distance.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 
 namespace hullinspect::world {
 
 namespace detail {
 extern const std::string_view kDefaultHullText;
 }
+
+namespace {
+// A hull file larger than this is refused before it is read whole (a 4096 × 4096 P5 image with
+// 16-bit pixels is 32 MiB; a text mask 16 MiB plus comments).
+constexpr std::size_t kMaxHullFileBytes = std::size_t{64} << 20;
+}  // namespace
 
 HullMask::HullMask(grid::Grid<std::uint8_t> is_hull, std::string source)
     : mask_(std::move(is_hull)), source_(std::move(source)) {
@@ -235,7 +241,7 @@ const HullMask& default_hull() {
 HullMask load_hull(const std::filesystem::path& path) {
   if (path == "default" || path == "builtin:default") return default_hull();
   const std::string name = path.string();
-  const std::string bytes = io::read_file(path, kMaxHullFileBytes);
+  const std::string bytes = io::read_file(path, kMaxHullFileBytes, "the hull file");
   if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '0' && bytes[1] <= '9') {
     return parse_pgm_mask(bytes, name);
   }

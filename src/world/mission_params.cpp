@@ -12,6 +12,11 @@
 
 namespace hullinspect::world {
 
+namespace {
+// The longest plane change (steps between z = 1 and z = 2) validate() accepts.
+constexpr int kMaxPlaneChangeSteps = 1000;
+}  // namespace
+
 double MissionParams::delta_zeta_cells() const {
   return (s2 - s1) / (2.0 * std::tan(theta_deg * std::numbers::pi / 360.0));
 }

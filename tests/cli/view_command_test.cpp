@@ -97,8 +97,8 @@ TEST(ViewCommand, RefusesToOverwriteTheTrace) {
   const std::string before = slurp(trace);
   const auto r = run_cli({"view", trace});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + trace +
-                       ": the output would overwrite the trace; choose --out FILE\n");
+  EXPECT_EQ(r.err, "hullinspect: --out: '" + trace + "' is the same file as the trace '" + trace +
+                       "'; it would be overwritten\n");
   EXPECT_EQ(slurp(trace), before);
   fs::remove_all(dir);
 }

@@ -15,6 +15,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 #include "support/cli_runner.hpp"
 
 namespace hullinspect::io {

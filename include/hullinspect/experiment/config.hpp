@@ -1,7 +1,7 @@
 #pragma once
-// Experiment configs (docs/experiments.md): a YAML file naming the hull, the corrosion scenarios
-// and sweeps, the parameter lists (s2, fleet sizes), the algorithms with their options, the
-// instances and the curve time grid. Every list is one axis of a cartesian product.
+// Experiment configs (docs/experiments.md): a YAML file naming the hull, the corrosion scenarios and
+// sweeps, the parameter lists (s2, fleet sizes), the algorithms with their options, the instances
+// and the curve time grid. Every list is one axis of a cartesian product.
 
 #include <nlohmann/json.hpp>
 
@@ -19,16 +19,13 @@
 
 namespace hullinspect::experiment {
 
-/// An experiment config larger than this is refused before it is read whole.
-inline constexpr std::size_t kMaxConfigBytes = std::size_t{16} << 20;
-
 /// One corrosion scenario: a built-in one (SPEC §6), a custom one, or one point of a sweep.
 struct ScenarioSpec {
   std::string name;
   std::string sweep;        ///< the sweep it belongs to; empty for plain scenarios
   std::string sweep_value;  ///< the swept value as text ("0.8", "0.01/0.0025" for front/back)
   world::CorrosionParams corrosion;
-  int line = 0;  ///< config line that declared it (for error messages)
+  int line = 0;             ///< config line that declared it (for error messages)
 };
 
 /// One entry of the algorithm list.

@@ -6,7 +6,6 @@
 //   timings.csv — wall-clock and planner CPU times (the only values that vary between runs).
 
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "hullinspect/experiment/plan.hpp"
@@ -27,18 +26,7 @@ std::vector<std::string> timings_header();
 /// The value of a series at time t; a mission that ended before t holds its final value.
 int value_at(const std::vector<int>& series, int t);
 
-/// The parameter fields of a runs.csv row (run_id … seed): fixed by the plan for each run.
-std::vector<std::string> run_parameter_fields(const ExperimentPlan& plan, const RunKey& run);
-
-/// The largest counter a stored row may hold.
-inline constexpr long long kMaxStoredCount = 1'000'000'000'000LL;
-
-/// Why a stored runs.csv line cannot be the record of `run` of `plan` (a parameter differs from
-/// the plan's, or an outcome is not a non-negative integer), or empty when it can. Resume and merge
-/// both check every row with it, so a hand-edited row (p_tp = 9) is refused, never copied.
-std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::string_view line);
-
-RunRecord make_record(const ExperimentPlan& plan, const RunKey& run,
-                      const sim::MissionResult& result, double wall_seconds);
+RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::MissionResult& result,
+                      double wall_seconds);
 
 }  // namespace hullinspect::experiment

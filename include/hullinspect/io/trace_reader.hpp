@@ -9,9 +9,6 @@
 
 namespace hullinspect::io {
 
-/// A trace file larger than this is refused before it is read whole.
-inline constexpr std::size_t kMaxTraceBytes = std::size_t{1} << 30;
-
 /// The trace format this build writes and reads.
 inline constexpr const char* kTraceFormat = "hullinspect-trace";
 inline constexpr int kTraceVersion = 1;

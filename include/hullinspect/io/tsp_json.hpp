@@ -16,8 +16,6 @@ namespace hullinspect::io {
 
 /// Coordinates of an instance must lie within ±kTspCoordinateLimit.
 inline constexpr int kTspCoordinateLimit = 1'000'000;
-/// An instance file larger than this is refused before it is read whole.
-inline constexpr std::size_t kMaxTspInstanceBytes = std::size_t{64} << 20;
 
 /// Parses an instance; every error is an InputError naming `source` and the offending field, e.g.
 /// "segments[3][1]: expected [x, y] integers".

@@ -13,9 +13,6 @@ namespace hullinspect::world {
 
 /// Largest accepted grid side; larger masks are rejected as absurd.
 inline constexpr int kMaxGridSide = 4096;
-/// A hull file larger than this is refused before it is read whole (a 4096 × 4096 P5 image with
-/// 16-bit pixels is 32 MiB; a text mask 16 MiB plus comments).
-inline constexpr std::size_t kMaxHullFileBytes = std::size_t{64} << 20;
 
 class HullMask {
  public:

@@ -12,11 +12,11 @@ std::uint64_t splitmix64(std::uint64_t& state);
 
 /// Well-known stream ids, so that independent uses of one seed never share numbers.
 enum class Stream : std::uint64_t {
-  kTruth = 1,      ///< ground-truth centres and their rectangles
-  kPriorTp = 2,    ///< which ground-truth centres the prior knows
-  kPriorFp = 3,    ///< false-positive prior centres and their rectangles
-  kPartition = 4,  ///< partitioner noise
-  kPlanner = 5,    ///< planner randomness, if any
+  kTruth = 1,        ///< ground-truth centres and their rectangles
+  kPriorTp = 2,      ///< which ground-truth centres the prior knows
+  kPriorFp = 3,      ///< false-positive prior centres and their rectangles
+  kPartition = 4,    ///< partitioner noise
+  kPlanner = 5,      ///< planner randomness, if any
 };
 
 /// xoshiro256** generator for one (seed, stream) pair.
@@ -25,11 +25,6 @@ class RandomStream {
   RandomStream(std::uint64_t seed, std::uint64_t stream);
   RandomStream(std::uint64_t seed, Stream stream)
       : RandomStream(seed, static_cast<std::uint64_t>(stream)) {}
-
-  /// A generator with the given raw xoshiro256** state (not all zero), for known-answer tests
-  /// against the reference algorithm's published outputs.
-  static RandomStream from_state(std::uint64_t s0, std::uint64_t s1, std::uint64_t s2,
-                                 std::uint64_t s3);
 
   std::uint64_t next();
   /// Uniform in [0, 1) with 53 random bits.
@@ -42,8 +37,7 @@ class RandomStream {
   bool bernoulli(double p) { return uniform01() < p; }
 
  private:
-  RandomStream() = default;
-  std::uint64_t s_[4] = {0, 0, 0, 0};
+  std::uint64_t s_[4];
 };
 
 }  // namespace hullinspect::world
