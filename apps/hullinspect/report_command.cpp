@@ -16,6 +16,7 @@
 #include "hullinspect/experiment/results_dir.hpp"
 #include "hullinspect/experiment/summary.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 #include "hullinspect/io/output_set.hpp"
 #include "subprocess.hpp"
 
@@ -143,7 +144,7 @@ int run(const ReportArgs& a) {
     }
   }
   const auto runs_path = (results / experiment::kRunsFile).string();
-  const auto runs = experiment::parse_csv(io::read_file(runs_path), runs_path);
+  const auto runs = experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
   const auto rows = experiment::summarize_runs(runs, runs_path);
   if (manifest.value("shard", "1/1") != "1/1") {
     std::cerr << fmt::format(
