@@ -29,6 +29,7 @@ const char* kind(const struct stat& st) {
   if (S_ISBLK(st.st_mode)) return "a block device";
   if (S_ISFIFO(st.st_mode)) return "a FIFO";
   if (S_ISSOCK(st.st_mode)) return "a socket";
+  if (S_ISREG(st.st_mode)) return "a regular file";
   return "not a regular file";
 }
 
