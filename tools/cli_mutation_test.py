@@ -86,6 +86,7 @@ def main():
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--out", default="build/mutation")
     args = parser.parse_args()
+    args.cli = os.path.abspath(args.cli)
     rng = random.Random(args.seed)
     seeds = []
     for fmt in sorted(os.listdir(args.seeds)):
