@@ -10,14 +10,7 @@
 
 namespace hullinspect::cli {
 
-std::string option_name(const std::string& parameter) {
-  std::string name = parameter;
-  if (auto dot = name.rfind('.'); dot != std::string::npos) name = name.substr(dot + 1);
-  for (char& c : name) {
-    if (c == '_') c = '-';
-  }
-  return "--" + name;
-}
+std::string option_name(const std::string& parameter) { return hullinspect::option_name(parameter); }
 
 }  // namespace hullinspect::cli
 
@@ -32,6 +25,7 @@ int main(int argc, char** argv) {
   cli::add_tsp_command(app, action);
   cli::add_experiment_commands(app, action);
   cli::add_view_command(app, action);
+  cli::add_list_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -58,7 +52,7 @@ int main(int argc, char** argv) {
   try {
     return action ? action() : 0;
   } catch (const ParameterError& e) {
-    std::cerr << "hullinspect: " << cli::option_name(e.name()) << ": " << e.problem() << "\n";
+    std::cerr << "hullinspect: " << user_message(e) << "\n";
     return cli::kExitBadInput;
   } catch (const InputError& e) {
     std::cerr << "hullinspect: " << e.what() << "\n";

@@ -199,7 +199,15 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
   auto args = std::make_shared<PartitionArgs>();
   CLI::App* cmd =
       app.add_subcommand("partition", "Divide the hull among the UAVs and report the regions");
+  std::string partitioners;
+  std::string names;
+  for (const auto& info : partition::partitioner_registry()) {
+    partitioners += fmt::format("  {}: {}\n{}", info.name, info.description,
+                                describe_params(info.options, "    "));
+    names += (names.empty() ? "" : ", ") + info.name;
+  }
   cmd->footer(
+      "Partitioners and their options (-O KEY=VALUE):\n" + partitioners +
       "Exit status: 0 converged, 3 not converged (the best connected partition found is still "
       "reported and written), 2 invalid input, 1 other failure.\n"
       "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
@@ -213,11 +221,11 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
                   "hull); cells off the hull are snapped to the nearest hull cell")
       ->type_name("X,Y");
   cmd->add_option("--seed", args->seed, "Partitioner seed")->capture_default_str();
-  cmd->add_option("--partitioner", args->partitioner, "Partitioner: darp, stripes")
+  cmd->add_option("--partitioner", args->partitioner, "Partitioner: " + names)
       ->capture_default_str();
   cmd->add_option("--option,-O", args->options,
-                  "Partitioner option as key=value, e.g. iteration-limit=500 (repeatable; see "
-                  "docs/partition.md)")
+                  "Partitioner option as key=value, e.g. iteration-limit=500 (repeatable; listed "
+                  "below)")
       ->type_name("KEY=VALUE");
   cmd->add_flag("--json", args->json,
                 "Print one JSON object (partitioner, hull, hull_cells, uavs, seed, iterations, "

@@ -6,7 +6,7 @@
 #include <optional>
 #include <set>
 
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 
 namespace hullinspect::experiment::detail {
 
@@ -44,7 +44,7 @@ struct Draft {
 
 std::string builtin_names() {
   std::string names;
-  for (const auto& s : planners::scenarios()) names += (names.empty() ? "" : ", ") + s.name;
+  for (const auto& s : world::scenarios().names()) names += (names.empty() ? "" : ", ") + s;
   return names;
 }
 
@@ -155,8 +155,8 @@ class ScenarioParser {
 
  private:
   Draft builtin(const YAML::Node& node, const std::string& key, const std::string& name) const {
-    for (const auto& s : planners::scenarios()) {
-      if (s.name == name) return Draft{s.corrosion(width_), width_};
+    if (world::scenarios().contains(name)) {
+      return Draft{world::scenario(name).corrosion(width_), width_};
     }
     f_.fail(node, key, fmt::format("unknown scenario '{}' (built in: {}; or give a map with 'name' "
                                    "and parameters)",
@@ -166,8 +166,8 @@ class ScenarioParser {
   Draft base(const YAML::Node& node, const std::string& key) const {
     const std::string name = f_.as_string(node, key);
     if (auto it = drafts_.find(name); it != drafts_.end()) return it->second;
-    for (const auto& s : planners::scenarios()) {
-      if (s.name == name) return Draft{s.corrosion(width_), width_};
+    if (world::scenarios().contains(name)) {
+      return Draft{world::scenario(name).corrosion(width_), width_};
     }
     f_.fail(node, key, fmt::format("unknown base scenario '{}' (built in: {}; or a scenario listed "
                                    "earlier under 'scenarios')",
@@ -259,8 +259,7 @@ std::vector<ScenarioSpec> parse_scenarios(const YamlFields& fields, const YAML::
   }
   auto specs = parser.take();
   if (specs.empty()) {
-    const auto& perfect = planners::scenario("perfect");
-    specs.push_back(ScenarioSpec{perfect.name, "", "", perfect.corrosion(grid_width), 0});
+    specs.push_back(ScenarioSpec{"perfect", "", "", world::scenario("perfect").corrosion(grid_width), 0});
   }
   return specs;
 }

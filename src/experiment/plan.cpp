@@ -4,6 +4,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
+#include "hullinspect/planners/planner.hpp"
 
 namespace hullinspect::experiment {
 
@@ -31,6 +32,17 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
 }  // namespace
 
 ExperimentPlan::ExperimentPlan(ExperimentConfig config) : config_(std::move(config)) {
+  if (config_.hull) {
+    // Every algorithm's effective options (defaults included) define its cells, the manifest and
+    // runs.csv, so an option spelled out at its default names the same experiment as one left out.
+    for (auto& a : config_.algorithms) {
+      try {
+        a.options = planners::resolve_planner_options(a.planner, a.options);
+      } catch (const ParameterError& e) {
+        throw InputError(config_.source, a.line, e.what());
+      }
+    }
+  }
   const auto& c = config_;
   for (int sc = 0; sc < static_cast<int>(c.scenarios.size()); ++sc) {
     for (int s2 = 0; s2 < static_cast<int>(c.s2.size()); ++s2) {

@@ -10,7 +10,7 @@
 #include "coop_frontier_fixtures.hpp"
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/mission.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 
 namespace hullinspect::planners {
@@ -33,7 +33,7 @@ class CoopFrontierMatrix : public ::testing::TestWithParam<MatrixCell> {};
 
 TEST_P(CoopFrontierMatrix, EveryMissionCompletesUnderTheChecker) {
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario(GetParam().scenario).corrosion(hull.width());
+  const auto corrosion = world::scenario(GetParam().scenario).corrosion(hull.width());
   for (int n = 1; n <= 8; ++n) {
     for (int seed = 1; seed <= kSeedsPerCell; ++seed) {
       const auto instance =
@@ -94,7 +94,7 @@ class FailureWatcher final : public MissionObserver {
 TEST(CoopFrontierMission, OthersCompleteWhenUavsFailMidMission) {
   const auto& hull = world::default_hull();
   for (const char* name : {"perfect", "combined"}) {
-    const auto corrosion = scenario(name).corrosion(hull.width());
+    const auto corrosion = world::scenario(name).corrosion(hull.width());
     for (int seed = 1; seed <= 5; ++seed) {
       for (const auto& failures : std::vector<std::vector<UavFailure>>{
                {{1, 40}}, {{0, 1}}, {{3, 120}}, {{0, 30}, {2, 60}}}) {
@@ -154,7 +154,7 @@ TEST(CoopFrontierMission, ActionsDoNotDependOnUnseenTruth) {
   // Same prior, different truth: B has extra corrosion far from the start cells. The two missions
   // must decide identically until some UAV's readings differ.
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario("imperfect").corrosion(hull.width());
+  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
   for (int seed = 1; seed <= 3; ++seed) {
     const auto a = world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
     auto b = a;
@@ -196,7 +196,7 @@ TEST(CoopFrontierMission, ActionsDoNotDependOnUnseenTruth) {
 
 TEST(CoopFrontierMission, IdenticalRunsGiveIdenticalResults) {
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario("combined").corrosion(hull.width());
+  const auto corrosion = world::scenario("combined").corrosion(hull.width());
   const auto instance = world::generate_instance(hull, corrosion, 11);
   world::MissionParams params;
   params.uavs = 6;
@@ -222,7 +222,7 @@ TEST(CoopFrontierMission, StateMatchesItsDefinitionsAtEveryDecision) {
   const auto& hull = world::default_hull();
   for (const char* name : {"imperfect", "combined"}) {
     const auto instance =
-        world::generate_instance(hull, scenario(name).corrosion(hull.width()), 21);
+        world::generate_instance(hull, world::scenario(name).corrosion(hull.width()), 21);
     world::MissionParams params;
     params.uavs = 5;
     params.s2 = 11;

@@ -12,7 +12,7 @@
 #include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/partition_cache.hpp"
 #include "hullinspect/planners/planner.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 
 namespace hullinspect::testing {
@@ -101,7 +101,7 @@ std::unique_ptr<planners::Planner> make_registered(bool use_prior, OptionMap opt
 TEST_P(PartTspMissions, EveryMissionCompletes) {
   const auto& [scenario_name, s2] = GetParam();
   const auto& hull = world::default_hull();
-  const auto& scenario = planners::scenario(scenario_name);
+  const auto scenario = world::scenario(scenario_name);
   const auto corrosion = scenario.corrosion(hull.width());
   constexpr int kSeeds = kSanitized ? 3 : 20;
   for (int n = 1; n <= 8; ++n) {
@@ -124,8 +124,8 @@ TEST_P(PartTspMissions, EveryMissionCompletes) {
 // The refinements beyond the paper (off by default) must keep every mission complete too.
 TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
   const auto& hull = world::default_hull();
-  for (const auto& scenario : planners::scenarios()) {
-    const auto corrosion = scenario.corrosion(hull.width());
+  for (const auto& scenario : world::scenarios().names()) {
+    const auto corrosion = world::scenario(scenario).corrosion(hull.width());
     for (int s2 : {7, 11}) {
       for (int n : {1, 6}) {
         world::MissionParams params;
@@ -142,7 +142,7 @@ TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
                                                          {"skip-resolved", skip ? "true" : "false"},
                                                          {"trim-ends", trim ? "true" : "false"}});
               ASSERT_TRUE(completes(instance, params, *planner))
-                  << fmt::format("{} s2={} n={} seed={} prior={} skip={} trim={}", scenario.name,
+                  << fmt::format("{} s2={} n={} seed={} prior={} skip={} trim={}", scenario,
                                  s2, n, seed, use_prior, skip, trim);
             }
           }
@@ -156,7 +156,7 @@ TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
 TEST(PartTspExactMissions, EveryMissionCompletes) {
   const auto& hull = world::default_hull();
   for (const char* scenario_name : {"perfect", "imperfect"}) {
-    const auto corrosion = planners::scenario(scenario_name).corrosion(hull.width());
+    const auto corrosion = world::scenario(scenario_name).corrosion(hull.width());
     for (int s2 : {7, 11}) {
       for (int n : {4, 8}) {
         world::MissionParams params;
@@ -179,7 +179,7 @@ TEST(PartTspExactMissions, EveryMissionCompletes) {
 
 std::vector<Cell> all_cells() {
   std::vector<Cell> cells;
-  for (const auto& s : planners::scenarios()) {
+  for (const auto& s : world::scenarios().entries()) {
     for (int s2 : {7, 9, 11}) cells.push_back({s.name, s2});
   }
   return cells;

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "hullinspect/core/options.hpp"
+#include "hullinspect/core/parameters.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 
 namespace hullinspect::partition {
@@ -41,8 +41,9 @@ struct DarpOptions {
   bool repair_fallback = true;
 };
 
-/// Names and defaults of the options as the registry reads them ("iteration-limit", "cc", …).
-std::vector<OptionSpec> darp_option_specs();
+/// The declared options ("iteration-limit", "cc", …; defaults from DarpOptions{}).
+const Params<DarpOptions>& darp_params();
+std::vector<ParamSpec> darp_option_specs();
 /// Reads DarpOptions from named options; throws ParameterError("darp.<key>", …) out of range or for
 /// an unknown key.
 DarpOptions read_darp_options(const OptionMap& options);

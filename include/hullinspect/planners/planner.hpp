@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/core/registry.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/sim/mission_result.hpp"
@@ -70,16 +71,24 @@ class Planner {
   virtual void annotate(AnnotationSink& /*sink*/) const {}
 };
 
-struct PlannerInfo {
-  std::string name;
-  std::string description;
-  std::vector<OptionSpec> options;
-  std::unique_ptr<Planner> (*make)(const OptionMap& options);
-};
+using PlannerInfo = RegistryEntry<Planner>;
+using PlannerRegistry = Registry<Planner>;
 
-/// Every planner by name.
-std::span<const PlannerInfo> planner_registry();
+/// Every planner by name. Add your own (docs/user-planners.md) with
+/// `static const planners::PlannerRegistration reg(make_entry<Planner, MyOptions>(…));`
+/// or planners().add(…) before use.
+PlannerRegistry& planners();
+/// A snapshot of planners().entries().
+std::vector<PlannerInfo> planner_registry();
 /// Throws ParameterError("algorithm", …) for an unknown name, or ("<name>.<option>", …).
 std::unique_ptr<Planner> make_planner(std::string_view name, const OptionMap& options = {});
+/// The effective options of a planner: validated, every default filled in, canonical text
+/// (nested groups such as "tsp.<key>" expanded for the chosen solver/partitioner).
+OptionMap resolve_planner_options(std::string_view name, const OptionMap& options = {});
+
+/// Registers a planner at static-initialisation time (one line in the planner's own file).
+struct PlannerRegistration {
+  explicit PlannerRegistration(PlannerInfo entry);
+};
 
 }  // namespace hullinspect::planners

@@ -33,7 +33,9 @@ class ExactSolver final : public TspSolver {
   explicit ExactSolver(ExactOptions options = {});
   ~ExactSolver() override;
   TspSolution solve(const SegmentTsp& problem) override;
-  /// Reads "time_limit", "dp_max_segments", "kicks"; rejects unknown keys.
+  /// The declared options: "time-limit", "dp-max-segments", "kicks".
+  static const Params<ExactOptions>& params();
+  /// Reads the declared options; rejects unknown keys.
   static ExactOptions read_options(const OptionMap& options);
   /// Solves handed to the dfj-iterative reference because the branch-and-cut gave up.
   long long reference_fallbacks() const { return reference_fallbacks_; }
