@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
@@ -27,9 +28,9 @@ struct RunArgs {
 
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
-  std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
-                           spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
-                           r.complete ? "complete" : "INCOMPLETE (time limit reached)");
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
+                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2,
+                           spec.seed, r.complete ? "complete" : "INCOMPLETE (time limit reached)");
   auto time = [](const std::optional<int>& t) { return t ? fmt::format("{} s", *t) : std::string("—"); };
   std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
                            time(r.t_m), r.corroded_cells, r.hull_cells);
