@@ -30,8 +30,7 @@ struct RunArgs {
 
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
-  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}
-", spec.algorithm,
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
                            plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2,
                            spec.seed, r.complete ? "complete" : "INCOMPLETE (time limit reached)");
   auto time = [](const std::optional<int>& t) {
