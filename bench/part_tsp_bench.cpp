@@ -141,7 +141,7 @@ BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact, true, std::string("exact"), Option
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact_dp12, true, std::string("exact"),
-                  OptionMap{{"dp_max_segments", "12"}})
+                  OptionMap{{"dp-max-segments", "12"}})
     ->Arg(4)
     ->Arg(8)
     ->Unit(benchmark::kMillisecond)

@@ -1,7 +1,9 @@
 #include "hullinspect/io/trace_recorder.hpp"
 
 #include <algorithm>
+#include <iterator>
 
+#include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/version.hpp"
 
 namespace hullinspect::io {
@@ -23,7 +25,9 @@ json rows(const grid::Grid<T>& m, F symbol) {
   return out;
 }
 
-char matrix_symbol(std::int8_t v) { return v < 0 ? '.' : static_cast<char>('0' + v); }
+char matrix_symbol(std::int8_t v) {
+  return v < 0 ? '.' : static_cast<char>('0' + v);
+}
 
 json uav_states(const sim::Simulator& sim) {
   json u = json::array();
@@ -39,14 +43,16 @@ json uav_states(const sim::Simulator& sim) {
 
 }  // namespace
 
-TraceRecorder::TraceRecorder(const world::Instance& instance, json parameters) : instance_(instance) {
+TraceRecorder::TraceRecorder(const world::Instance& instance, json parameters)
+    : instance_(instance) {
   trace_["format"] = "hullinspect-trace";
-  trace_["version"] = 1;
+  trace_["version"] = kTraceVersion;
   trace_["generator"] = std::string("hullinspect ") + kVersion;
   trace_["parameters"] = std::move(parameters);
 }
 
-void TraceRecorder::uav(int k, std::string_view mode, grid::Cell target, std::span<const grid::Cell> plan) {
+void TraceRecorder::uav(int k, std::string_view mode, grid::Cell target,
+                        std::span<const grid::Cell> plan) {
   json a;
   a["mode"] = mode;
   a["target"] = target.x < 0 ? json(nullptr) : json::array({target.x, target.y});
@@ -62,22 +68,37 @@ void TraceRecorder::uav(int k, std::string_view mode, grid::Cell target, std::sp
 }
 
 void TraceRecorder::cells(std::string_view layer, std::span<const int> indices) {
-  std::vector<int> sorted(indices.begin(), indices.end());
-  std::sort(sorted.begin(), sorted.end());
+  sorted_.assign(indices.begin(), indices.end());
+  std::sort(sorted_.begin(), sorted_.end());
   auto it = std::find_if(last_layers_.begin(), last_layers_.end(),
-                         [&](const auto& l) { return l.first == layer; });
+                         [&](const LayerState& l) { return l.name == layer; });
   if (it == last_layers_.end()) {
-    last_layers_.emplace_back(std::string(layer), std::vector<int>{});
+    last_layers_.push_back({std::string(layer), {}, -1});
     it = std::prev(last_layers_.end());
   }
-  if (it->second != sorted) {
-    pending_layers_[std::string(layer)] = sorted;
-    it->second = std::move(sorted);
+  if (it->last_full >= 0 && it->cells == sorted_) return;
+  added_.clear();
+  removed_.clear();
+  std::set_difference(sorted_.begin(), sorted_.end(), it->cells.begin(), it->cells.end(),
+                      std::back_inserter(added_));
+  std::set_difference(it->cells.begin(), it->cells.end(), sorted_.begin(), sorted_.end(),
+                      std::back_inserter(removed_));
+  // The whole set on the layer's first appearance, when the last whole set is a keyframe interval
+  // old, or when it is no longer than the change.
+  const bool full = it->last_full < 0 || frame_index_ - it->last_full >= kLayerKeyframeInterval ||
+                    sorted_.size() <= added_.size() + removed_.size();
+  if (full) {
+    pending_layers_[std::string(layer)] = sorted_;
+    it->last_full = frame_index_;
+  } else {
+    pending_layers_[std::string(layer)] = {{"add", added_}, {"remove", removed_}};
   }
+  it->cells.swap(sorted_);
 }
 
 json TraceRecorder::frame(const sim::Simulator& sim, const planners::Planner& planner) {
   json f;
+  frame_index_ = sim.time();
   f["t"] = sim.time();
   f["u"] = uav_states(sim);
   json changes = json::array();
@@ -96,10 +117,13 @@ json TraceRecorder::frame(const sim::Simulator& sim, const planners::Planner& pl
 
 void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner& planner) {
   const auto& hull = sim.hull();
-  trace_["grid"] = {{"width", hull.width()}, {"height", hull.height()},
+  trace_["grid"] = {{"width", hull.width()},
+                    {"height", hull.height()},
                     {"cell_size_m", sim.params().cell_size_m}};
   trace_["plane_change_steps"] = sim.plane_change_steps();
   trace_["footprint"] = {sim.params().s1, sim.params().s2};
+  // The aperture places the planes in metres (stand-off ζ_z, docs/export.md).
+  trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};
   trace_["truth"] = rows(instance_.truth, matrix_symbol);
   trace_["prior"] = rows(instance_.prior, matrix_symbol);
   if (const auto* p = planner.partition()) {

@@ -52,7 +52,7 @@ TEST(TspSolvers, UnknownSolverOrOptionIsAParameterError) {
   } catch (const ParameterError& e) {
     EXPECT_STREQ(e.what(),
                  "exact.timelimit: unknown option (did you mean time-limit?) (known: time-limit, "
-                 "dp-max-segments, kicks)");
+                 "dp-max-segments, kicks, max-segments, work-budget)");
   }
   try {
     make_tsp_solver("exact", {{"dp-max-segments", "17"}});

@@ -1,5 +1,5 @@
 #pragma once
-// The segment TSP of Part-TSP (SPEC §5.3, eqs. 6–12): an open path from the UAV through every
+// The segment TSP of Part-TSP (model.md §5.3, eqs. 6–12): an open path from the UAV through every
 // segment, each segment flown end to end in one of its two directions, Manhattan costs.
 // Solvers (docs/tsp.md): "exact" (default, proves optimality), "dfj-iterative" (the paper's
 // reference on CBC), "heuristic" (fast local search, no optimality claim).
@@ -36,6 +36,12 @@ struct TspSolution {
   std::vector<Visit> order;  ///< every segment exactly once
   long long length = 0;      ///< path length including the segments themselves
   bool optimal = false;      ///< optimality proven
+  /// A proven lower bound on the optimal length (= length when optimal): how far an unproven
+  /// tour can be from the optimum.
+  long long lower_bound = 0;
+  /// The solver's own method gave up (numerical trouble) and the answer is its best tour so far,
+  /// without a proof. Counted per mission (PlannerStats::tsp_fallbacks); tests assert zero.
+  bool fallback = false;
   double seconds = 0;
 };
 
