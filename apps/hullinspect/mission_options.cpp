@@ -47,6 +47,17 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
   cmd.add_option("--r2", a.r2, "Part-TSP: steps after the last inspection before ascending (default 0)");
   cmd.add_option("--alpha", a.alpha, "Coop-Frontier: weight α of the prior term in eq. 13");
   cmd.add_option("--beta", a.beta, "Coop-Frontier: weight β of the distance term in eq. 15");
+  cmd.add_option("--fail", a.fail,
+                 "UAV k fails at the start of step T: it stops, senses nothing (repeatable; "
+                 "docs/beyond.md)")
+      ->type_name("UAV@T");
+  cmd.add_option("--fail-rate", a.fail_rate,
+                 "Probability that a working UAV fails at a step, drawn from the instance seed")
+      ->capture_default_str();
+  cmd.add_option("--fail-one-within", a.fail_one_within,
+                 "One UAV (drawn from the instance seed) fails at a random step below H (0: none)")
+      ->type_name("H")
+      ->capture_default_str();
   cmd.add_option("--option,-O", a.planner_options, "Any other planner option as key=value (repeatable)")
       ->type_name("KEY=VALUE");
 }
@@ -99,6 +110,9 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   put("r2", a.r2);
   put("alpha", a.alpha);
   put("beta", a.beta);
+  for (const auto& f : a.fail) spec.failures.at.push_back(world::parse_uav_failure(f));
+  spec.failures.rate = a.fail_rate;
+  spec.failures.one_within = a.fail_one_within;
   for (const auto& kv : a.planner_options) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) {

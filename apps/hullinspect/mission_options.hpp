@@ -28,6 +28,9 @@ struct MissionArgs {
   int time_limit = 20000;
   std::optional<std::string> partitioner, partition_seed, tsp_solver, r1, r2, alpha, beta;
   std::vector<std::string> planner_options;  // key=value
+  std::vector<std::string> fail;             // UAV@STEP
+  double fail_rate = 0;
+  int fail_one_within = 0;
 };
 
 void add_mission_options(CLI::App& cmd, MissionArgs& args);

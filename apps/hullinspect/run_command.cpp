@@ -29,7 +29,19 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
   const auto total = r.totals();
   std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
                            spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
-                           r.complete ? "complete" : "INCOMPLETE (time limit reached)");
+                           r.complete         ? "complete"
+                           : r.stopped_idle   ? "INCOMPLETE (no working UAV has work left)"
+                           : r.failed_uavs == spec.params.uavs ? "INCOMPLETE (every UAV failed)"
+                                                               : "INCOMPLETE (time limit reached)");
+  if (r.failed_uavs > 0) {
+    std::string which;
+    for (std::size_t k = 0; k < r.uavs.size(); ++k) {
+      if (r.uavs[k].failed_at >= 0) {
+        which += fmt::format("{}UAV {} at t = {}", which.empty() ? "" : ", ", k, r.uavs[k].failed_at);
+      }
+    }
+    std::cout << fmt::format("  failed: {}\n", which);
+  }
   auto time = [](const std::optional<int>& t) { return t ? fmt::format("{} s", *t) : std::string("—"); };
   std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
                            time(r.t_m), r.corroded_cells, r.hull_cells);
@@ -58,6 +70,7 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
+  options.failures = spec.failures;
   const sim::MissionResult result = planners::run_mission(hull, instance, spec.params, *planner, options);
   if (tracing) {
     const auto trace = recorder->finish(result);

@@ -264,12 +264,18 @@ nlohmann::json config_json(const ExperimentConfig& c) {
     for (const auto& z : s.corrosion.zones) {
       zones.push_back({{"x_begin", z.x_begin}, {"x_end", z.x_end}, {"p_c", z.p_c}, {"l_c", z.l_c}});
     }
-    scenarios.push_back({{"name", s.name},
-                         {"sweep", s.sweep},
-                         {"sweep_value", s.sweep_value},
-                         {"zones", zones},
-                         {"p_tp", s.corrosion.p_tp},
-                         {"p_fp", s.corrosion.p_fp}});
+    json scenario = {{"name", s.name},
+                     {"sweep", s.sweep},
+                     {"sweep_value", s.sweep_value},
+                     {"zones", zones},
+                     {"p_tp", s.corrosion.p_tp},
+                     {"p_fp", s.corrosion.p_fp}};
+    if (!s.failures.empty()) {
+      json at = json::array();
+      for (const auto& f : s.failures.at) at.push_back({f.uav, f.time});
+      scenario["failures"] = {{"at", at}, {"rate", s.failures.rate}, {"one_within", s.failures.one_within}};
+    }
+    scenarios.push_back(std::move(scenario));
   }
   j["scenarios"] = scenarios;
   j["s1"] = c.s1;
@@ -312,6 +318,12 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       }
       spec.corrosion.p_tp = s.at("p_tp").get<double>();
       spec.corrosion.p_fp = s.at("p_fp").get<double>();
+      if (s.contains("failures")) {
+        const auto& f = s.at("failures");
+        for (const auto& a : f.at("at")) spec.failures.at.push_back({a.at(0).get<int>(), a.at(1).get<int>()});
+        spec.failures.rate = f.at("rate").get<double>();
+        spec.failures.one_within = f.at("one_within").get<int>();
+      }
       c.scenarios.push_back(std::move(spec));
     }
     c.s1 = j.at("s1").get<int>();

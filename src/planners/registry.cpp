@@ -4,6 +4,7 @@
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/lawnmower_planner.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
+#include "hullinspect/planners/sweep_inspect_planner.hpp"
 #include "hullinspect/planners/planner.hpp"
 
 namespace hullinspect::planners {
@@ -32,10 +33,26 @@ std::unique_ptr<Planner> make_coop_frontier(const OptionMap& options) {
   return std::make_unique<CoopFrontierPlanner>(o);
 }
 
-std::unique_ptr<Planner> make_part_tsp(const OptionMap& options, bool use_prior) {
-  OptionReader reader(options, use_prior ? "part-tsp" : "part-tsp0");
+std::unique_ptr<Planner> make_sweep_inspect(const OptionMap& options) {
+  OptionReader reader(options, "sweep-inspect");
+  SweepInspectOptions o;
+  o.partitioner = reader.get_string("partitioner", o.partitioner);
+  o.partition_seed = static_cast<std::uint64_t>(reader.get_int("partition-seed", 0, 0, 1 << 30));
+  o.help = reader.get_bool("help", o.help);
+  o.inspect_on_the_way = reader.get_bool("inspect-on-the-way", o.inspect_on_the_way);
+  o.radius_factor = reader.get_double("radius-factor", o.radius_factor, 0.0, 1e3);
+  o.prior_weights = reader.get_bool("prior-weights", o.prior_weights);
+  o.prior_first = reader.get_bool("prior-first", o.prior_first);
+  reader.reject_unknown();
+  partition::make_partitioner(o.partitioner);  // fail early on an unknown name
+  return std::make_unique<SweepInspectPlanner>(o);
+}
+
+std::unique_ptr<Planner> make_part_tsp(const OptionMap& options, bool use_prior, bool oracle = false) {
+  OptionReader reader(options, oracle ? "oracle-part-tsp" : use_prior ? "part-tsp" : "part-tsp0");
   PartTspOptions o;
   o.use_prior = use_prior;
+  o.oracle = oracle;
   o.r1 = reader.get_int("r1", o.r1, 0, 1 << 20);
   o.r2 = reader.get_int("r2", o.r2, 0, 1 << 20);
   o.tsp_solver = reader.get_string("tsp-solver", o.tsp_solver);
@@ -59,6 +76,9 @@ std::unique_ptr<Planner> make_part_tsp_with_prior(const OptionMap& options) {
 }
 std::unique_ptr<Planner> make_part_tsp_without_prior(const OptionMap& options) {
   return make_part_tsp(options, false);
+}
+std::unique_ptr<Planner> make_oracle_part_tsp(const OptionMap& options) {
+  return make_part_tsp(options, true, true);
 }
 
 std::vector<OptionSpec> part_tsp_options() {
@@ -104,6 +124,22 @@ const std::vector<PlannerInfo>& registry() {
         {"endgame-stay-low", CoopFrontierOptions{}.endgame_stay_low ? "true" : "false",
          "when no frontier is left, stay at z = 1 and take the next unclaimed corrosion cell"}},
        &make_coop_frontier},
+      {"sweep-inspect",
+       "beyond the paper: sweep the region at z = 2 in strips of s2 rows, inspect detections as "
+       "they come abreast, then help with the nearest unclaimed work anywhere (docs/beyond.md)",
+       {{"partitioner", std::string(partition::kDefaultPartitioner), "partitioner by name"},
+        {"partition-seed", "0", "seed of the partitioner"},
+        {"help", "true", "after its sweep a UAV takes work anywhere (false: only its own region's)"},
+        {"inspect-on-the-way", "true",
+         "descend when a detection is abreast (false: inspect only after the sweep)"},
+        {"radius-factor", "1", "inspect detections within radius-factor * s2 of the descent point"},
+        {"prior-weights", "false", "DARP weighted by the expected work per cell (prior-aware)"},
+        {"prior-first", "true", "first inspect the prior's cells of the region at z = 1, then sweep"}},
+       &make_sweep_inspect},
+      {"oracle-part-tsp",
+       "BOUND, not a planner: Part-TSP whose local maps start from the ground truth C instead of "
+       "the prior (sees the truth; docs/beyond.md)",
+       part_tsp_options(), &make_oracle_part_tsp, true},
   };
   return entries;
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/world/failures.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
 
@@ -25,6 +26,7 @@ struct ScenarioSpec {
   std::string sweep;        ///< the sweep it belongs to; empty for plain scenarios
   std::string sweep_value;  ///< the swept value as text ("0.8", "0.01/0.0025" for front/back)
   world::CorrosionParams corrosion;
+  world::FailurePlan failures;  ///< UAV failures of every mission of the scenario (paired by seed)
   int line = 0;             ///< config line that declared it (for error messages)
 };
 

@@ -17,6 +17,7 @@ struct MissionSpec {
   world::MissionParams params;
   world::CorrosionParams corrosion;  ///< zones empty = one default zone
   std::uint64_t seed = 1;
+  world::FailurePlan failures;  ///< UAV failures (docs/model.md, "Failures")
 };
 
 /// Validates `spec` against `hull` (ParameterError naming the field) — params, corrosion, the
