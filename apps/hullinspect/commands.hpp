@@ -16,6 +16,7 @@ void add_partition_command(CLI::App& app, CommandAction& action);
 void add_tsp_command(CLI::App& app, CommandAction& action);
 void add_experiment_commands(CLI::App& app, CommandAction& action);  // experiment, merge, report
 void add_view_command(CLI::App& app, CommandAction& action);
+void add_hull_command(CLI::App& app, CommandAction& action);  // hull import
 
 /// Exit status for invalid input (bad option values, unreadable or malformed files).
 inline constexpr int kExitBadInput = 2;

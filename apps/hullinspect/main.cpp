@@ -1,7 +1,7 @@
 // hullinspect: plan and simulate multi-UAV two-resolution hull inspection missions.
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <iostream>
 
@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   cli::add_tsp_command(app, action);
   cli::add_experiment_commands(app, action);
   cli::add_view_command(app, action);
+  cli::add_hull_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

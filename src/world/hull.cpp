@@ -8,6 +8,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/mesh_hull.hpp"
 
 namespace hullinspect::world {
 
@@ -43,13 +44,13 @@ HullMask::HullMask(grid::Grid<std::uint8_t> is_hull, std::string source)
     }
     std::string parts;
     for (std::size_t k = 0; k < sizes.size() && k < 5; ++k) {
-      parts += fmt::format("{}{} cells from ({}, {})", k ? "; " : "", sizes[k], first[k].x,
-                           first[k].y);
+      parts +=
+          fmt::format("{}{} cells from ({}, {})", k ? "; " : "", sizes[k], first[k].x, first[k].y);
     }
     if (sizes.size() > 5) parts += "; …";
-    throw InputError(source_, 0,
-                     fmt::format("the hull is not 4-connected: {} components ({})", components,
-                                 parts));
+    throw InputError(
+        source_, 0,
+        fmt::format("the hull is not 4-connected: {} components ({})", components, parts));
   }
 }
 
@@ -98,9 +99,9 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
                                    rows.front().size()));
     }
     if (line.size() > static_cast<std::size_t>(kMaxGridSide)) {
-      throw InputError(source, line_no,
-                       fmt::format("row has {} cells; at most {} are accepted", line.size(),
-                                   kMaxGridSide));
+      throw InputError(
+          source, line_no,
+          fmt::format("row has {} cells; at most {} are accepted", line.size(), kMaxGridSide));
     }
     rows.push_back(std::move(line));
     row_lines.push_back(line_no);
@@ -231,6 +232,7 @@ const HullMask& default_hull() {
 HullMask load_hull(const std::filesystem::path& path) {
   if (path == "default" || path == "builtin:default") return default_hull();
   const std::string name = path.string();
+  if (is_named_mesh_hull(name) || is_mesh_path(path)) return load_any_hull(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name, 0, "cannot open the hull file");
   std::ostringstream buffer;
@@ -240,6 +242,7 @@ HullMask load_hull(const std::filesystem::path& path) {
   if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
     return parse_pgm_mask(bytes, name);
   }
+  if (path.extension() == ".json") return parse_hull_json(bytes, name);
   return parse_text_mask(bytes, name);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Instances (SPEC §2): the ground truth C and the prior C' drawn from corrosion parameters and a seed.
+// Instances (SPEC §2): the ground truth C and the prior C' drawn from corrosion parameters and a
+// seed.
 
 #include <cstdint>
 #include <vector>

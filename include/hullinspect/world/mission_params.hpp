@@ -1,5 +1,6 @@
 #pragma once
-// Mission parameters (SPEC §1): fleet, camera footprints, plane-change time, start cells, time limit.
+// Mission parameters (SPEC §1): fleet, camera footprints, plane-change time, start cells, time
+// limit.
 
 #include <cstdint>
 #include <optional>
@@ -11,15 +12,15 @@
 namespace hullinspect::world {
 
 struct MissionParams {
-  int uavs = 4;                      ///< n, fleet size (>= 1, <= hull cells)
-  int s1 = 5;                        ///< footprint side at z = 1 (close-up), odd, cells
-  int s2 = 7;                        ///< footprint side at z = 2 (detection), odd, > s1, cells
-  double theta_deg = 90.0;           ///< camera aperture θ, degrees, in (0, 180)
-  double cell_size_m = 0.5;          ///< side of one cell in metres (for reports and exports)
-  double plane_speed_cells = 1.0;    ///< standoff change per step, cells per step (> 0)
-  int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
-  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = SPEC §1 default spacing
-  int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
+  int uavs = 4;                    ///< n, fleet size (>= 1, <= hull cells)
+  int s1 = 5;                      ///< footprint side at z = 1 (close-up), odd, cells
+  int s2 = 7;                      ///< footprint side at z = 2 (detection), odd, > s1, cells
+  double theta_deg = 90.0;         ///< camera aperture θ, degrees, in (0, 180)
+  double cell_size_m = 0.5;        ///< side of one cell in metres (for reports and exports)
+  double plane_speed_cells = 1.0;  ///< standoff change per step, cells per step (> 0)
+  int start_z = 2;                 ///< plane every UAV starts on (1 or 2)
+  std::vector<grid::Cell> starts;  ///< explicit start cells; empty = SPEC §1 default spacing
+  int time_limit = 20000;          ///< steps after which an unfinished mission is "incomplete"
 
   /// Δζ = (s2 − s1) / (2·tan(θ/2)), in cells.
   double delta_zeta_cells() const;
