@@ -49,7 +49,8 @@ int run(const RunArgs& args) {
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
-  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   const bool tracing = !args.trace_path.empty() || !args.html_path.empty();
   std::optional<io::TraceRecorder> recorder;

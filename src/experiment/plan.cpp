@@ -82,6 +82,7 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.time_limit = c.time_limit;
   spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
   spec.seed = seed;
+  spec.maps = c.maps;
   return spec;
 }
 

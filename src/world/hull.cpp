@@ -68,7 +68,7 @@ grid::Cell HullMask::snap(grid::Cell c) const {
   return best;
 }
 
-HullMask parse_text_mask(std::string_view text, const std::string& source) {
+grid::Grid<std::uint8_t> parse_text_cells(std::string_view text, const std::string& source) {
   std::vector<std::string> rows;
   std::vector<int> row_lines;
   int line_no = 0;
@@ -118,7 +118,11 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
     const int y = height - 1 - r;  // first text row is the top of the hull
     for (int x = 0; x < width; ++x) mask(x, y) = rows[static_cast<std::size_t>(r)][x] != '.';
   }
-  return HullMask(std::move(mask), source);
+  return mask;
+}
+
+HullMask parse_text_mask(std::string_view text, const std::string& source) {
+  return HullMask(parse_text_cells(text, source), source);
 }
 
 namespace {
@@ -174,7 +178,7 @@ class PgmHeaderReader {
 
 }  // namespace
 
-HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
+grid::Grid<std::uint8_t> parse_pgm_cells(std::string_view bytes, const std::string& source) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
     throw InputError(source, 1, "not a PGM image (expected magic 'P2' or 'P5')");
   }
@@ -221,7 +225,25 @@ HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
       mask(x, y) = 2 * v > maxval;
     }
   }
-  return HullMask(std::move(mask), source);
+  return mask;
+}
+
+HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
+  return HullMask(parse_pgm_cells(bytes, source), source);
+}
+
+grid::Grid<std::uint8_t> load_cell_map(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name, 0, "cannot open the file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  const std::string bytes = buffer.str();
+  if (bytes.size() > 64u * 1024 * 1024) throw InputError(name, 0, "file is larger than 64 MiB");
+  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
+    return parse_pgm_cells(bytes, name);
+  }
+  return parse_text_cells(bytes, name);
 }
 
 const HullMask& default_hull() {
