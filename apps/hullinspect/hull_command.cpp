@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 
 #include "commands.hpp"
@@ -26,14 +27,9 @@ std::string output_path(const std::string& out) {
 }
 
 int import(const HullImportArgs& args) {
-  const world::MeshImportOptions options = mesh_import_options(args.options);
   if (args.out.empty()) throw ParameterError("out", "expects a file name");
   const std::string out = output_path(args.out);
-  const bool named = world::is_named_mesh_hull(args.mesh);
-  world::MeshImport imported =
-      named ? world::import_mesh_file(world::dtc_mesh_path(), world::dtc_options())
-            : world::import_mesh_file(args.mesh, options);
-  for (const std::string& w : imported.warnings) std::cerr << "hullinspect: warning: " << w << "\n";
+  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
   io::write_file_atomic(out, world::to_hull_json(hull));
@@ -44,9 +40,11 @@ int import(const HullImportArgs& args) {
                            hull.cell_count() * g.cell_size * g.cell_size);
   float max_depth = 0;
   for (int i : hull.cells()) max_depth = std::max(max_depth, g.depth[i]);
+  // Rounded before printing so that a tiny negative value does not print as "-0.000".
+  const auto metres = [](double v) { return std::round(v * 1000) / 1000 + 0.0; };
   std::cout << fmt::format(
       "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
-      g.x0, g.z0, g.side_plane_y, max_depth);
+      metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));
   std::cout << fmt::format("  wrote {}\n", out);
   return 0;
 }

@@ -8,6 +8,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/cell_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 
 namespace hullinspect::world {

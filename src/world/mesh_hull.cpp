@@ -83,6 +83,13 @@ MeshImportOptions dtc_options() {
   return o;
 }
 
+MeshImport import_named_mesh_hull(std::string_view name, const MeshImportOptions& options) {
+  if (!is_named_mesh_hull(name)) {
+    throw InputError(std::string(name), 0, "not a named mesh hull (expected dtc)");
+  }
+  return import_named(dtc_mesh_path(), options, std::string(name));
+}
+
 HullMask load_any_hull(const std::filesystem::path& path, const MeshImportOptions& mesh_options,
                        std::vector<std::string>* warnings) {
   const std::string name = path.string();

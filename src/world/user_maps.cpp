@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/world/cell_map.hpp"
 
 namespace hullinspect::world {
 

@@ -65,13 +65,6 @@ HullMask parse_text_mask(std::string_view text, const std::string& source);
 /// Parses a P2 or P5 PGM; pixels with value > maxval/2 are hull; the first image row is y = b-1.
 HullMask parse_pgm_mask(std::string_view bytes, const std::string& source);
 
-/// The cells of a text mask or PGM without the hull checks (any shape, possibly empty): for maps
-/// over a hull such as user corrosion maps. 1 = marked ('X'/'#', or grey > maxval/2).
-grid::Grid<std::uint8_t> parse_text_cells(std::string_view text, const std::string& source);
-grid::Grid<std::uint8_t> parse_pgm_cells(std::string_view bytes, const std::string& source);
-/// Reads a text or PGM cell map file (format by content, like load_hull).
-grid::Grid<std::uint8_t> load_cell_map(const std::filesystem::path& path);
-
 /// Writes the mask in the text format (round-trips through parse_text_mask).
 std::string to_text_mask(const HullMask& hull);
 

@@ -68,6 +68,9 @@ bool is_named_mesh_hull(std::string_view name);
 /// The installed DTC mesh; throws InputError("dtc", …) when the package is not installed.
 std::filesystem::path dtc_mesh_path();
 MeshImportOptions dtc_options();
+/// Imports a named mesh hull with `options` (normally its own, e.g. dtc_options()); the hull's
+/// source is the name, so runs record "dtc" rather than a path.
+MeshImport import_named_mesh_hull(std::string_view name, const MeshImportOptions& options);
 
 /// Loads any hull: a named mesh hull ("dtc"), a mesh file (imported with `mesh_options`), or
 /// anything load_hull accepts. Warnings (keep_largest) are appended to `warnings` when given.
