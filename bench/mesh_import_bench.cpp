@@ -2,7 +2,8 @@
 // scale, 0.5 m cells) read and projected, end to end and by stage; a Wigley hull for machines
 // without openfoam-examples.
 //
-//   build/release/mesh_import_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   build/release/mesh_import_bench --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>
 

@@ -5,8 +5,8 @@
 #include <string_view>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/world/hull_geometry.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/hull_geometry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);

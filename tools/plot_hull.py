@@ -35,8 +35,8 @@ def main():
     depth = np.where(mask > 0, depth, np.nan)
     aspect = max(1.0, (extent[1] - extent[0]) / max(extent[3] - extent[2], 1e-9))
     width = 10
-    fig, axes = plt.subplots(2, 1, figsize=(width, 2 * min(4.0, 1.2 + width / aspect * 1.3) + 0.8),
-                             constrained_layout=True)
+    panel = min(4.0, width / aspect * 0.9 + 1.1)  # inches: the plot plus its title and labels
+    fig, axes = plt.subplots(2, 1, figsize=(width, 2 * panel), constrained_layout=True)
     axes[0].imshow(mask, origin="lower", extent=extent, cmap="Greys", vmin=0, vmax=1.6,
                    interpolation="nearest")
     axes[0].set_title("%s: %d × %d cells of %g m, %d hull cells, %s side"
@@ -44,7 +44,7 @@ def main():
                          int(mask.sum()), h["side"]))
     im = axes[1].imshow(depth, origin="lower", extent=extent, cmap="viridis",
                         interpolation="nearest")
-    axes[1].set_title("depth from the side plane Y = %.2f m (m)" % h["side_plane_y"])
+    axes[1].set_title("depth from the side plane Y = %.2f m (m)" % (round(h["side_plane_y"], 2) + 0.0))
     fig.colorbar(im, ax=axes[1], shrink=0.8)
     for ax in axes:
         ax.set_xlabel("X (m, stern → bow)")

@@ -41,10 +41,10 @@ world::MeshImportOptions mesh_import_options(const MeshArgs& a, world::MeshImpor
 }
 
 world::MeshImport import_mesh_argument(const std::string& mesh, const MeshArgs& args) {
-  world::MeshImport r = world::is_named_mesh_hull(mesh)
-                            ? world::import_named_mesh_hull(
-                                  mesh, mesh_import_options(args, world::dtc_options()))
-                            : world::import_mesh_file(mesh, mesh_import_options(args));
+  world::MeshImport r =
+      world::is_named_mesh_hull(mesh)
+          ? world::import_named_mesh_hull(mesh, mesh_import_options(args, world::dtc_options()))
+          : world::import_mesh_file(mesh, mesh_import_options(args));
   for (const std::string& w : r.warnings) std::cerr << "hullinspect: warning: " << w << "\n";
   return r;
 }

@@ -39,12 +39,18 @@ std::filesystem::path resolved(const std::string& path, const std::filesystem::p
 /// keep-largest: …}` (docs/hulls.md): the mesh imported with those options.
 void read_mesh_hull(const YamlFields& f, const YAML::Node& h, const std::filesystem::path& base_dir,
                     ExperimentConfig& c) {
-  f.expect_map(h, "hull",
-               {"mesh", "side", "cell-size", "scale", "axes", "waterline", "min-coverage",
-                "keep-largest"});
+  f.expect_map(
+      h, "hull",
+      {"mesh", "side", "cell-size", "scale", "axes", "waterline", "min-coverage", "keep-largest"});
   if (!h["mesh"]) f.fail(h, "hull", "a hull map needs 'mesh' (a mesh file or dtc)");
   const std::string mesh = f.as_string(h["mesh"], "hull.mesh");
-  world::MeshImportOptions o;
+  const bool named = world::is_named_mesh_hull(mesh);
+  if (!named && !world::is_mesh_path(mesh)) {
+    f.fail(h["mesh"], "hull.mesh",
+           "expected a mesh file (.stl, .obj, .ply, optionally .gz) or dtc");
+  }
+  // A named hull starts from its own options; the keys given override them.
+  world::MeshImportOptions o = named ? world::dtc_options() : world::MeshImportOptions{};
   try {
     if (h["side"]) o.side = world::parse_hull_side(f.as_string(h["side"], "hull.side"));
     if (h["axes"]) o.axes = world::AxisMap::parse(f.as_string(h["axes"], "hull.axes"));
@@ -59,22 +65,20 @@ void read_mesh_hull(const YamlFields& f, const YAML::Node& h, const std::filesys
   }
   if (h["keep-largest"]) {
     const std::string v = f.as_string(h["keep-largest"], "hull.keep-largest");
-    if (v != "true" && v != "false") f.fail(h["keep-largest"], "hull.keep-largest", "expected true or false");
+    if (v != "true" && v != "false") {
+      f.fail(h["keep-largest"], "hull.keep-largest", "expected true or false");
+    }
     o.keep_largest = v == "true";
   }
-  const bool named = world::is_named_mesh_hull(mesh);
-  if (!named && !world::is_mesh_path(mesh)) {
-    f.fail(h["mesh"], "hull.mesh", "expected a mesh file (.stl, .obj, .ply, optionally .gz) or dtc");
-  }
-  c.hull_spec = fmt::format("mesh:{} side={} cell-size={} scale={} axes={} waterline={} "
-                            "min-coverage={} keep-largest={}",
-                            mesh, world::to_string(o.side), o.cell_size, o.scale,
-                            o.axes.to_string(),
-                            o.waterline ? fmt::format("{}", *o.waterline) : std::string("none"),
-                            o.min_coverage, o.keep_largest);
+  c.hull_spec = fmt::format(
+      "mesh:{} side={} cell-size={} scale={} axes={} waterline={} min-coverage={} "
+      "keep-largest={}",
+      mesh, world::to_string(o.side), o.cell_size, o.scale, o.axes.to_string(),
+      o.waterline ? fmt::format("{}", *o.waterline) : std::string("none"), o.min_coverage,
+      o.keep_largest);
   try {
     c.hull = std::make_shared<const world::HullMask>(
-        named ? world::load_hull(mesh)
+        named ? world::import_named_mesh_hull(mesh, o).hull
               : world::import_mesh_file(resolved(mesh, base_dir), o).hull);
   } catch (const InputError& e) {
     f.fail(h["mesh"], "hull.mesh", e.what());
@@ -148,8 +152,8 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
     }
   }
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
-  c.hull_hash = stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull)
-                                             : world::to_text_mask(*c.hull));
+  c.hull_hash =
+      stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
   if (c.hull->geometry()) c.cell_size = c.hull->geometry()->cell_size;
   c.hull_width = c.hull->width();
   c.hull_height = c.hull->height();

@@ -23,11 +23,13 @@ TEST(HullImport, WritesAHullThatRunAccepts) {
   const std::string stl = wigley_stl(WigleyHull{}).string();
   const auto r = run_cli({"hull", "import", stl, "--out", dir + "/wigley"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out, stl + ": 16000 facets, 16000 facing starboard\n"
-                         "  grid 200 × 16 cells of 0.5 m, 3200 hull cells (800.0 m²)\n"
-                         "  origin X0 = -50.000 m, Z0 = -8.000 m; side plane Y = -0.003 m; depth "
-                         "up to 4.997 m\n"
-                         "  wrote " + dir + "/wigley.json\n");
+  EXPECT_EQ(r.out, stl +
+                       ": 32398 facets, 16000 facing starboard\n"
+                       "  grid 200 × 16 cells of 0.5 m, 3200 hull cells (800.0 m²)\n"
+                       "  origin X0 = -50.000 m, Z0 = -8.000 m; side plane Y = -0.002 m; depth "
+                       "up to 4.992 m\n"
+                       "  wrote " +
+                       dir + "/wigley.json\n");
   ASSERT_TRUE(fs::exists(dir + "/wigley.json"));
   const auto json = nlohmann::json::parse(std::ifstream(dir + "/wigley.json"));
   EXPECT_EQ(json["format"], "hullinspect-hull");
@@ -79,7 +81,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadImport{{"MESH", "--side", "aft"}, "--side: expected port or starboard, got 'aft'"},
         BadImport{{"MESH", "--axes", "x,y"},
                   "--axes: expected a signed permutation of x,y,z like x,-z,y, got 'x,y'"},
-        BadImport{{"MESH", "--cell-size", "0"}, "--cell-size: expected a positive number of metres"},
+        BadImport{{"MESH", "--cell-size", "0"},
+                  "--cell-size: expected a positive number of metres"},
         BadImport{{"MESH", "--scale", "-2"}, "--scale: expected a number > 0"},
         BadImport{{"MESH", "--min-coverage", "1.5"},
                   "--min-coverage: expected a fraction in (0, 1]"},
@@ -123,8 +126,9 @@ TEST(RunUserMaps, ReplaceTheGeneratedPriorAndTruth) {
   write(dir + "/notch.txt", "XXXXX.\nXXXXXX\nXXXXXX\n");
   const auto outside = run_cli({"run", "--hull", dir + "/notch.txt", "--truth", dir + "/hull.txt"});
   EXPECT_EQ(outside.status, 2);
-  EXPECT_EQ(outside.err, "hullinspect: " + dir + "/hull.txt: cell (5, 2) is corroded but not part "
-                         "of the hull\n");
+  EXPECT_EQ(outside.err, "hullinspect: " + dir +
+                             "/hull.txt: cell (5, 2) is corroded but not part "
+                             "of the hull\n");
   fs::remove_all(dir);
 }
 

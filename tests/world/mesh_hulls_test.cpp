@@ -30,11 +30,12 @@ TEST_P(WigleyImport, AreaDepthAndNormalsMatchTheAnalyticHull) {
   o.cell_size = c.cell;
   const HullMask h = import_mesh_file(testing::wigley_stl(w), o).hull;
   const HullGeometry& g = *h.geometry();
-  // The side projection of a Wigley hull is the rectangle L × T.
+  // The side projection of a Wigley hull is the rectangle L × T. The mask differs from it by the
+  // edge cells (at most half a cell per edge); the cases keep that under 1 %.
   const double analytic = w.length * w.draft;
   EXPECT_NEAR(mask_area(h), analytic, 0.01 * analytic);
-  EXPECT_NEAR(g.x0, -w.length / 2, 1e-6);
-  EXPECT_NEAR(g.z0, -w.draft, 1e-6);
+  EXPECT_NEAR(g.x0, -w.length / 2, 1e-4);  // binary STL holds floats
+  EXPECT_NEAR(g.z0, -w.draft, 1e-4);
   int checked = 0;
   for (int i : h.cells()) {
     const grid::Cell cell = h.mask().cell(i);
@@ -61,7 +62,7 @@ INSTANTIATE_TEST_SUITE_P(
     Hulls, WigleyImport,
     ::testing::Values(WigleyCase{WigleyHull{}, 0.5},  // grid-aligned: 200 × 16 cells
                       WigleyCase{WigleyHull{101.3, 12, 8.3, 150, 30, true}, 0.25},
-                      WigleyCase{WigleyHull{60, 8, 5.9, 120, 30, false}, 0.4}));
+                      WigleyCase{WigleyHull{60.2, 8, 6.02, 120, 30, false}, 0.3}));
 
 TEST(WigleyImport, PortSideMirrorsStarboard) {
   const auto stl = testing::wigley_stl(WigleyHull{});

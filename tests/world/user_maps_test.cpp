@@ -72,8 +72,9 @@ TEST_F(UserMapFiles, MismatchesNameTheFileAndCell) {
             outside + ": cell (3, 2) is corroded but not part of the hull");
   const std::string bad = write("bad.txt", "..a.\n....\n....\n");
   EXPECT_EQ(error_of([&] { load_corrosion_map(bad, hull_); }),
-            bad + ":1: unexpected character 'a' in column 3; a text mask uses 'X' or '#' (hull) "
-                  "and '.' (not hull)");
+            bad +
+                ":1: unexpected character 'a' in column 3; a text mask uses 'X' or '#' (hull) "
+                "and '.' (not hull)");
   EXPECT_EQ(error_of([&] { load_corrosion_map(dir_ / "missing.txt", hull_); }),
             (dir_ / "missing.txt").string() + ": cannot open the file");
   // An empty map (no corrosion) is fine.
