@@ -197,7 +197,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
   const std::vector<BadConfig> cases = {
       {"s1: 5\ngrdi: {}\n",
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, s1, "
-       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve)"},
+       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, truth)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
