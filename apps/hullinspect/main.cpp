@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   cli::add_experiment_commands(app, action);
   cli::add_view_command(app, action);
   cli::add_hull_command(app, action);
+  cli::add_export_command(app, action);
+  cli::add_plan_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/result_json.hpp"
@@ -23,6 +24,7 @@ struct RunArgs {
   bool json = false;
   std::string trace_path;
   std::string html_path;
+  ExportArgs output;  // --export DIR --format F (docs/export.md)
 };
 
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
@@ -30,7 +32,9 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
   std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
                            spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
                            r.complete ? "complete" : "INCOMPLETE (time limit reached)");
-  auto time = [](const std::optional<int>& t) { return t ? fmt::format("{} s", *t) : std::string("—"); };
+  auto time = [](const std::optional<int>& t) {
+    return t ? fmt::format("{} s", *t) : std::string("—");
+  };
   std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
                            time(r.t_m), r.corroded_cells, r.hull_cells);
   std::cout << fmt::format(
@@ -46,24 +50,27 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
 }
 
 int run(const RunArgs& args) {
+  const auto export_request = resolve_export(args.output, "--export");
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
   auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
   world::apply(spec.maps, instance);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
-  const bool tracing = !args.trace_path.empty() || !args.html_path.empty();
+  const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;
   planners::MissionOptions options;
   if (tracing) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
-  const sim::MissionResult result = planners::run_mission(hull, instance, spec.params, *planner, options);
+  const sim::MissionResult result =
+      planners::run_mission(hull, instance, spec.params, *planner, options);
   if (tracing) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) io::write_file_atomic(args.trace_path, trace.dump() + "\n");
     if (!args.html_path.empty()) write_viewer_html(trace, args.html_path);
+    if (export_request) write_export(trace, *export_request, {args.mission.hull});
   }
   if (args.json) {
     std::cout << io::result_json(spec, result).dump() << "\n";
@@ -91,6 +98,7 @@ void add_run_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--html", args->html_path,
                   "Write a self-contained HTML replay of the mission to FILE")
       ->type_name("FILE");
+  add_export_options(*cmd, args->output, "--export");
   cmd->callback([args, &action] { action = [args] { return run(*args); }; });
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <limits>
 #include <string_view>
 
@@ -175,6 +176,18 @@ void validate_trace(const json& trace, const std::string& source) {
       static_cast<int>(check.integer(check.field(grid, "grid", "width"), "grid.width", 1, 1 << 15));
   const int height = static_cast<int>(
       check.integer(check.field(grid, "grid", "height"), "grid.height", 1, 1 << 15));
+  const auto& cell_size = check.field(grid, "grid", "cell_size_m");
+  if (!cell_size.is_number() || !(cell_size.get<double>() > 0) ||
+      !std::isfinite(cell_size.get<double>())) {
+    check.fail("grid.cell_size_m", "expected a positive number of metres");
+  }
+  if (auto camera = trace.find("camera"); camera != trace.end()) {
+    check.object(*camera, "camera");
+    const auto& theta = check.field(*camera, "camera", "theta_deg");
+    if (!theta.is_number() || !(theta.get<double>() > 0 && theta.get<double>() < 180)) {
+      check.fail("camera.theta_deg", "expected degrees in (0, 180)");
+    }
+  }
   check.integer(check.field(trace, "", "plane_change_steps"), "plane_change_steps", 0, 1 << 20);
   const auto& footprint = check.array(check.field(trace, "", "footprint"), "footprint");
   if (footprint.size() != 2) check.fail("footprint", "expected [s1, s2]");

@@ -23,7 +23,9 @@ json rows(const grid::Grid<T>& m, F symbol) {
   return out;
 }
 
-char matrix_symbol(std::int8_t v) { return v < 0 ? '.' : static_cast<char>('0' + v); }
+char matrix_symbol(std::int8_t v) {
+  return v < 0 ? '.' : static_cast<char>('0' + v);
+}
 
 json uav_states(const sim::Simulator& sim) {
   json u = json::array();
@@ -39,14 +41,16 @@ json uav_states(const sim::Simulator& sim) {
 
 }  // namespace
 
-TraceRecorder::TraceRecorder(const world::Instance& instance, json parameters) : instance_(instance) {
+TraceRecorder::TraceRecorder(const world::Instance& instance, json parameters)
+    : instance_(instance) {
   trace_["format"] = "hullinspect-trace";
   trace_["version"] = 1;
   trace_["generator"] = std::string("hullinspect ") + kVersion;
   trace_["parameters"] = std::move(parameters);
 }
 
-void TraceRecorder::uav(int k, std::string_view mode, grid::Cell target, std::span<const grid::Cell> plan) {
+void TraceRecorder::uav(int k, std::string_view mode, grid::Cell target,
+                        std::span<const grid::Cell> plan) {
   json a;
   a["mode"] = mode;
   a["target"] = target.x < 0 ? json(nullptr) : json::array({target.x, target.y});
@@ -96,10 +100,13 @@ json TraceRecorder::frame(const sim::Simulator& sim, const planners::Planner& pl
 
 void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner& planner) {
   const auto& hull = sim.hull();
-  trace_["grid"] = {{"width", hull.width()}, {"height", hull.height()},
+  trace_["grid"] = {{"width", hull.width()},
+                    {"height", hull.height()},
                     {"cell_size_m", sim.params().cell_size_m}};
   trace_["plane_change_steps"] = sim.plane_change_steps();
   trace_["footprint"] = {sim.params().s1, sim.params().s2};
+  // The aperture places the planes in metres (stand-off ζ_z, docs/export.md).
+  trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};
   trace_["truth"] = rows(instance_.truth, matrix_symbol);
   trace_["prior"] = rows(instance_.prior, matrix_symbol);
   if (const auto* p = planner.partition()) {

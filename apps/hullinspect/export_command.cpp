@@ -1,0 +1,49 @@
+// hullinspect export: a mission trace's flown trajectories as waypoint files (docs/export.md).
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "commands.hpp"
+#include "export_options.hpp"
+#include "hullinspect/io/trace_reader.hpp"
+
+namespace hullinspect::cli {
+
+namespace {
+
+struct ExportCommandArgs {
+  std::string trace_path;
+  ExportArgs output;
+};
+
+int export_trace(const ExportCommandArgs& args) {
+  const auto request = resolve_export(args.output, "--out");
+  const auto trace = io::read_trace(args.trace_path);
+  const auto names = write_export(trace, *request, {args.trace_path});
+  std::cout << fmt::format("wrote {} {} file{} to {}: {}\n", names.size(), args.output.format,
+                           names.size() == 1 ? "" : "s", request->dir.string(),
+                           fmt::join(names, ", "));
+  return 0;
+}
+
+}  // namespace
+
+void add_export_command(CLI::App& app, CommandAction& action) {
+  auto args = std::make_shared<ExportCommandArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "export",
+      "Write a mission trace's trajectories as waypoints (csv, qgc, wpl, path), one file per UAV");
+  cmd->footer(
+      "Exit status: 0 written, 2 invalid input (nothing written), 1 other failure.\n"
+      "Example: hullinspect export mission.json --format qgc --origin 53.54,9.97,0 --heading 90 "
+      "--out plans");
+  cmd->add_option("trace", args->trace_path, "Trace written by `hullinspect run --trace FILE`")
+      ->required()
+      ->type_name("TRACE");
+  add_export_options(*cmd, args->output, "--out");
+  cmd->get_option("--out")->required();
+  cmd->callback([args, &action] { action = [args] { return export_trace(*args); }; });
+}
+
+}  // namespace hullinspect::cli

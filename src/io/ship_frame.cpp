@@ -1,0 +1,83 @@
+#include "hullinspect/io/ship_frame.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace hullinspect::io {
+
+ShipFrame::ShipFrame(ShipFrameSpec spec)
+    : spec_(std::move(spec)), sign_(spec_.side == HullSide::kPort ? 1.0 : -1.0) {}
+
+double ShipFrame::standoff_m(int z) const {
+  const int s = z == 1 ? spec_.s1 : spec_.s2;
+  const double half = spec_.theta_deg * std::numbers::pi / 360.0;
+  return s * spec_.cell_m / (2.0 * std::tan(half));
+}
+
+double ShipFrame::depth_m(grid::Cell cell) const {
+  if (spec_.depth.size() == 0 || !spec_.depth.contains(cell)) return 0.0;
+  return spec_.depth[cell];
+}
+
+ShipPose ShipFrame::pose(grid::Cell cell, int z) const {
+  ShipPose p;
+  p.x = spec_.x0 + (cell.x + 0.5) * spec_.cell_m;
+  p.z = spec_.z0 + (cell.y + 0.5) * spec_.cell_m;
+  p.y = spec_.ys + sign_ * (standoff_m(z) + depth_m(cell));
+  // The camera looks along −normal; a flat side's normal points at the viewer (0, ±1, 0).
+  double nx = 0;
+  double ny = sign_;
+  if (spec_.normal.size() != 0 && spec_.normal.contains(cell)) {
+    const auto& n = spec_.normal[cell];
+    if (std::hypot(n[0], n[1]) > 1e-9) {  // a horizontal face (deck, keel) keeps the side's yaw
+      nx = n[0];
+      ny = n[1];
+    }
+  }
+  p.yaw = std::atan2(-ny, -nx);
+  return p;
+}
+
+bool ShipFrame::same_surface(grid::Cell a, grid::Cell b) const {
+  if (depth_m(a) != depth_m(b)) return false;
+  if (spec_.normal.size() == 0) return true;
+  const bool ia = spec_.normal.contains(a);
+  const bool ib = spec_.normal.contains(b);
+  return ia == ib && (!ia || spec_.normal[a] == spec_.normal[b]);
+}
+
+grid::Cell ShipFrame::cell_at(double x, double z) const {
+  return {static_cast<int>(std::floor((x - spec_.x0) / spec_.cell_m)),
+          static_cast<int>(std::floor((z - spec_.z0) / spec_.cell_m))};
+}
+
+int ShipFrame::plane_at(grid::Cell cell, double y, double tolerance_m) const {
+  const double off = sign_ * (y - spec_.ys) - depth_m(cell);
+  int best = 0;
+  double best_error = tolerance_m;
+  for (int z : {1, 2}) {
+    const double e = std::abs(off - standoff_m(z));
+    if (e <= best_error) {
+      best = z;
+      best_error = e;
+    }
+  }
+  return best;
+}
+
+ShipFrameSpec ship_frame_spec(const nlohmann::json& trace) {
+  ShipFrameSpec s;
+  const auto& grid = trace.at("grid");
+  s.cell_m = grid.at("cell_size_m").get<double>();
+  s.s1 = trace.at("footprint").at(0).get<int>();
+  s.s2 = trace.at("footprint").at(1).get<int>();
+  if (auto c = trace.find("camera"); c != trace.end() && c->contains("theta_deg")) {
+    s.theta_deg = c->at("theta_deg").get<double>();
+  } else if (auto p = trace.at("parameters").find("theta");
+             p != trace.at("parameters").end() && p->is_number()) {
+    s.theta_deg = p->get<double>();
+  }
+  return s;
+}
+
+}  // namespace hullinspect::io

@@ -1,0 +1,226 @@
+// `hullinspect export`, `run --export` and `plan` end to end: bad inputs get one exact line, exit
+// status 2 and leave no file behind; `plan` flies the prior (docs/export.md).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/trace_reader.hpp"
+#include "support/cli_runner.hpp"
+
+namespace hullinspect::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// One small mission's trace, shared by the tests of this file.
+class ExportCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = make_temp_dir("export-cli");
+    trace_ = dir_ + "/trace.json";
+    const auto r = run_cli({"run", "-n", "2", "--seed", "3", "--trace", trace_});
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+  static std::string dir_;
+  static std::string trace_;
+};
+std::string ExportCli::dir_;
+std::string ExportCli::trace_;
+
+struct BadExport {
+  std::vector<std::string> args;  // after `export TRACE --out DIR`
+  std::string message;            // the whole stderr
+};
+
+class ExportBadInput : public ExportCli, public ::testing::WithParamInterface<BadExport> {};
+
+TEST_P(ExportBadInput, OneLineExitTwoNothingWritten) {
+  const std::string out = dir_ + "/out";
+  std::vector<std::string> args = {"export", trace_, "--out", out};
+  args.insert(args.end(), GetParam().args.begin(), GetParam().args.end());
+  const auto r = run_cli(args);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, GetParam().message + "\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, ExportBadInput,
+    ::testing::Values(
+        BadExport{{"--format", "kml"},
+                  "hullinspect: --format: 'kml' is not a format (expected csv, qgc, wpl or path)"},
+        BadExport{{"--format", "qgc"},
+                  "hullinspect: --origin: the qgc format needs a geo-reference: give --origin "
+                  "LAT,LON,ALT and --heading DEG (or --geo FILE)"},
+        BadExport{{"--format", "wpl", "--heading", "10"},
+                  "hullinspect: --origin: --heading needs --origin LAT,LON,ALT too"},
+        BadExport{{"--format", "wpl", "--origin", "1,2,3"},
+                  "hullinspect: --heading: --origin needs --heading DEG too"},
+        BadExport{{"--origin", "53.5;9.9;0", "--heading", "0"},
+                  "hullinspect: --origin: expects LAT,LON,ALT in degrees, degrees, metres (got "
+                  "'53.5;9.9;0')"},
+        BadExport{{"--origin", "95,9.9,0", "--heading", "0"},
+                  "hullinspect: --origin: expects LAT,LON,ALT with LAT in [-90, 90] and LON in "
+                  "[-180, 180] (got 95,9.9,0)"},
+        BadExport{{"--origin", "1,2,3", "--heading", "x"},
+                  "hullinspect: --heading: 'x' is not a valid value (see --help)"},
+        BadExport{{"--geo", "/nonexistent/geo.yaml"},
+                  "hullinspect: /nonexistent/geo.yaml: cannot open the geo-reference file"},
+        BadExport{
+            {"--geo", "/dev/null", "--origin", "1,2,3"},
+            "hullinspect: --geo: give either --geo FILE or --origin and --heading, not both"}));
+
+TEST_F(ExportCli, RefusesAnOutDirectoryThatIsAFileOrMissingItsParent) {
+  auto r = run_cli({"export", trace_, "--out", trace_});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + trace_ + ": --out must be a directory\n");
+  r = run_cli({"export", trace_, "--out", dir_ + "/no/such/dir"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + dir_ + "/no/such/dir: cannot create the out directory\n");
+  EXPECT_FALSE(fs::exists(dir_ + "/no"));
+}
+
+TEST_F(ExportCli, RefusesAnOutputThatIsADirectoryWritingNothing) {
+  const std::string out = dir_ + "/blocked";
+  fs::create_directories(out + "/uav1.csv");
+  const auto r = run_cli({"export", trace_, "--out", out});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + out + "/uav1.csv: exists and is not a regular file\n");
+  EXPECT_FALSE(fs::exists(out + "/uav0.csv"));  // all or nothing
+  fs::remove_all(out);
+}
+
+TEST_F(ExportCli, RefusesToOverwriteTheTrace) {
+  const std::string out = dir_ + "/clash";
+  fs::create_directories(out);
+  fs::create_hard_link(trace_, out + "/uav0.csv");
+  const auto r = run_cli({"export", trace_, "--out", out});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + out +
+                       "/uav0.csv: is an input of this command; choose another directory\n");
+  EXPECT_NO_THROW(io::read_trace(trace_));  // untouched
+  EXPECT_FALSE(fs::exists(out + "/uav1.csv"));
+  fs::remove_all(out);
+}
+
+TEST_F(ExportCli, RejectsAMalformedTrace) {
+  const std::string bad = dir_ + "/bad.json";
+  io::write_file_atomic(bad, "{\"format\": \"hullinspect-trace\", \"version\": 1}");
+  const auto r = run_cli({"export", bad, "--out", dir_ + "/never"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + bad + ": parameters: missing\n");
+  EXPECT_FALSE(fs::exists(dir_ + "/never"));
+}
+
+TEST_F(ExportCli, RejectsATraceThatCannotBePlacedInMetres) {
+  const auto good = io::read_trace(trace_);
+  auto bad = good;
+  bad["grid"]["cell_size_m"] = 0;
+  const std::string path = dir_ + "/cell.json";
+  io::write_file_atomic(path, bad.dump());
+  auto r = run_cli({"export", path, "--out", dir_ + "/never"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "hullinspect: " + path + ": grid.cell_size_m: expected a positive number of metres\n");
+  bad = good;
+  bad["camera"]["theta_deg"] = 180;
+  io::write_file_atomic(path, bad.dump());
+  r = run_cli({"export", path, "--out", dir_ + "/never"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: " + path + ": camera.theta_deg: expected degrees in (0, 180)\n");
+  EXPECT_FALSE(fs::exists(dir_ + "/never"));
+}
+
+TEST_F(ExportCli, WritesOneFilePerUavAndSaysSo) {
+  const std::string out = dir_ + "/csv";
+  const auto r = run_cli({"export", trace_, "--out", out});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "wrote 2 csv files to " + out + ": uav0.csv, uav1.csv\n");
+  const std::string geo = dir_ + "/geo.yaml";
+  io::write_file_atomic(geo, "origin: [53.5461, 9.9665, 3]\nheading: 117\n");
+  const auto p =
+      run_cli({"export", trace_, "--format", "path", "--geo", geo, "--out", dir_ + "/path"});
+  ASSERT_EQ(p.status, 0) << p.err;
+  EXPECT_EQ(p.out, "wrote 3 path files to " + dir_ +
+                       "/path: uav0.path.yaml, uav1.path.yaml, hull_to_map.yaml\n");
+  // --geo and --origin/--heading give the same files.
+  const auto q = run_cli({"export", trace_, "--format", "path", "--origin", "53.5461,9.9665,3",
+                          "--heading", "117", "--out", dir_ + "/path2"});
+  ASSERT_EQ(q.status, 0) << q.err;
+  for (const char* f : {"uav0.path.yaml", "hull_to_map.yaml"}) {
+    EXPECT_EQ(io::read_file(dir_ + "/path/" + f), io::read_file(dir_ + "/path2/" + f)) << f;
+  }
+}
+
+TEST_F(ExportCli, RunExportWritesWhatExportOfItsTraceWrites) {
+  const std::string out = dir_ + "/run-export";
+  const auto r = run_cli({"run", "-n", "2", "--seed", "3", "--export", out, "--format", "wpl",
+                          "--origin", "-33.86,151.21,0", "--heading", "45"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto e = run_cli({"export", trace_, "--format", "wpl", "--origin", "-33.86,151.21,0",
+                          "--heading", "45", "--out", dir_ + "/export"});
+  ASSERT_EQ(e.status, 0) << e.err;
+  for (const char* f : {"uav0.waypoints", "uav1.waypoints"}) {
+    EXPECT_EQ(io::read_file(out + "/" + f), io::read_file(dir_ + "/export/" + f)) << f;
+  }
+  // A bad export option is refused before the mission runs.
+  const auto bad = run_cli({"run", "-n", "2", "--export", dir_ + "/x", "--format", "qgc"});
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.out, "");
+  EXPECT_FALSE(fs::exists(dir_ + "/x"));
+  const auto stray = run_cli({"run", "-n", "2", "--origin", "1,2,3"});
+  EXPECT_EQ(stray.status, 2);
+  EXPECT_EQ(stray.err, "hullinspect: --origin: has no effect without --export DIR\n");
+}
+
+TEST_F(ExportCli, PlanFliesThePriorAndExportsItsWaypoints) {
+  // With an imperfect prior the plan (truth = prior) and the flight (the real truth) differ.
+  const std::vector<std::string> mission = {"-a",         "part-tsp", "-n",     "3",
+                                            "--scenario", "combined", "--seed", "7"};
+  auto plan_args =
+      std::vector<std::string>{"plan",     "--json",       "--trace",  dir_ + "/plan.json",
+                               "--export", dir_ + "/plan", "--format", "csv"};
+  plan_args.insert(plan_args.end(), mission.begin(), mission.end());
+  const auto p = run_cli(plan_args);
+  ASSERT_EQ(p.status, 0) << p.err;
+  const auto planned = nlohmann::json::parse(p.out);
+  EXPECT_EQ(planned["planned_on"], "prior");
+  const auto trace = io::read_trace(dir_ + "/plan.json");
+  EXPECT_EQ(trace["truth"], trace["prior"]);
+  EXPECT_EQ(planned["T_m"], trace["result"]["T_m"]);
+  EXPECT_EQ(planned["T_c"], trace["result"]["T_c"]);
+  // Its waypoints end at the planned T_m.
+  for (int k = 0; k < 3; ++k) {
+    const auto csv = io::read_file(dir_ + "/plan/uav" + std::to_string(k) + ".csv");
+    const auto last = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+    EXPECT_EQ(
+        last.substr(last.find(',') + 1, last.find(',', last.find(',') + 1) - last.find(',') - 1),
+        std::to_string(planned["T_m"].get<int>()))
+        << last;
+  }
+  auto run_args = std::vector<std::string>{"run", "--json"};
+  run_args.insert(run_args.end(), mission.begin(), mission.end());
+  const auto flown = nlohmann::json::parse(run_cli(run_args).out);
+  EXPECT_NE(flown["corroded_cells"], planned["corroded_cells"]);
+  // With a perfect prior the plan is the flight.
+  const auto perfect_plan =
+      nlohmann::json::parse(run_cli({"plan", "--json", "-n", "2", "--seed", "3"}).out);
+  const auto perfect_run =
+      nlohmann::json::parse(run_cli({"run", "--json", "-n", "2", "--seed", "3"}).out);
+  EXPECT_EQ(perfect_plan["T_m"], perfect_run["T_m"]);
+  EXPECT_EQ(perfect_plan["T_c"], perfect_run["T_c"]);
+  // The text summary names the expected times.
+  const auto text = run_cli({"plan", "-n", "2", "--seed", "3"});
+  EXPECT_NE(text.out.find("planned on the prior"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("expected T_c = " + std::to_string(perfect_run["T_c"].get<int>()) + " s"),
+            std::string::npos)
+      << text.out;
+}
+
+}  // namespace
+}  // namespace hullinspect::testing
