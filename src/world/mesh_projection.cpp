@@ -198,10 +198,15 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
                    u_hi = std::max({p.u[0], p.u[1], p.u[2]});
       const double v_lo = std::min({p.v[0], p.v[1], p.v[2]}),
                    v_hi = std::max({p.v[0], p.v[1], p.v[2]});
-      const int i0 = std::max(0, static_cast<int>(std::ceil(u_lo)));
-      const int i1 = std::min(row_samples - 1, static_cast<int>(std::floor(u_hi)));
-      const int j0 = std::max(j_begin, static_cast<int>(std::ceil(v_lo)));
-      const int j1 = std::min(j_begin + kSamples - 1, static_cast<int>(std::floor(v_hi)));
+      // Clamped in floating point first: a facet far below the waterline must not overflow int.
+      const auto sample = [](double v, int lo, int hi) {
+        return static_cast<int>(std::clamp(v, lo - 1.0, hi + 1.0));
+      };
+      const int i0 = std::max(0, sample(std::ceil(u_lo), 0, row_samples));
+      const int i1 = std::min(row_samples - 1, sample(std::floor(u_hi), 0, row_samples));
+      const int j0 = std::max(j_begin, sample(std::ceil(v_lo), j_begin, j_begin + kSamples));
+      const int j1 =
+          std::min(j_begin + kSamples - 1, sample(std::floor(v_hi), j_begin, j_begin + kSamples));
       for (int j = j0; j <= j1; ++j) {
         for (int i = i0; i <= i1; ++i) {
           // Barycentric weights, normalised by the signed area (either winding in u–v).
