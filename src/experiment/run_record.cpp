@@ -39,6 +39,7 @@ std::vector<std::string> runs_header() {
           "hovers",       "plane_changes",
           "steps_z1",     "steps_z2",
           "steps_transit", "tsp_solves",
+          "tsp_unproven", "tsp_fallbacks",
           "replans",      "assignments"};
 }
 
@@ -90,6 +91,7 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
       std::to_string(total.hovers), std::to_string(total.plane_changes),
       std::to_string(total.steps_z1), std::to_string(total.steps_z2),
       std::to_string(total.steps_transit), std::to_string(r.planner.tsp_solves),
+      std::to_string(r.planner.tsp_unproven), std::to_string(r.planner.tsp_fallbacks),
       std::to_string(r.planner.replans), std::to_string(r.planner.assignments)});
 
   const auto times = c.curve.times();

@@ -44,6 +44,17 @@ ExportPlan export_plan(const nlohmann::json& trace) {
     }
     plan.uavs.push_back(std::move(u));
   }
+  // No-fly positions (docs/trace-format.md: rows with '#'), for the qgc geofence.
+  if (auto rows = trace.find("no_fly"); rows != trace.end() && rows->is_array()) {
+    for (std::size_t y = 0; y < rows->size(); ++y) {
+      const auto& row = (*rows)[y];
+      if (!row.is_string()) continue;
+      const auto& text = row.get_ref<const std::string&>();
+      for (std::size_t x = 0; x < text.size(); ++x) {
+        if (text[x] == '#') plan.no_fly.push_back({static_cast<int>(x), static_cast<int>(y)});
+      }
+    }
+  }
   return plan;
 }
 

@@ -27,6 +27,8 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   j["tsp_solves"] = r.planner.tsp_solves;
   j["tsp_seconds"] = r.planner.tsp_seconds;
   j["tsp_max_seconds"] = r.planner.tsp_max_seconds;
+  j["tsp_unproven"] = r.planner.tsp_unproven;
+  j["tsp_fallbacks"] = r.planner.tsp_fallbacks;
   j["replans"] = r.planner.replans;
   j["assignments"] = r.planner.assignments;
   return j;

@@ -108,6 +108,7 @@ nlohmann::ordered_json tsp_solution_json(const tsp::TspSolution& solution) {
   nlohmann::ordered_json out;
   out["length"] = solution.length;
   out["optimal"] = solution.optimal;
+  out["lower_bound"] = solution.lower_bound;
   out["order"] = std::move(order);
   out["seconds"] = solution.seconds;
   return out;

@@ -134,6 +134,8 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
     ++stats_.tsp_solves;
     stats_.tsp_seconds += seconds;
     stats_.tsp_max_seconds = std::max(stats_.tsp_max_seconds, seconds);
+    if (!solution.optimal) ++stats_.tsp_unproven;
+    if (solution.fallback) ++stats_.tsp_fallbacks;
     order_.assign(solution.order.begin(), solution.order.end());
   }
   p.path.assign(segments_, ends_, order_);

@@ -29,7 +29,8 @@ BranchAndCut::~BranchAndCut() = default;
 
 BranchAndCutStats BranchAndCut::solve(const EndCosts& costs, std::vector<int>& best,
                                       long long& best_length,
-                                      std::chrono::steady_clock::time_point deadline) {
+                                      std::chrono::steady_clock::time_point deadline,
+                                      double work_budget) {
   if (costs.segments() < 2) throw LogicError("branch-and-cut called with g < 2");
   costs_ = &costs;
   g_ = costs.segments();
@@ -38,6 +39,7 @@ BranchAndCutStats BranchAndCut::solve(const EndCosts& costs, std::vector<int>& b
   best_ = &best;
   best_length_ = &best_length;
   deadline_ = deadline;
+  work_budget_ = work_budget;
   stopped_ = false;
   trouble_ = false;
   stats_ = {};
@@ -45,8 +47,11 @@ BranchAndCutStats BranchAndCut::solve(const EndCosts& costs, std::vector<int>& b
   known_cuts_.clear();
   enumerate_edges();
   build_lp();
-  if (solve_root()) branch();
+  // The root's column fixing and cut purge change the LP: it is solved again (and cut again if
+  // needed) as the first node of the tree before anything reads its values.
+  if (solve_root() && solve_node() == NodeState::kFractional) branch();
   stats_.optimal = !stopped_ && !trouble_;
+  stats_.gave_up = trouble_ && !stopped_;
   costs_ = nullptr;
   best_ = nullptr;
   best_length_ = nullptr;
@@ -115,12 +120,24 @@ void BranchAndCut::build_lp() {
   resolve();
 }
 
+bool BranchAndCut::out_of_work() const {
+  if (work_budget_ > 0 && lp_.total_work() >= work_budget_) return true;
+  return std::chrono::steady_clock::now() >= deadline_;
+}
+
 bool BranchAndCut::resolve() {
-  status_ = lp_.solve(kPivotLimit, deadline_);
+  long limit = kPivotLimit;
+  if (work_budget_ > 0) {
+    // The pivots the remaining budget allows at the current size (the last one may overshoot it
+    // by the rows a new cut adds).
+    const double m = std::max(1, lp_.rows());
+    const double left = std::max(0.0, work_budget_ - lp_.total_work());
+    limit = std::min<long>(limit, 1 + static_cast<long>(left / (m * m)));
+  }
+  status_ = lp_.solve(limit, deadline_);
   ++stats_.lp_solves;
-  if (status_ == DualSimplex::Status::kPivotLimit &&
-      std::chrono::steady_clock::now() >= deadline_) {
-    stopped_ = true;  // out of time, not numerical trouble
+  if (status_ == DualSimplex::Status::kPivotLimit && out_of_work()) {
+    stopped_ = true;  // out of time or work budget, not numerical trouble
   }
   return status_ == DualSimplex::Status::kOptimal;
 }
@@ -134,7 +151,7 @@ bool BranchAndCut::solve_root() {
   bound_history_.clear();
   bool solved = true;  // build_lp() solved the first LP
   while (true) {
-    if (std::chrono::steady_clock::now() >= deadline_) {
+    if (out_of_work()) {
       stopped_ = true;
       return false;
     }
@@ -165,9 +182,12 @@ bool BranchAndCut::solve_root() {
 }
 
 bool BranchAndCut::integral_solution() {
+  // Integral and inside the column's bounds: a value of 2 or −1 is integral but no tour.
   const auto x = lp_.values();
-  for (double v : x) {
+  for (int j = 0; j < lp_.columns(); ++j) {
+    const double v = x[static_cast<std::size_t>(j)];
     if (std::abs(v - std::round(v)) > kIntegral) return false;
+    if (v < lp_.lower(j) - kIntegral || v > lp_.upper(j) + kIntegral) return false;
   }
   return true;
 }
@@ -271,7 +291,7 @@ int BranchAndCut::choose_branch_column(bool& up_first) {
       candidates_.push_back(j);
     }
   }
-  if (candidates_.empty()) throw LogicError("branch-and-cut: no fractional edge to branch on");
+  if (candidates_.empty()) return -1;
   auto fractionality = [&](int j) {
     const double v = values_[static_cast<std::size_t>(j)];
     return std::min(v, 1.0 - v);
@@ -296,11 +316,12 @@ int BranchAndCut::choose_branch_column(bool& up_first) {
   double best_score = -1;
   lp_.save(snapshot_);
   for (int j : candidates_) {
+    if (out_of_work()) break;  // the pick so far; the search stops at the next node anyway
     lp_.set_bounds(j, 0.0, 0.0);
-    const double down = child_bound(lp_.solve(kStrongIterations));
+    const double down = child_bound(lp_.solve(kStrongIterations, deadline_));
     lp_.restore(snapshot_);
     lp_.set_bounds(j, 1.0, 1.0);
-    const double up = child_bound(lp_.solve(kStrongIterations));
+    const double up = child_bound(lp_.solve(kStrongIterations, deadline_));
     lp_.restore(snapshot_);
     const double score = std::max(down - here, 1e-6) * std::max(up - here, 1e-6);
     if (score > best_score) {
@@ -317,6 +338,12 @@ void BranchAndCut::branch() {
   // strong-branching bound first.
   bool up_first = true;
   const int pick = choose_branch_column(up_first);
+  if (pick < 0) {
+    // Only reachable if the LP's values are not an optimal basic solution of this node (the
+    // defect that once made "exact" hand instances to the reference): no optimality claim.
+    trouble_ = true;
+    return;
+  }
   const double lower = lp_.lower(pick);
   const double upper = lp_.upper(pick);
   for (int k = 0; k < 2; ++k) {
@@ -332,7 +359,7 @@ void BranchAndCut::branch() {
 BranchAndCut::NodeState BranchAndCut::solve_node() {
   bound_history_.clear();
   while (true) {
-    if (std::chrono::steady_clock::now() >= deadline_) {
+    if (out_of_work()) {
       stopped_ = true;
       return NodeState::kPruned;
     }
@@ -499,6 +526,7 @@ int BranchAndCut::separate_blossoms(bool min_cuts) {
     flow_.build();
     tree_parent_.assign(static_cast<std::size_t>(size), 0);
     for (int i = 1; i < size; ++i) {
+      if (i % 16 == 0 && out_of_work()) break;  // n − 1 max-flows: long on large components
       const int p = tree_parent_[static_cast<std::size_t>(i)];
       const double value = flow_.max_flow(i, p, 2.0);  // w-degrees are ≤ 1: this is exact
       for (int k = i + 1; k < size; ++k) {

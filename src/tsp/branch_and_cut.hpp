@@ -39,6 +39,7 @@ namespace hullinspect::tsp::detail {
 
 struct BranchAndCutStats {
   bool optimal = false;      ///< search finished: the incumbent is optimal
+  bool gave_up = false;      ///< stopped by numerical trouble (not the deadline): no claim
   long long root_bound = 0;  ///< ⌈root LP bound⌉ (path length, segments included)
   int nodes = 0;
   int lp_solves = 0;
@@ -55,8 +56,10 @@ class BranchAndCut {
 
   /// `best`/`best_length`: a valid tour (entry ends) and its length on entry, the best tour found
   /// on return. Stops early (optimal = false) once `deadline` has passed. Requires g ≥ 2.
+  /// Also stops once its LPs' work (DualSimplex::total_work) reaches `work_budget` (0 = no
+  /// budget): a deterministic bound, unlike the deadline.
   BranchAndCutStats solve(const EndCosts& costs, std::vector<int>& best, long long& best_length,
-                          std::chrono::steady_clock::time_point deadline);
+                          std::chrono::steady_clock::time_point deadline, double work_budget = 0);
 
  private:
   enum class NodeState { kPruned, kFractional, kIntegral };
@@ -74,6 +77,7 @@ class BranchAndCut {
   bool solve_root();
   NodeState solve_node();
   bool resolve();
+  bool out_of_work() const;
   void branch();
   int choose_branch_column(bool& up_first);
   void finish_root_columns();
@@ -116,7 +120,8 @@ class BranchAndCut {
   std::vector<int>* best_ = nullptr;
   long long* best_length_ = nullptr;
   std::chrono::steady_clock::time_point deadline_;
-  bool stopped_ = false;  // deadline passed
+  double work_budget_ = 0;
+  bool stopped_ = false;  // deadline passed or work budget spent
   bool trouble_ = false;  // an LP ended neither optimal nor infeasible: no optimality claim
   BranchAndCutStats stats_;
   // Scratch, reused.

@@ -15,6 +15,7 @@ constexpr long kMinRefactorInterval = 100;  // pivots between fresh inverses: at
 }  // namespace
 
 void DualSimplex::reset(std::span<const double> equality_rhs) {
+  total_work_ = 0;
   m_ = 0;
   stride_ = 0;
   rhs_.clear();
@@ -92,7 +93,9 @@ int DualSimplex::add_column(std::span<const int> rows, double cost, double lower
   double d = cost;
   for (int i : rows) d -= pi_[static_cast<std::size_t>(i)];
   d_.push_back(d);
-  const bool at_upper = d < 0 && upper > lower;
+  // A reduced cost of −1e−14 is zero: such a column starts at its lower bound (at the upper one
+  // it would shift the basic values for nothing and can leave them outside their bounds).
+  const bool at_upper = d < -kDualTolerance && upper > lower;
   state_.push_back(at_upper ? kAtUpper : kAtLower);
   const double value = at_upper ? upper : lower;
   if (value != 0.0) {
@@ -144,7 +147,7 @@ void DualSimplex::set_bounds(int j, double lower, double upper) {
   up_[jj] = upper;
   if (position_[jj] >= 0) return;  // a basic column out of its bounds: the next solve fixes it
   // Keep dual feasibility: the bound the reduced cost prefers.
-  state_[jj] = (d_[jj] < 0 && upper > lower) ? kAtUpper : kAtLower;
+  state_[jj] = (d_[jj] < -kDualTolerance && upper > lower) ? kAtUpper : kAtLower;
   const double shift = value_of_nonbasic(j) - before;
   if (shift == 0.0) return;
   for (int p = 0; p < m_; ++p) {
@@ -509,6 +512,7 @@ DualSimplex::Status DualSimplex::solve(long max_pivots,
     duals_fresh_ = false;
     checked = false;
     ++pivots;
+    total_work_ += static_cast<double>(m_) * static_cast<double>(m_);
     if (++since_refactor_ >= std::max<long>(kMinRefactorInterval, 2L * m_)) {
       if (!refactor()) return Status::kFailed;
     }

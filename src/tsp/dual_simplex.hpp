@@ -41,6 +41,9 @@ class DualSimplex {
                                     std::chrono::steady_clock::time_point::max());
 
   int columns() const { return static_cast<int>(cost_.size()); }
+  /// Σ m² over the pivots since reset() (the cost of a pivot's inverse update), every solve
+  /// included: a deterministic measure of the work done, roughly proportional to time.
+  double total_work() const { return total_work_; }
   int rows() const { return m_; }
   double lower(int j) const { return lo_[static_cast<std::size_t>(j)]; }
   double upper(int j) const { return up_[static_cast<std::size_t>(j)]; }
@@ -86,6 +89,7 @@ class DualSimplex {
   void recompute_duals();
 
   int m_ = 0;
+  double total_work_ = 0;
   int stride_ = 0;  // capacity of the inverse's rows and columns
   std::vector<double> rhs_;
   std::vector<char> equality_;

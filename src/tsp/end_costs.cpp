@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <limits>
+
 #include "hullinspect/core/errors.hpp"
 
 namespace hullinspect::tsp::detail {
@@ -45,8 +48,35 @@ TspSolution make_solution(const SegmentTsp& problem, std::span<const int> entrie
   for (int e : entries) solution.order.push_back(visit_of_entry(e));
   solution.length = tour_length(problem, solution.order);
   solution.optimal = optimal;
+  if (optimal) solution.lower_bound = solution.length;
   solution.seconds = seconds_since(started);
   return solution;
+}
+
+long long simple_lower_bound(const EndCosts& costs) {
+  const int ends = costs.ends();
+  if (ends == 0) return 0;
+  long long first_leg = std::numeric_limits<long long>::max();
+  long long links = 0;  // twice the bound on the links
+  int largest = 0;
+  int second = 0;
+  for (int v = 0; v < ends; ++v) {
+    first_leg = std::min<long long>(first_leg, costs(costs.start(), v));
+    int nearest = std::numeric_limits<int>::max();
+    for (int w = 0; w < ends; ++w) {
+      if ((w >> 1) != (v >> 1)) nearest = std::min(nearest, costs(v, w));
+    }
+    if (nearest == std::numeric_limits<int>::max()) nearest = 0;  // g = 1: no links
+    links += nearest;
+    if (nearest > largest) {
+      second = largest;
+      largest = nearest;
+    } else if (nearest > second) {
+      second = nearest;
+    }
+  }
+  links -= largest + second;
+  return costs.segment_total() + first_leg + (links + 1) / 2;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point started) {

@@ -50,6 +50,11 @@ inline Visit visit_of_entry(int entry) {
 TspSolution make_solution(const SegmentTsp& problem, std::span<const int> entries, bool optimal,
                           std::chrono::steady_clock::time_point started);
 
+/// A lower bound on every tour's length, O(g²): the segments, the cheapest first leg from the UAV,
+/// and half of each end's cheapest link to another segment for all ends but the two most
+/// expensive (a tour's g − 1 links between segments touch every end except its first entry and
+/// its last exit, each once).
+long long simple_lower_bound(const EndCosts& costs);
 /// Seconds elapsed since `started`.
 double seconds_since(std::chrono::steady_clock::time_point started);
 

@@ -4,8 +4,6 @@
 #include <chrono>
 
 #include "branch_and_cut.hpp"
-#include "hullinspect/core/errors.hpp"
-#include "hullinspect/tsp/dfj_iterative_solver.hpp"
 #include "end_costs.hpp"
 #include "local_search.hpp"
 #include "segment_dp.hpp"
@@ -32,6 +30,8 @@ ExactOptions ExactSolver::read_options(const OptionMap& options) {
   o.dp_max_segments =
       reader.get_int("dp_max_segments", o.dp_max_segments, 0, detail::SegmentDp::kMaxSegments);
   o.kicks = reader.get_int("kicks", o.kicks, 0, 1'000'000);
+  o.max_segments = reader.get_int("max_segments", o.max_segments, 0, 1'000'000);
+  o.work_budget = reader.get_double("work_budget", o.work_budget, 0.0, 1e9);
   reader.reject_unknown();
   return o;
 }
@@ -46,28 +46,26 @@ TspSolution ExactSolver::solve(const SegmentTsp& problem) {
     return detail::make_solution(problem, entries_, true, started);
   }
   long long length = search_->run(*costs_, options_.kicks, kSearchSeed, entries_);
+  const long long simple_bound = detail::simple_lower_bound(*costs_);
+  auto unproven = [&](long long bound, bool fallback) {
+    TspSolution s = detail::make_solution(problem, entries_, bound >= length, started);
+    s.lower_bound = std::min(bound, s.length);
+    s.fallback = fallback;
+    return s;
+  };
+  if (simple_bound >= length) return unproven(simple_bound, false);
+  if (options_.max_segments > 0 && g > options_.max_segments) return unproven(simple_bound, false);
   auto deadline = std::chrono::steady_clock::time_point::max();
   if (options_.time_limit > 0) {
     deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                              std::chrono::duration<double>(options_.time_limit));
   }
-  try {
-    const auto stats = branch_and_cut_->solve(*costs_, entries_, length, deadline);
-    return detail::make_solution(problem, entries_, stats.optimal, started);
-  } catch (const LogicError&) {
-    // Rarely the branch-and-cut reaches an integral LP point that its separation does not cut off
-    // ("no fractional edge to branch on"; an open defect, see docs/tsp.md). The CBC-based DFJ
-    // reference still proves optimality, only more slowly, so missions never stop on it.
-    ++reference_fallbacks_;
-    DfjIterativeOptions reference_options;
-    if (options_.time_limit > 0) {
-      reference_options.time_limit =
-          std::max(1e-3, options_.time_limit - detail::seconds_since(started));
-    }
-    TspSolution solution = DfjIterativeSolver(reference_options).solve(problem);
-    solution.seconds = detail::seconds_since(started);
-    return solution;
-  }
+  const auto stats =
+      branch_and_cut_->solve(*costs_, entries_, length, deadline, options_.work_budget * 1e6);
+  if (stats.optimal) return detail::make_solution(problem, entries_, true, started);
+  // Stopped by the time limit or the work budget, or (a defect, counted as a fallback) by numerical
+  // trouble: the best tour found, with the better of the two bounds.
+  return unproven(std::max(simple_bound, stats.root_bound), stats.gave_up);
 }
 
 }  // namespace hullinspect::tsp

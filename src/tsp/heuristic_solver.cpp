@@ -1,5 +1,6 @@
 #include "hullinspect/tsp/heuristic_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "end_costs.hpp"
@@ -30,7 +31,11 @@ TspSolution HeuristicSolver::solve(const SegmentTsp& problem) {
   costs_->assign(problem);
   search_->run(*costs_, options_.kicks, static_cast<std::uint64_t>(options_.seed), entries_);
   // With one segment the local search tries both directions, so the answer is optimal.
-  return detail::make_solution(problem, entries_, g == 1, started);
+  TspSolution solution = detail::make_solution(problem, entries_, g == 1, started);
+  if (!solution.optimal) {
+    solution.lower_bound = std::min(solution.length, detail::simple_lower_bound(*costs_));
+  }
+  return solution;
 }
 
 }  // namespace hullinspect::tsp

@@ -37,7 +37,12 @@ const std::vector<TspSolverInfo>& registry() {
          "seconds before returning the best tour with optimal = false (0 = none)"},
         {"dp_max_segments", text(exact.dp_max_segments),
          "largest g solved by the dynamic program (0-16)"},
-        {"kicks", text(exact.kicks), "local-search kicks for the first tour of branch-and-cut"}},
+        {"kicks", text(exact.kicks), "local-search kicks for the first tour of branch-and-cut"},
+        {"max_segments", text(exact.max_segments),
+         "above this g: the local search's tour and a lower bound, no proof (0 = no limit)"},
+        {"work_budget", text(exact.work_budget),
+         "LP work (10^6 units of rows^2 per pivot, ~2 ms each) before returning the best tour "
+         "and a bound, no proof (0 = none)"}},
        &make_exact},
       {"dfj-iterative",
        "the paper's reference: DFJ integer program on CBC, subtour constraints added iteratively",

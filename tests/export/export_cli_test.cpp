@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/geo_reference.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 #include "support/cli_runner.hpp"
 
@@ -134,6 +136,43 @@ TEST_F(ExportCli, RejectsATraceThatCannotBePlacedInMetres) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "hullinspect: " + path + ": camera.theta_deg: expected degrees in (0, 180)\n");
   EXPECT_FALSE(fs::exists(dir_ + "/never"));
+}
+
+TEST_F(ExportCli, NoFlyPositionsBecomeGeofenceExclusionPolygons) {
+  auto trace = io::read_trace(trace_);
+  const int width = trace["grid"]["width"].get<int>();
+  std::vector<std::string> rows(trace["grid"]["height"].get<std::size_t>(),
+                                std::string(width, '.'));
+  rows[4][10] = '#';
+  rows[7][200] = '#';
+  trace["no_fly"] = rows;
+  const std::string path = dir_ + "/nofly.json";
+  io::write_file_atomic(path, trace.dump());
+  const auto r = run_cli({"export", path, "--format", "qgc", "--origin", "10,20,0", "--heading",
+                          "30", "--out", dir_ + "/fence"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto plan = nlohmann::json::parse(io::read_file(dir_ + "/fence/uav0.plan"));
+  const auto& polygons = plan["geoFence"]["polygons"];
+  ASSERT_EQ(polygons.size(), 2u);
+  // Back in the ship frame: the cell's extent along the hull, the band from half a cell inside
+  // the close-up plane to half a cell beyond the detection plane (starboard: y < 0).
+  const io::GeoReference geo({10, 20, 0}, 30);
+  const std::vector<std::pair<int, int>> cells = {{10, 4}, {200, 7}};
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(polygons[i]["inclusion"], false);
+    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+    for (const auto& corner : polygons[i]["polygon"]) {
+      double x = 0, y = 0, z = 0;
+      geo.from_wgs84({corner[0].get<double>(), corner[1].get<double>(), 0}, x, y, z);
+      xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y),
+      ymax = std::max(ymax, y);
+    }
+    const double x0 = cells[i].first * 0.5;
+    EXPECT_NEAR(xmin, x0, 1e-3);
+    EXPECT_NEAR(xmax, x0 + 0.5, 1e-3);
+    EXPECT_NEAR(ymax, -1.25 + 0.25, 1e-3);
+    EXPECT_NEAR(ymin, -1.75 - 0.25, 1e-3);
+  }
 }
 
 TEST_F(ExportCli, WritesOneFilePerUavAndSaysSo) {

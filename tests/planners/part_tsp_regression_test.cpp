@@ -10,8 +10,9 @@ namespace hullinspect::planners {
 namespace {
 
 TEST(PartTspRegression, ExactSolverNeverStopsAMission) {
-  // The exact solver's branch-and-cut once threw "no fractional edge to branch on" in this mission
-  // (found by the paper-quick preset); it now hands such instances to the DFJ reference.
+  // The exact solver's branch-and-cut once stopped with "no fractional edge to branch on" in this
+  // mission (found by the paper-quick preset) and handed the instance to the DFJ reference; the
+  // root cause is fixed (docs/tsp.md) and no solve may fall back.
   MissionSpec spec;
   spec.algorithm = "part-tsp";
   spec.params.uavs = 8;
@@ -24,6 +25,8 @@ TEST(PartTspRegression, ExactSolverNeverStopsAMission) {
   const auto r = run_mission(spec, world::default_hull(), options);
   EXPECT_TRUE(r.complete);
   EXPECT_TRUE(checker.ok());
+  EXPECT_GT(r.planner.tsp_solves, 0);
+  EXPECT_EQ(r.planner.tsp_fallbacks, 0);
 }
 
 }  // namespace

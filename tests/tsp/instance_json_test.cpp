@@ -107,10 +107,12 @@ TEST(TspSolutionJson, FieldsInTheDocumentedOrder) {
   s.order = {{2, true}, {0, false}};
   s.length = 17;
   s.optimal = true;
+  s.lower_bound = 17;
   s.seconds = 0.25;
-  EXPECT_EQ(tsp_solution_json(s).dump(),
-            R"({"length":17,"optimal":true,"order":[{"segment":2,"reversed":true},)"
-            R"({"segment":0,"reversed":false}],"seconds":0.25})");
+  EXPECT_EQ(
+      tsp_solution_json(s).dump(),
+      R"({"length":17,"optimal":true,"lower_bound":17,"order":[{"segment":2,"reversed":true},)"
+      R"({"segment":0,"reversed":false}],"seconds":0.25})");
 }
 
 }  // namespace

@@ -51,7 +51,8 @@ TEST(TspSolvers, UnknownSolverOrOptionIsAParameterError) {
     FAIL();
   } catch (const ParameterError& e) {
     EXPECT_STREQ(e.what(),
-                 "exact.timelimit: unknown option (known: time_limit, dp_max_segments, kicks)");
+                 "exact.timelimit: unknown option (known: time_limit, dp_max_segments, kicks, "
+                 "max_segments, work_budget)");
   }
   try {
     make_tsp_solver("exact", {{"dp_max_segments", "17"}});

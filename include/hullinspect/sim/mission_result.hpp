@@ -20,6 +20,8 @@ struct PlannerStats {
   long long tsp_solves = 0;
   double tsp_seconds = 0;
   double tsp_max_seconds = 0;
+  long long tsp_unproven = 0;   ///< TSP solves returned without an optimality proof
+  long long tsp_fallbacks = 0;  ///< TSP solves whose solver gave up on its method (a defect)
   long long replans = 0;
   long long assignments = 0;  ///< frontier assignments (Coop-Frontier)
 };

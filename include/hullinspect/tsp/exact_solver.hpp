@@ -1,7 +1,8 @@
 #pragma once
 // "exact" (the default TSP solver): proves optimality. Small instances go to a dynamic program over
 // (visited segments, exit end); larger ones to a branch-and-cut (subtour and blossom cuts, strong
-// branching, its own small dual simplex) that starts from the local search's tour. See docs/tsp.md
+// branching, its own small dual simplex) that starts from the local search's tour; above
+// `max_segments` (if set) the local search's tour is returned with a lower bound. See docs/tsp.md
 // for the method and measurements.
 
 #include <cstdint>
@@ -26,6 +27,15 @@ struct ExactOptions {
   int dp_max_segments = 8;
   /// Double-bridge kicks of the local search that gives the branch-and-cut its first tour.
   int kicks = 10;
+  /// Largest g the branch-and-cut is tried on; above it the answer is the local search's tour
+  /// (with `kicks` kicks) and a lower bound, optimal = false: bounded time whatever the instance
+  /// (docs/tsp.md, "Bounded solves"). 0 = no limit.
+  int max_segments = 120;
+  /// Work the branch-and-cut may do before it returns its best tour and its root bound with
+  /// optimal = false, in millions of units of Σ m² over its LP pivots (m rows): a deterministic
+  /// bound (the same answer on every machine and load, unlike time_limit), about 2 ms of CPU per
+  /// unit here (docs/tsp.md). 0 = no budget.
+  double work_budget = 50;
 };
 
 class ExactSolver final : public TspSolver {
@@ -33,10 +43,9 @@ class ExactSolver final : public TspSolver {
   explicit ExactSolver(ExactOptions options = {});
   ~ExactSolver() override;
   TspSolution solve(const SegmentTsp& problem) override;
-  /// Reads "time_limit", "dp_max_segments", "kicks"; rejects unknown keys.
+  /// Reads "time_limit", "dp_max_segments", "kicks", "max_segments", "work_budget"; rejects
+  /// unknown keys.
   static ExactOptions read_options(const OptionMap& options);
-  /// Solves handed to the dfj-iterative reference because the branch-and-cut gave up.
-  long long reference_fallbacks() const { return reference_fallbacks_; }
 
  private:
   ExactOptions options_;
@@ -45,7 +54,6 @@ class ExactSolver final : public TspSolver {
   std::unique_ptr<detail::LocalSearch> search_;
   std::unique_ptr<detail::BranchAndCut> branch_and_cut_;
   std::vector<int> entries_;
-  long long reference_fallbacks_ = 0;
 };
 
 }  // namespace hullinspect::tsp

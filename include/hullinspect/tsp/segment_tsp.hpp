@@ -35,6 +35,12 @@ struct TspSolution {
   std::vector<Visit> order;  ///< every segment exactly once
   long long length = 0;      ///< path length including the segments themselves
   bool optimal = false;      ///< optimality proven
+  /// A proven lower bound on the optimal length (= length when optimal): how far an unproven
+  /// tour can be from the optimum.
+  long long lower_bound = 0;
+  /// The solver's own method gave up (numerical trouble) and the answer is its best tour so far,
+  /// without a proof. Counted per mission (PlannerStats::tsp_fallbacks); tests assert zero.
+  bool fallback = false;
   double seconds = 0;
 };
 
