@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/partition/partitioner.hpp"
@@ -91,10 +92,10 @@ std::vector<bool> connected_regions(const world::HullMask& hull, const partition
 std::string region_mask(const world::HullMask& hull, const partition::Partition& p,
                         const PartitionArgs& args) {
   std::string text = fmt::format(
-      "; hullinspect partition: {}, {} UAVs, seed {}, hull {}\n"
+      "; hullinspect partition: {}, {}, seed {}, hull {}\n"
       "; one symbol per cell, top row (y = {}) first: UAV 0-9, then A-Z = 10-35, a-z = 36-61; "
       "'.' = not hull\n",
-      args.partitioner, args.uavs, args.seed, hull.source(), hull.height() - 1);
+      args.partitioner, plural(args.uavs, "UAV"), args.seed, hull.source(), hull.height() - 1);
   for (int y = hull.height() - 1; y >= 0; --y) {
     for (int x = 0; x < hull.width(); ++x) {
       const int k = p.owner(x, y);
@@ -108,8 +109,9 @@ std::string region_mask(const world::HullMask& hull, const partition::Partition&
 void print_summary(const PartitionArgs& args, const world::HullMask& hull,
                    const std::vector<grid::Cell>& starts, const partition::Partition& p,
                    const std::vector<bool>& connected) {
-  std::cout << fmt::format("{}: {} UAVs on {} ({} hull cells), seed {}\n", args.partitioner,
-                           args.uavs, hull.source(), hull.cell_count(), args.seed);
+  std::cout << fmt::format("{}: {} on {} ({}), seed {}\n", args.partitioner,
+                           plural(args.uavs, "UAV"), hull.source(),
+                           plural(hull.cell_count(), "hull cell"), args.seed);
   if (p.converged) {
     std::cout << fmt::format(
         "  converged after {} iterations in {:.3f} ms; tolerance reached {:g} "

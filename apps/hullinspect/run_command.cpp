@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
@@ -29,9 +30,9 @@ struct RunArgs {
 
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
-  std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
-                           spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
-                           r.complete ? "complete" : "INCOMPLETE (time limit reached)");
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
+                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2,
+                           spec.seed, r.complete ? "complete" : "INCOMPLETE (time limit reached)");
   auto time = [](const std::optional<int>& t) {
     return t ? fmt::format("{} s", *t) : std::string("—");
   };

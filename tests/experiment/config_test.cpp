@@ -44,7 +44,7 @@ TEST(ExperimentConfig, EmptyConfigGivesTheSpecDefaults) {
   EXPECT_DOUBLE_EQ(c.theta, 90.0);
   ASSERT_EQ(c.algorithms.size(), 1u);
   EXPECT_EQ(c.algorithms[0].label, "lawnmower");
-  ASSERT_EQ(c.seeds.size(), 50u);  // SPEC §6: 50 instances
+  ASSERT_EQ(c.seeds.size(), 50u);  // model.md §6: 50 instances
   EXPECT_EQ(c.seeds.front(), 1u);
   EXPECT_EQ(c.seeds.back(), 50u);
   EXPECT_EQ(c.time_limit, 20000);

@@ -20,7 +20,7 @@
 
 namespace hullinspect::experiment {
 
-/// One corrosion scenario: a built-in one (SPEC §6), a custom one, or one point of a sweep.
+/// One corrosion scenario: a built-in one (model.md §6), a custom one, or one point of a sweep.
 struct ScenarioSpec {
   std::string name;
   std::string sweep;        ///< the sweep it belongs to; empty for plain scenarios
