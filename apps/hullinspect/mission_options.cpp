@@ -34,7 +34,8 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
   cmd.add_option("--p-fp", a.p_fp,
                  "Probability that another hull cell is a false prior centre [0, 1] (default 0)");
   cmd.add_option("--hull", a.hull,
-                 "Hull mask: 'default', a text mask or a PGM image (see docs/formats.md)")
+                 "Hull: 'default', 'dtc', a text mask, a PGM image, a hull JSON or a mesh "
+                 "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
       ->type_name("FILE")
       ->capture_default_str();
   cmd.add_option("--time-limit", a.time_limit,
@@ -60,9 +61,20 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
       ->capture_default_str();
   cmd.add_option("--option,-O", a.planner_options, "Any other planner option as key=value (repeatable)")
       ->type_name("KEY=VALUE");
+  cmd.add_option("--prior", a.prior,
+                 "Expected corrosion C' from FILE (text mask or PGM, marked = corroded) instead of "
+                 "the generated prior")
+      ->type_name("FILE");
+  cmd.add_option("--truth", a.truth,
+                 "Ground truth C from FILE (text mask or PGM, marked = corroded) instead of the "
+                 "generated one")
+      ->type_name("FILE");
+  add_mesh_options(cmd, a.mesh);
 }
 
-world::HullMask load_mission_hull(const MissionArgs& a) { return world::load_hull(a.hull); }
+world::HullMask load_mission_hull(const MissionArgs& a) {
+  return load_hull_argument(a.hull, a.mesh);
+}
 
 namespace {
 grid::Cell parse_cell(const std::string& text) {
@@ -88,6 +100,7 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   p.theta_deg = a.theta;
   p.start_z = a.start_z;
   p.time_limit = a.time_limit;
+  if (hull.geometry()) p.cell_size_m = hull.geometry()->cell_size;
   for (const auto& s : a.starts) p.starts.push_back(parse_cell(s));
 
   planners::Scenario sc{"custom", "", 0.005, 0.005, 5, 5, 1.0, 0.0};
@@ -99,6 +112,7 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   if (a.p_tp) sc.p_tp = *a.p_tp;
   if (a.p_fp) sc.p_fp = *a.p_fp;
   spec.corrosion = sc.corrosion(hull.width());
+  spec.maps = world::load_user_maps(a.prior, a.truth, hull);
 
   auto put = [&](const char* key, const std::optional<std::string>& v) {
     if (v) spec.planner_options[key] = *v;

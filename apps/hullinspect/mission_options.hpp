@@ -9,6 +9,7 @@
 
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "mesh_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -31,6 +32,8 @@ struct MissionArgs {
   std::vector<std::string> fail;             // UAV@STEP
   double fail_rate = 0;
   int fail_one_within = 0;
+  MeshArgs mesh;                             // how a mesh --hull is imported
+  std::string prior, truth;                  // the user's C′ and C (any hull-mask format)
 };
 
 void add_mission_options(CLI::App& cmd, MissionArgs& args);

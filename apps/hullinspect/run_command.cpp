@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
@@ -29,8 +30,8 @@ struct RunArgs {
 
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
-  std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
-                           spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
+                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2, spec.seed,
                            r.complete         ? "complete"
                            : r.stopped_idle   ? "INCOMPLETE (no working UAV has work left)"
                            : r.failed_uavs == spec.params.uavs ? "INCOMPLETE (every UAV failed)"
@@ -66,7 +67,8 @@ int run(const RunArgs& args) {
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
-  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;

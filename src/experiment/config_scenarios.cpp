@@ -16,7 +16,7 @@ namespace {
 constexpr int kMaxLc = 999;
 
 /// A scenario being built: zones along x plus the prior's rates. "Halves" edits (front_/back_ keys)
-/// need the zones to be one zone or the SPEC's two halves split at a/2.
+/// need the zones to be one zone or model.md §2.s two halves split at a/2.
 struct Draft {
   world::CorrosionParams corrosion;
   int width = 0;

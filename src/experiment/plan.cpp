@@ -85,6 +85,7 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
   spec.failures = c.scenarios[static_cast<std::size_t>(cell.scenario)].failures;
   spec.seed = seed;
+  spec.maps = c.maps;
   return spec;
 }
 

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include "hullinspect/core/errors.hpp"
 
@@ -158,40 +159,49 @@ std::string summary_csv(const std::vector<SummaryRow>& rows) {
 }
 
 std::string summary_markdown(const std::vector<SummaryRow>& rows) {
-  std::vector<std::string> scenarios;
+  // One group per plain scenario and one per sweep (all its values in one table, not one
+  // one-row table per value).
+  auto group_of = [](const SummaryRow& r) { return r.sweep.empty() ? r.scenario : r.sweep; };
+  std::vector<std::pair<std::string, bool>> groups;  // (name, is a sweep)
   std::vector<std::string> algorithms;
   for (const auto& r : rows) {
-    if (std::find(scenarios.begin(), scenarios.end(), r.scenario) == scenarios.end()) {
-      scenarios.push_back(r.scenario);
-    }
+    const std::pair<std::string, bool> g{group_of(r), !r.sweep.empty()};
+    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
     if (std::find(algorithms.begin(), algorithms.end(), r.algorithm) == algorithms.end()) {
       algorithms.push_back(r.algorithm);
     }
   }
   std::string out;
-  for (const auto& scenario : scenarios) {
-    std::vector<std::pair<int, int>> params;  // (s2, n) in order of appearance
-    std::map<std::pair<std::pair<int, int>, std::string>, const SummaryRow*> cell;
+  for (const auto& [group, is_sweep] : groups) {
+    // Rows of the table: (swept value, s2, n) in order of appearance.
+    using Key = std::tuple<std::string, int, int>;
+    std::vector<Key> params;
+    std::map<std::pair<Key, std::string>, const SummaryRow*> cell;
     int runs = 0;
     for (const auto& r : rows) {
-      if (r.scenario != scenario) continue;
-      const auto p = std::make_pair(r.s2, r.uavs);
+      if (group_of(r) != group || r.sweep.empty() == is_sweep) continue;
+      const Key p{is_sweep ? r.sweep_value : std::string(), r.s2, r.uavs};
       if (std::find(params.begin(), params.end(), p) == params.end()) params.push_back(p);
       cell[{p, r.algorithm}] = &r;
       runs = std::max(runs, r.runs);
     }
     for (const bool mission : {false, true}) {
-      out += fmt::format("### {} — {} (s), mean ± std over {} instances\n\n", scenario,
-                         mission ? "T_m" : "T_c", runs);
+      out += fmt::format("### {}{} — {} (s), mean ± std over {} instances\n\n",
+                         is_sweep ? "sweep of " : "", group, mission ? "T_m" : "T_c", runs);
       std::vector<std::vector<std::string>> t;
-      std::vector<std::string> header = {"s2", "n"};
+      std::vector<std::string> header;
+      if (is_sweep) header.push_back(group);
+      header.insert(header.end(), {"s2", "n"});
       header.insert(header.end(), algorithms.begin(), algorithms.end());
       bool any_bound = false;
       for (const auto& [key, r] : cell) any_bound = any_bound || r->bound_t_c.count > 0;
       if (any_bound) header.push_back("lower bound");
       t.push_back(header);
       for (const auto& p : params) {
-        std::vector<std::string> line = {std::to_string(p.first), std::to_string(p.second)};
+        std::vector<std::string> line;
+        if (is_sweep) line.push_back(std::get<0>(p));
+        line.push_back(std::to_string(std::get<1>(p)));
+        line.push_back(std::to_string(std::get<2>(p)));
         for (const auto& a : algorithms) {
           auto it = cell.find({p, a});
           if (it == cell.end()) {

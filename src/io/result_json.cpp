@@ -58,6 +58,9 @@ json spec_json(const planners::MissionSpec& spec, const std::string& hull_source
   j["p_tp"] = spec.corrosion.p_tp;
   j["p_fp"] = spec.corrosion.p_fp;
   if (!spec.failures.empty()) j["failures"] = spec.failures.text();
+  // The user's maps, when they replaced the generated ones (the trace's prior/truth are theirs).
+  if (spec.maps.prior) j["prior_file"] = spec.maps.prior->source;
+  if (spec.maps.truth) j["truth_file"] = spec.maps.truth->source;
   return j;
 }
 

@@ -1,4 +1,5 @@
 #include "hullinspect/partition/darp_partitioner.hpp"
+#include "hullinspect/core/plural.hpp"
 
 #include <fmt/format.h>
 
@@ -257,9 +258,9 @@ Partition DarpPartitioner::partition(const PartitionRequest& request) const {
   out.tolerance = ws.best_connected_discrepancy();
   const bool repaired = connected_before_repair < 0 || out.tolerance < connected_before_repair;
   out.warnings.push_back(fmt::format(
-      "darp did not balance the regions within {} cell(s) in {} iterations; returned the best "
+      "darp did not balance the regions within {} in {}; returned the best "
       "connected partition found{} (largest imbalance {:g})",
-      options_.max_discrepancy, iterations,
+      plural(options_.max_discrepancy, "cell"), plural(iterations, "iteration"),
       repaired
           ? ", the best-balanced iterate with its stray pieces merged into neighbouring regions"
           : "",

@@ -21,7 +21,7 @@ std::unique_ptr<Partitioner> make_darp(const OptionMap& options) {
 
 const std::vector<PartitionerInfo>& registry() {
   static const std::vector<PartitionerInfo> entries = {
-      {"darp", "DARP (SPEC 5.1): connected, balanced regions grown from the start cells",
+      {"darp", "DARP (model.md §5.1): connected, balanced regions grown from the start cells",
        darp_option_specs(), &make_darp},
       {"stripes", "equal-area vertical bands, in the order of the start cells' x", {}, &make_stripes},
   };

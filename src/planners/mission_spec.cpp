@@ -12,7 +12,8 @@ void validate(const MissionSpec& spec, const world::HullMask& hull) {
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const MissionOptions& options) {
   validate(spec, hull);
-  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
   auto planner = make_planner(spec.algorithm, spec.planner_options);
   MissionOptions with_failures = options;
   if (with_failures.failures.empty()) with_failures.failures = spec.failures;

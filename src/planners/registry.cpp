@@ -111,7 +111,7 @@ const std::vector<PlannerInfo>& registry() {
        part_tsp_options(), &make_part_tsp_without_prior},
       {"coop-frontier",
        "cooperative frontier exploration on the shared map with prior/detection utilities and "
-       "close-up inspection of detections (SPEC 5.4)",
+       "close-up inspection of detections (model.md §5.4)",
        {{"alpha", fmt::format("{}", CoopFrontierOptions{}.alpha),
          "weight of the prior term 1/d_HP in the frontier utility (eq. 13), [0, 1]"},
         {"beta", fmt::format("{}", CoopFrontierOptions{}.beta),

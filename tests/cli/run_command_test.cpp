@@ -65,6 +65,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--uavs", "abc"},
                  "hullinspect: --uavs: 'abc' is not a valid value (see --help)"}));
 
+TEST(RunCommand, SummaryCountsOneUavInTheSingular) {
+  const auto one = run_cli({"run", "--uavs", "1", "--seed", "2"});
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_TRUE(one.out.starts_with("lawnmower with 1 UAV, s1 = 5, s2 = 7, seed 2: complete\n"))
+      << one.out;
+  const auto two = run_cli({"run", "--uavs", "2", "--seed", "2"});
+  ASSERT_EQ(two.status, 0) << two.err;
+  EXPECT_TRUE(two.out.starts_with("lawnmower with 2 UAVs, s1 = 5, s2 = 7, seed 2: complete\n"))
+      << two.out;
+}
+
 TEST(RunCommand, UnknownAlgorithmListsTheKnownOnes) {
   const auto r = run_cli({"run", "--algorithm", "zigzag"});
   EXPECT_EQ(r.status, 2);

@@ -44,7 +44,7 @@ TEST(ExperimentConfig, EmptyConfigGivesTheSpecDefaults) {
   EXPECT_DOUBLE_EQ(c.theta, 90.0);
   ASSERT_EQ(c.algorithms.size(), 1u);
   EXPECT_EQ(c.algorithms[0].label, "lawnmower");
-  ASSERT_EQ(c.seeds.size(), 50u);  // SPEC §6: 50 instances
+  ASSERT_EQ(c.seeds.size(), 50u);  // model.md §6: 50 instances
   EXPECT_EQ(c.seeds.front(), 1u);
   EXPECT_EQ(c.seeds.back(), 50u);
   EXPECT_EQ(c.time_limit, 20000);
@@ -197,7 +197,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
   const std::vector<BadConfig> cases = {
       {"s1: 5\ngrdi: {}\n",
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, s1, "
-       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve)"},
+       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, truth)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},

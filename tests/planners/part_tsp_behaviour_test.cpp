@@ -1,4 +1,4 @@
-// Behaviour of Part-TSP / Part-TSP₀ on small hand-made instances (SPEC §5.3).
+// Behaviour of Part-TSP / Part-TSP₀ on small hand-made instances (model.md §5.3).
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Whole Part-TSP / Part-TSP₀ missions on the default hull: every SPEC §6 scenario, s2 ∈ {7, 9, 11},
+// Whole Part-TSP / Part-TSP₀ missions on the default hull: every model.md §6 scenario, s2 ∈ {7, 9, 11},
 // n = 1…8, 20 seeds each, with the shared invariant checker — every mission must complete.
 //
 // The planners are built through the registry with the "heuristic" TSP solver: completion does not

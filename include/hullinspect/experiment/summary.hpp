@@ -35,8 +35,9 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
 std::string summary_csv(const std::vector<SummaryRow>& rows);
 
 /// Markdown: per scenario, a T_c table and a T_m table with one row per (s2, n) and one column per
-/// algorithm ("mean ± std", "[k incomplete]" when some missions did not complete). Columns are
-/// padded so the text also reads well in a terminal.
+/// algorithm; per sweep the same with one row per (swept value, s2, n) ("mean ± std", "[k
+/// incomplete]" when some missions did not complete). Columns are padded so the text also reads
+/// well in a terminal.
 std::string summary_markdown(const std::vector<SummaryRow>& rows);
 
 }  // namespace hullinspect::experiment

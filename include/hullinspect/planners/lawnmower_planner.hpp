@@ -15,7 +15,7 @@ struct LawnmowerOptions {
   std::uint64_t partition_seed = 0;  ///< seed of the partitioner (not of the instance)
 };
 
-/// The baseline of SPEC §5.2: descend to z = 1 once, then sweep the UAV's region strip by strip
+/// The baseline of model.md §5.2: descend to z = 1 once, then sweep the UAV's region strip by strip
 /// (strips of s1 rows from the bottom, flown along their centre rows, bottom to top, each from its
 /// nearer end). Ignores the prior and everything sensed.
 class LawnmowerPlanner final : public Planner {

@@ -1,5 +1,5 @@
 #pragma once
-// Part-TSP and Part-TSP₀ (SPEC §5.3, paper Section IV-A): a partition at t = 0, a local map per UAV
+// Part-TSP and Part-TSP₀ (model.md §5.3, paper Section IV-A): a partition at t = 0, a local map per UAV
 // fed only by its own readings, the plane-change FSM of Fig. 3, and plans that cover (z = 2) or
 // inspect (z = 1) the UAV's region segment by segment in the order of a segment TSP.
 // docs/part-tsp.md describes the behaviour, the path and transit rules and the options.

@@ -1,5 +1,5 @@
 #pragma once
-// The paper's corrosion scenarios (SPEC §6) by name.
+// The paper's corrosion scenarios (model.md §6) by name.
 
 #include <span>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // The simulator owns the ground truth C and the mission map M. It applies one action per UAV per
-// step, senses (SPEC §3) and records the metrics incrementally (SPEC §4). It never rescans the grid
+// step, senses (model.md §3) and records the metrics incrementally (model.md §4). It never rescans the grid
 // after construction and allocates nothing per step.
 
 #include <span>

@@ -1,5 +1,5 @@
 #pragma once
-// The segment TSP of Part-TSP (SPEC §5.3, eqs. 6–12): an open path from the UAV through every
+// The segment TSP of Part-TSP (model.md §5.3, eqs. 6–12): an open path from the UAV through every
 // segment, each segment flown end to end in one of its two directions, Manhattan costs.
 // Solvers (docs/tsp.md): "exact" (default, proves optimality), "dfj-iterative" (the paper's
 // reference on CBC), "heuristic" (fast local search, no optimality claim).
