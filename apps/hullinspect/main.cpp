@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   cli::add_experiment_commands(app, action);
   cli::add_view_command(app, action);
   cli::add_list_command(app, action);
+  cli::add_hull_command(app, action);
   cli::add_export_command(app, action);
   cli::add_plan_command(app, action);
   try {

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
@@ -32,6 +33,7 @@ struct PartitionArgs {
   std::vector<std::string> options;  // key=value
   bool json = false;
   std::string out_path;
+  MeshArgs mesh;  // how a mesh --hull is imported
 };
 
 grid::Cell parse_start(const std::string& text) {
@@ -154,7 +156,7 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
 }
 
 int run_partition(const PartitionArgs& args) {
-  const world::HullMask hull = world::load_hull(args.hull);
+  const world::HullMask hull = load_hull_argument(args.hull, args.mesh);
   world::MissionParams params;
   params.uavs = args.uavs;
   for (const auto& s : args.starts) params.starts.push_back(parse_start(s));
@@ -215,9 +217,11 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
       "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
   cmd->add_option("--uavs,-n", args->uavs, "Fleet size n (1 … number of hull cells)")->required();
   cmd->add_option("--hull", args->hull,
-                  "Hull mask: 'default', a text mask or a PGM image (see docs/formats.md)")
+                  "Hull: 'default', 'dtc', a text mask, a PGM image, a hull JSON or a mesh "
+                  "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
       ->type_name("FILE")
       ->capture_default_str();
+  add_mesh_options(*cmd, args->mesh);
   cmd->add_option("--start", args->starts,
                   "Start cell x,y of each UAV (repeat once per UAV; default: spread along the "
                   "hull); cells off the hull are snapped to the nearest hull cell")

@@ -31,8 +31,20 @@ struct RunArgs {
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
   std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
-                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2,
-                           spec.seed, r.complete ? "complete" : "INCOMPLETE (time limit reached)");
+                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2, spec.seed,
+                           r.complete         ? "complete"
+                           : r.stopped_idle   ? "INCOMPLETE (no working UAV has work left)"
+                           : r.failed_uavs == spec.params.uavs ? "INCOMPLETE (every UAV failed)"
+                                                               : "INCOMPLETE (time limit reached)");
+  if (r.failed_uavs > 0) {
+    std::string which;
+    for (std::size_t k = 0; k < r.uavs.size(); ++k) {
+      if (r.uavs[k].failed_at >= 0) {
+        which += fmt::format("{}UAV {} at t = {}", which.empty() ? "" : ", ", k, r.uavs[k].failed_at);
+      }
+    }
+    std::cout << fmt::format("  failed: {}\n", which);
+  }
   auto time = [](const std::optional<int>& t) {
     return t ? fmt::format("{} s", *t) : std::string("—");
   };
@@ -55,7 +67,8 @@ int run(const RunArgs& args) {
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
-  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;
@@ -64,6 +77,7 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
+  options.failures = spec.failures;
   const sim::MissionResult result =
       planners::run_mission(hull, instance, spec.params, *planner, options);
   if (tracing) {

@@ -26,7 +26,9 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
       "theta={}|uavs={}|start_z={}|time_limit={}|algorithm={}|planner={}|options={}",
       c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp, c.s1,
       c.s2[static_cast<std::size_t>(cell.s2)], c.theta, c.uavs[static_cast<std::size_t>(cell.uavs)],
-      c.start_z, c.time_limit, a.label, a.planner, options);
+      c.start_z, c.time_limit, a.label, a.planner, options) +
+         // Only scenarios with failures say so, so that every other run keeps its id.
+         (s.failures.empty() ? std::string() : "|failures=" + s.failures.text());
 }
 
 }  // namespace
@@ -93,7 +95,9 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.start_z = c.start_z;
   spec.params.time_limit = c.time_limit;
   spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
+  spec.failures = c.scenarios[static_cast<std::size_t>(cell.scenario)].failures;
   spec.seed = seed;
+  spec.maps = c.maps;
   return spec;
 }
 

@@ -40,7 +40,9 @@ std::vector<std::string> runs_header() {
           "steps_z1",     "steps_z2",
           "steps_transit", "tsp_solves",
           "tsp_unproven", "tsp_fallbacks",
-          "replans",      "assignments"};
+          "replans",      "assignments",
+          "failures",     "failed_uavs",
+          "bound_T_c",    "bound_T_m"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -92,7 +94,9 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
       std::to_string(total.steps_z1), std::to_string(total.steps_z2),
       std::to_string(total.steps_transit), std::to_string(r.planner.tsp_solves),
       std::to_string(r.planner.tsp_unproven), std::to_string(r.planner.tsp_fallbacks),
-      std::to_string(r.planner.replans), std::to_string(r.planner.assignments)});
+      std::to_string(r.planner.replans), std::to_string(r.planner.assignments),
+      s.failures.text(), std::to_string(r.failed_uavs), std::to_string(r.bound_t_c),
+      std::to_string(r.bound_t_m)});
 
   const auto times = c.curve.times();
   std::string samples = run.id;
