@@ -10,6 +10,7 @@
 
 #include "experiment_commands.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/experiment/build_data.hpp"
 #include "hullinspect/experiment/presets.hpp"
 #include "hullinspect/experiment/runner.hpp"
@@ -93,10 +94,11 @@ int run(const ExperimentArgs& a) {
   const auto summary = experiment::run_experiment(plan, a.out, options);
   reporter.finish();
   std::cout << fmt::format(
-      "{}: {} runs of shard {} in {} ({} run now in {:.1f} s, {:.1f} missions/s, {} jobs, {} "
-      "resumed)\n",
-      config.name, summary.total, options.shard.text(), a.out, summary.ran, summary.seconds,
-      summary.seconds > 0 ? summary.ran / summary.seconds : 0.0, summary.jobs, summary.resumed);
+      "{}: {} of shard {} in {} ({} now in {:.1f} s, {:.1f} missions/s, {}, {} resumed)\n",
+      config.name, plural(summary.total, "run"), options.shard.text(), a.out,
+      plural(summary.ran, "run"), summary.seconds,
+      summary.seconds > 0 ? summary.ran / summary.seconds : 0.0, plural(summary.jobs, "job"),
+      summary.resumed);
   if (options.shard.whole()) {
     std::cout << fmt::format("next: hullinspect report {} --out {}/report\n", a.out, a.out);
   } else {

@@ -14,16 +14,7 @@
 
 namespace hullinspect::cli {
 
-std::string option_name(const std::string& parameter) {
-  std::string name = parameter;
-  if (auto dot = name.rfind('.'); dot != std::string::npos) name = name.substr(dot + 1);
-  for (char& c : name) {
-    if (c == '_') c = '-';
-  }
-  // The library checks a list of start cells ("starts"); each is one --start on the command line.
-  if (name == "starts") return "--start";
-  return "--" + name;
-}
+std::string option_name(const std::string& parameter) { return hullinspect::option_name(parameter); }
 
 namespace {
 
@@ -74,6 +65,8 @@ int main(int argc, char** argv) {
   cli::add_tsp_command(app, action);
   cli::add_experiment_commands(app, action);
   cli::add_view_command(app, action);
+  cli::add_list_command(app, action);
+  cli::add_hull_command(app, action);
   cli::add_export_command(app, action);
   cli::add_plan_command(app, action);
   cli::require_exact_numbers(app);
@@ -102,8 +95,7 @@ int main(int argc, char** argv) {
   try {
     return cli::finish_stdout(action ? action() : 0);
   } catch (const ParameterError& e) {
-    std::cerr << "hullinspect: " << cli::option_name(e.name()) << ": " << cli::one_line(e.problem())
-              << "\n";
+    std::cerr << "hullinspect: " << cli::one_line(user_message(e)) << "\n";
     return cli::kExitBadInput;
   } catch (const InputError& e) {
     std::cerr << "hullinspect: " << cli::one_line(e.what()) << "\n";

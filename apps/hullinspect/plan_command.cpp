@@ -37,7 +37,8 @@ int plan(const PlanArgs& args) {
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
   auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
-  instance.truth = instance.prior;  // the world as known before take-off
+  world::apply(spec.maps, instance);  // the user's --prior, if given
+  instance.truth = instance.prior;    // the world as known before take-off
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   io::TraceRecorder recorder(instance, io::spec_json(spec, hull.source()));
   planners::MissionOptions options;

@@ -9,11 +9,12 @@
 #include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/output_set.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/io/viewer_html.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "mission_options.hpp"
 
 namespace hullinspect::cli {
@@ -30,9 +31,21 @@ struct RunArgs {
 
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
-  std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
-                           spec.params.uavs, spec.params.s1, spec.params.s2, spec.seed,
-                           r.complete ? "complete" : "INCOMPLETE (time limit reached)");
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
+                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2, spec.seed,
+                           r.complete         ? "complete"
+                           : r.stopped_idle   ? "INCOMPLETE (no working UAV has work left)"
+                           : r.failed_uavs == spec.params.uavs ? "INCOMPLETE (every UAV failed)"
+                                                               : "INCOMPLETE (time limit reached)");
+  if (r.failed_uavs > 0) {
+    std::string which;
+    for (std::size_t k = 0; k < r.uavs.size(); ++k) {
+      if (r.uavs[k].failed_at >= 0) {
+        which += fmt::format("{}UAV {} at t = {}", which.empty() ? "" : ", ", k, r.uavs[k].failed_at);
+      }
+    }
+    std::cout << fmt::format("  failed: {}\n", which);
+  }
   auto time = [](const std::optional<int>& t) {
     return t ? fmt::format("{} s", *t) : std::string("—");
   };
@@ -60,7 +73,8 @@ int run(const RunArgs& args) {
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
-  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;
@@ -69,6 +83,7 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
+  options.failures = spec.failures;
   const sim::MissionResult result =
       planners::run_mission(hull, instance, spec.params, *planner, options);
   if (tracing) {

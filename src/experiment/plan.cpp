@@ -4,6 +4,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
+#include "hullinspect/planners/planner.hpp"
 
 namespace hullinspect::experiment {
 
@@ -27,12 +28,25 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
       "theta={}|uavs={}|start_z={}|time_limit={}|algorithm={}|planner={}|options={}",
       c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp, c.s1,
       c.s2[static_cast<std::size_t>(cell.s2)], c.theta, c.uavs[static_cast<std::size_t>(cell.uavs)],
-      c.start_z, c.time_limit, a.label, a.planner, options);
+      c.start_z, c.time_limit, a.label, a.planner, options) +
+         // Only scenarios with failures say so, so that every other run keeps its id.
+         (s.failures.empty() ? std::string() : "|failures=" + s.failures.text());
 }
 
 }  // namespace
 
 ExperimentPlan::ExperimentPlan(ExperimentConfig config) : config_(std::move(config)) {
+  if (config_.hull) {
+    // Every algorithm's effective options (defaults included) define its cells, the manifest and
+    // runs.csv, so an option spelled out at its default names the same experiment as one left out.
+    for (auto& a : config_.algorithms) {
+      try {
+        a.options = planners::resolve_planner_options(a.planner, a.options);
+      } catch (const ParameterError& e) {
+        throw InputError(config_.source, a.line, e.what());
+      }
+    }
+  }
   const auto& c = config_;
   for (int sc = 0; sc < static_cast<int>(c.scenarios.size()); ++sc) {
     for (int s2 = 0; s2 < static_cast<int>(c.s2.size()); ++s2) {
@@ -84,7 +98,9 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.start_z = c.start_z;
   spec.params.time_limit = c.time_limit;
   spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
+  spec.failures = c.scenarios[static_cast<std::size_t>(cell.scenario)].failures;
   spec.seed = seed;
+  spec.maps = c.maps;
   return spec;
 }
 

@@ -44,7 +44,9 @@ std::vector<std::string> runs_header() {
           "steps_z1",     "steps_z2",
           "steps_transit", "tsp_solves",
           "tsp_unproven", "tsp_fallbacks",
-          "replans",      "assignments"};
+          "replans",      "assignments",
+          "failures",     "failed_uavs",
+          "bound_T_c",    "bound_T_m"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -100,6 +102,12 @@ std::vector<std::string> run_parameter_fields(const ExperimentPlan& plan, const 
           std::to_string(run.seed)};
 }
 
+static std::string failures_field(const ExperimentPlan& plan, const RunKey& run) {
+  const auto& c = plan.config();
+  const Cell& cell = plan.cells()[static_cast<std::size_t>(run.cell)];
+  return c.scenarios[static_cast<std::size_t>(cell.scenario)].failures.text();
+}
+
 std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::string_view line) {
   const auto fields = split_csv_line(line);
   const auto header = runs_header();
@@ -113,6 +121,15 @@ std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::
   }
   for (std::size_t k = expected.size(); k < header.size(); ++k) {
     const std::string& v = (*fields)[k];
+    if (header[k] == "failures") {
+      // A parameter, though it comes after the results: the scenario's failure model.
+      const auto expected_failures = failures_field(plan, run);
+      if (v != expected_failures) {
+        return fmt::format("failures is '{}' but run {} of this experiment has '{}'",
+                           escape_for_message(v), run.id, escape_for_message(expected_failures));
+      }
+      continue;
+    }
     const bool optional = header[k] == "T_c" || header[k] == "T_m";
     if (optional && v.empty()) continue;
     try {
@@ -140,7 +157,9 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
         std::to_string(total.steps_z1), std::to_string(total.steps_z2),
         std::to_string(total.steps_transit), std::to_string(r.planner.tsp_solves),
         std::to_string(r.planner.tsp_unproven), std::to_string(r.planner.tsp_fallbacks),
-        std::to_string(r.planner.replans), std::to_string(r.planner.assignments)}) {
+        std::to_string(r.planner.replans), std::to_string(r.planner.assignments),
+        failures_field(plan, run), std::to_string(r.failed_uavs), std::to_string(r.bound_t_c),
+        std::to_string(r.bound_t_m)}) {
     fields.push_back(std::move(value));
   }
   record.runs = csv_line(fields);

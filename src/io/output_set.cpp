@@ -45,9 +45,16 @@ fs::path parent_of(const fs::path& p) {
   return parent.empty() ? fs::path(".") : parent;
 }
 
-void check_parent(const fs::path& path, const std::string& option) {
-  const fs::path parent = parent_of(path);
+// An output directory is created with its missing parents (like mkdir -p, as `--out results/x`
+// always did), so for one the nearest existing ancestor is checked instead.
+void check_parent(const fs::path& path, const std::string& option, bool create_parents) {
+  fs::path parent = parent_of(path);
   struct stat st {};
+  if (create_parents) {
+    while (::stat(parent.c_str(), &st) != 0 && parent.has_relative_path()) {
+      parent = parent.parent_path();
+    }
+  }
   if (::stat(parent.c_str(), &st) != 0) {
     throw ParameterError(option, fmt::format("cannot write '{}': directory '{}' does not exist",
                                              shown(path), shown(parent)));
@@ -116,7 +123,7 @@ void OutputSet::check() const {
       throw ParameterError(
           out.option, fmt::format("cannot use '{}': {}", shown(out.path), std::strerror(errno)));
     }
-    if (!out.directory || ::stat(out.path.c_str(), &st) != 0) check_parent(out.path, out.option);
+    if (!out.directory || ::stat(out.path.c_str(), &st) != 0) check_parent(out.path, out.option, out.directory);
     for (const Entry& in : inputs_) {
       if (same_file(out.path, in.path)) {
         throw ParameterError(out.option,

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <string_view>
 
 #include "hullinspect/core/errors.hpp"
@@ -93,8 +94,23 @@ class TraceChecker {
   std::string source_;
 };
 
+// Sorted, distinct flat cell indices inside the grid.
+void check_cell_set(const TraceChecker& check, const json& v, const std::string& where,
+                    std::int64_t cells) {
+  check.array(v, where);
+  std::int64_t previous = -1;
+  for (std::size_t j = 0; j < v.size(); ++j) {
+    const auto at = fmt::format("{}[{}]", where, j);
+    const auto c = check.integer(v[j], at, 0, cells - 1);
+    if (c <= previous)
+      check.fail(at, fmt::format("{} is not above the previous index {}", c, previous));
+    previous = c;
+  }
+}
+
+// `layers_seen`: the layers whose whole set an earlier frame gave (changes need one).
 void check_frame(const TraceChecker& check, const json& f, std::size_t i, int width, int height,
-                 std::size_t uav_values) {
+                 std::size_t uav_values, std::set<std::string>& layers_seen) {
   const auto where = fmt::format("frames[{}]", i);
   check.object(f, where);
   const auto cells = static_cast<std::int64_t>(width) * height;
@@ -143,11 +159,24 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
   if (auto l = f.find("l"); l != f.end()) {
     check.object(*l, where + ".l");
-    for (const auto& [name, indices] : l->items()) {
+    for (const auto& [name, value] : l->items()) {
       const auto at = fmt::format("{}.l.{}", where, name);
-      check.array(indices, at);
-      for (std::size_t j = 0; j < indices.size(); ++j) {
-        check.integer(indices[j], fmt::format("{}[{}]", at, j), 0, cells - 1);
+      if (value.is_array()) {
+        check_cell_set(check, value, at, cells);
+        layers_seen.insert(name);
+        continue;
+      }
+      if (!value.is_object()) {
+        check.fail(at,
+                   "expected the layer's cells (an array) or its changes {\"add\", \"remove\"}");
+      }
+      if (!layers_seen.contains(name)) {
+        check.fail(at, "changes to a layer whose whole set was not given before");
+      }
+      for (const auto& [key, part] : value.items()) {
+        if (key != "add" && key != "remove")
+          check.fail(at + "." + key, "unknown key (known: add, remove)");
+        check_cell_set(check, part, at + "." + key, cells);
       }
     }
   }
@@ -166,9 +195,12 @@ void validate_trace(const json& trace, const std::string& source) {
     check.fail("format", fmt::format("expected \"{}\" (not a hullinspect trace?)", kTraceFormat));
   }
   const auto& version = check.field(trace, "", "version");
-  if (!version.is_number_integer() || version.get<int>() != kTraceVersion) {
-    check.fail("version", fmt::format("{} is not supported (this hullinspect reads version {})",
-                                      version.dump(), kTraceVersion));
+  // Version 1 is version 2 without layer changes, so both are read.
+  if (!version.is_number_integer() || version.get<int>() < 1 ||
+      version.get<int>() > kTraceVersion) {
+    check.fail("version",
+               fmt::format("{} is not supported (this hullinspect reads versions 1 to {})",
+                           version.dump(), kTraceVersion));
   }
   check.object(check.field(trace, "", "parameters"), "parameters");
 
@@ -211,8 +243,9 @@ void validate_trace(const json& trace, const std::string& source) {
     check.fail("frames[0].u",
                fmt::format("expected {} numbers per UAV, got {} in all", kUavFields, u0.size()));
   }
+  std::set<std::string> layers_seen;
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    check_frame(check, frames[i], i, width, height, u0.size());
+    check_frame(check, frames[i], i, width, height, u0.size(), layers_seen);
   }
 
   const auto last = static_cast<std::int64_t>(frames.size()) - 1;

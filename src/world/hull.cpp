@@ -10,6 +10,8 @@
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/grid/distance.hpp"
 #include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/world/cell_map.hpp"
+#include "hullinspect/world/mesh_hull.hpp"
 
 namespace hullinspect::world {
 
@@ -75,7 +77,7 @@ grid::Cell HullMask::snap(grid::Cell c) const {
   return best;
 }
 
-HullMask parse_text_mask(std::string_view text, const std::string& source) {
+grid::Grid<std::uint8_t> parse_text_cells(std::string_view text, const std::string& source) {
   std::vector<std::string> rows;
   std::vector<int> row_lines;
   int line_no = 0;
@@ -125,7 +127,11 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
     const int y = height - 1 - r;  // first text row is the top of the hull
     for (int x = 0; x < width; ++x) mask(x, y) = rows[static_cast<std::size_t>(r)][x] != '.';
   }
-  return HullMask(std::move(mask), source);
+  return mask;
+}
+
+HullMask parse_text_mask(std::string_view text, const std::string& source) {
+  return HullMask(parse_text_cells(text, source), source);
 }
 
 namespace {
@@ -181,7 +187,7 @@ class PgmHeaderReader {
 
 }  // namespace
 
-HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
+grid::Grid<std::uint8_t> parse_pgm_cells(std::string_view bytes, const std::string& source) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
     throw InputError(source, 1,
                      fmt::format("not a greyscale PGM image (magic '{}'; expected 'P2' or 'P5')",
@@ -230,7 +236,25 @@ HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
       mask(x, y) = 2 * v > maxval;
     }
   }
-  return HullMask(std::move(mask), source);
+  return mask;
+}
+
+HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
+  return HullMask(parse_pgm_cells(bytes, source), source);
+}
+
+grid::Grid<std::uint8_t> load_cell_map(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name, 0, "cannot open the file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  const std::string bytes = buffer.str();
+  if (bytes.size() > 64u * 1024 * 1024) throw InputError(name, 0, "file is larger than 64 MiB");
+  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
+    return parse_pgm_cells(bytes, name);
+  }
+  return parse_text_cells(bytes, name);
 }
 
 const HullMask& default_hull() {
@@ -241,10 +265,12 @@ const HullMask& default_hull() {
 HullMask load_hull(const std::filesystem::path& path) {
   if (path == "default" || path == "builtin:default") return default_hull();
   const std::string name = path.string();
+  if (is_named_mesh_hull(name) || is_mesh_path(path)) return load_any_hull(path);
   const std::string bytes = io::read_file(path, kMaxHullFileBytes, "the hull file");
   if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '0' && bytes[1] <= '9') {
     return parse_pgm_mask(bytes, name);
   }
+  if (path.extension() == ".json") return parse_hull_json(bytes, name);
   return parse_text_mask(bytes, name);
 }
 

@@ -217,6 +217,15 @@ TEST_F(ExportCli, RunExportWritesWhatExportOfItsTraceWrites) {
   EXPECT_EQ(stray.err, "hullinspect: --origin: has no effect without --export DIR\n");
 }
 
+TEST_F(ExportCli, PlanRefusesBadExportOptionsBeforePlanning) {
+  const auto r = run_cli({"plan", "-n", "2", "--export", dir_ + "/p", "--format", "wpl", "--geo",
+                          "/nonexistent.yaml"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: /nonexistent.yaml: cannot open the geo-reference file\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(dir_ + "/p"));
+}
+
 TEST_F(ExportCli, PlanFliesThePriorAndExportsItsWaypoints) {
   // With an imperfect prior the plan (truth = prior) and the flight (the real truth) differ.
   const std::vector<std::string> mission = {"-a",         "part-tsp", "-n",     "3",

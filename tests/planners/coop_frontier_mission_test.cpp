@@ -10,7 +10,7 @@
 #include "coop_frontier_fixtures.hpp"
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/mission.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 
 namespace hullinspect::planners {
@@ -33,7 +33,7 @@ class CoopFrontierMatrix : public ::testing::TestWithParam<MatrixCell> {};
 
 TEST_P(CoopFrontierMatrix, EveryMissionCompletesUnderTheChecker) {
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario(GetParam().scenario).corrosion(hull.width());
+  const auto corrosion = world::scenario(GetParam().scenario).corrosion(hull.width());
   for (int n = 1; n <= 8; ++n) {
     for (int seed = 1; seed <= kSeedsPerCell; ++seed) {
       const auto instance =
@@ -76,7 +76,7 @@ class FailureWatcher final : public MissionObserver {
   void on_step(const sim::Simulator& sim, const Planner& planner) override {
     const auto& cf = dynamic_cast<const CoopFrontierPlanner&>(planner);
     for (int k : failed_) {
-      if (sim.uavs()[static_cast<std::size_t>(k)].active) continue;
+      if (!sim.uavs()[static_cast<std::size_t>(k)].failed) continue;
       // The planner learns of the failure at its next decision, i.e. one step later.
       if (seen_inactive_.count(k) && cf.mode(k) != Mode::kFailed) bad_ = true;
       if (seen_inactive_.count(k) && (!cf.claims().claims(k).empty() || cf.target(k))) bad_ = true;
@@ -94,7 +94,7 @@ class FailureWatcher final : public MissionObserver {
 TEST(CoopFrontierMission, OthersCompleteWhenUavsFailMidMission) {
   const auto& hull = world::default_hull();
   for (const char* name : {"perfect", "combined"}) {
-    const auto corrosion = scenario(name).corrosion(hull.width());
+    const auto corrosion = world::scenario(name).corrosion(hull.width());
     for (int seed = 1; seed <= 5; ++seed) {
       for (const auto& failures : std::vector<std::vector<UavFailure>>{
                {{1, 40}}, {{0, 1}}, {{3, 120}}, {{0, 30}, {2, 60}}}) {
@@ -109,7 +109,7 @@ TEST(CoopFrontierMission, OthersCompleteWhenUavsFailMidMission) {
         FailureWatcher watcher(failed);
         MissionOptions options;
         options.observers = {&checker, &watcher};
-        options.failures = failures;
+        options.failures.at = failures;
         const auto r = run_mission(hull, instance, params, planner, options);
         SCOPED_TRACE(::testing::Message() << name << " seed " << seed << " first failure UAV "
                                           << failures[0].uav << " at " << failures[0].time);
@@ -140,7 +140,7 @@ TEST(CoopFrontierMission, FailureWhileInspectingReleasesTheClaims) {
   testing::MissionChecker checker;
   MissionOptions options;
   options.observers = {&checker};
-  options.failures = {{0, 1}};
+  options.failures.at = {{0, 1}};
   const auto r = run_mission(hull, instance, params, planner, options);
   ASSERT_TRUE(r.complete);
   EXPECT_TRUE(checker.ok());
@@ -150,9 +150,53 @@ TEST(CoopFrontierMission, FailureWhileInspectingReleasesTheClaims) {
   EXPECT_GE(r.uavs[1].plane_changes, 1);  // UAV 1 went down to inspect (8, 5)
 }
 
+TEST(CoopFrontierMission, ActionsDoNotDependOnUnseenTruth) {
+  // Same prior, different truth: B has extra corrosion far from the start cells. The two missions
+  // must decide identically until some UAV's readings differ.
+  const auto& hull = world::default_hull();
+  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
+  for (int seed = 1; seed <= 3; ++seed) {
+    const auto a = world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
+    auto b = a;
+    for (int y = 20; y < 25; ++y) {
+      for (int x = 110; x < 118; ++x) {
+        if (hull.is_hull(x, y) && b.prior(x, y) == 0) b.truth(x, y) = 1;
+      }
+    }
+    ASSERT_NE(a.truth, b.truth);
+    world::MissionParams params;
+    params.uavs = 4;
+    CoopFrontierPlanner pa;
+    CoopFrontierPlanner pb;
+    testing::LockStep ra(hull, a, params, pa);
+    testing::LockStep rb(hull, b, params, pb);
+    int same_steps = 0;
+    bool diverged = false;
+    while (!ra.sim().finished() && !rb.sim().finished()) {
+      const auto& view_a = ra.sim().view();
+      const auto& view_b = rb.sim().view();
+      for (int k = 0; k < params.uavs && !diverged; ++k) {
+        const auto la = view_a.sensed.readings(k);
+        const auto lb = view_b.sensed.readings(k);
+        if (la.size() != lb.size()) diverged = true;
+        for (std::size_t i = 0; i < la.size() && !diverged; ++i) {
+          diverged = la[i].index != lb[i].index || la[i].value != lb[i].value;
+        }
+      }
+      if (diverged) break;
+      ASSERT_EQ(ra.decide(), rb.decide()) << "seed " << seed << " t = " << ra.sim().time();
+      ra.step();
+      rb.step();
+      ++same_steps;
+    }
+    EXPECT_TRUE(diverged) << "the extra corrosion was never seen";
+    EXPECT_GT(same_steps, 10);
+  }
+}
+
 TEST(CoopFrontierMission, IdenticalRunsGiveIdenticalResults) {
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario("combined").corrosion(hull.width());
+  const auto corrosion = world::scenario("combined").corrosion(hull.width());
   const auto instance = world::generate_instance(hull, corrosion, 11);
   world::MissionParams params;
   params.uavs = 6;
@@ -178,7 +222,7 @@ TEST(CoopFrontierMission, StateMatchesItsDefinitionsAtEveryDecision) {
   const auto& hull = world::default_hull();
   for (const char* name : {"imperfect", "combined"}) {
     const auto instance =
-        world::generate_instance(hull, scenario(name).corrosion(hull.width()), 21);
+        world::generate_instance(hull, world::scenario(name).corrosion(hull.width()), 21);
     world::MissionParams params;
     params.uavs = 5;
     params.s2 = 11;

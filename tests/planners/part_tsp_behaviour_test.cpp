@@ -1,4 +1,4 @@
-// Behaviour of Part-TSP / Part-TSP₀ on small hand-made instances (SPEC §5.3).
+// Behaviour of Part-TSP / Part-TSP₀ on small hand-made instances (model.md §5.3).
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "part_tsp_recorder.hpp"
 #include "part_tsp_test_support.hpp"
 #include "support/mission_checker.hpp"
@@ -183,7 +183,7 @@ TEST(PartTspBehaviour, SameInputsGiveIdenticalResultsAndTraces) {
     planners::MissionSpec spec;
     spec.algorithm = name;
     spec.params.uavs = 3;
-    spec.corrosion = planners::scenario("imperfect").corrosion(230);
+    spec.corrosion = world::scenario("imperfect").corrosion(230);
     spec.seed = 11;
     auto run_traced = [&] {
       const auto instance =

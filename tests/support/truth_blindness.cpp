@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "hullinspect/planners/mission.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 
 namespace hullinspect::testing {
 
@@ -40,7 +40,7 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
                                                   const world::MissionParams& params, std::uint64_t seed,
                                                   TruthBlindnessReport* report) {
   const auto& hull = world::default_hull();
-  const auto corrosion = planners::scenario("imperfect").corrosion(hull.width());
+  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
   const auto a = world::generate_instance(hull, corrosion, seed);
   world::Instance b = a;
   for (int i : hull.cells()) {

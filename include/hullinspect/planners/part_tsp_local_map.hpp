@@ -1,5 +1,5 @@
 #pragma once
-// The local maps M^k of Part-TSP (SPEC §5.3): UAV k knows only its region R_k, and only from its
+// The local maps M^k of Part-TSP (model.md §5.3): UAV k knows only its region R_k, and only from its
 // own readings (no communication). Regions are disjoint, so all the M^k live in one grid where a
 // cell holds the value of its owner's map.
 //
@@ -45,7 +45,7 @@ class LocalMaps {
   LocalMaps(const grid::Grid<std::int16_t>& owner, const grid::Grid<std::int8_t>& prior,
             bool use_prior, int uavs, int s1, int s2);
 
-  /// Applies UAV k's readings of one step to M^k (the SPEC §3 table, cells of R_k only).
+  /// Applies UAV k's readings of one step to M^k (the model.md §3 table, cells of R_k only).
   LocalEvents ingest(int k, std::span<const sim::Reading> readings);
 
   int uavs() const { return static_cast<int>(regions_.size()); }

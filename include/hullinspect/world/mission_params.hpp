@@ -1,5 +1,5 @@
 #pragma once
-// Mission parameters (SPEC §1): fleet, camera footprints, plane-change time, start cells, time limit.
+// Mission parameters (model.md §1): fleet, camera footprints, plane-change time, start cells, time limit.
 
 #include <cstdint>
 #include <optional>
@@ -18,7 +18,7 @@ struct MissionParams {
   double cell_size_m = 0.5;          ///< side of one cell in metres (for reports and exports)
   double plane_speed_cells = 1.0;    ///< standoff change per step, cells per step (> 0)
   int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
-  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = SPEC §1 default spacing
+  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
   int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
 
   /// Δζ = (s2 − s1) / (2·tan(θ/2)), in cells.
@@ -32,7 +32,7 @@ struct MissionParams {
 /// Throws ParameterError naming the field ("uavs", "s2", "theta", …) and the accepted range.
 void validate(const MissionParams& params, const HullMask& hull);
 
-/// The start cells of the mission: `params.starts` snapped to the hull, or the SPEC §1 defaults
+/// The start cells of the mission: `params.starts` snapped to the hull, or the model.md §1 defaults
 /// x_k = floor((k + 0.5)·a/n), y = floor(b/2), snapped to the nearest hull cell.
 std::vector<grid::Cell> start_cells(const MissionParams& params, const HullMask& hull);
 
