@@ -11,7 +11,7 @@
 
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/mission.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
 
@@ -24,7 +24,7 @@ void BM_CoopFrontierMission(benchmark::State& state) {
   world::MissionParams params;
   params.uavs = static_cast<int>(state.range(0));
   params.s2 = 7;
-  const auto corrosion = planners::scenario("perfect").corrosion(hull.width());
+  const auto corrosion = world::scenario("perfect").corrosion(hull.width());
   std::vector<world::Instance> instances;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     instances.push_back(world::generate_instance(hull, corrosion, seed));

@@ -1,4 +1,4 @@
-// DARP on the default hull with the default start cells (SPEC §1), n = 2, 4, 6, 8 UAVs: time per
+// DARP on the default hull with the default start cells (model.md §1), n = 2, 4, 6, 8 UAVs: time per
 // partition and, as counters, the iterations, whether it converged and the largest imbalance.
 //
 //   build/release/darp_bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true

@@ -6,7 +6,7 @@
 
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/partition_cache.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 
 namespace {
 
@@ -18,7 +18,7 @@ void run_missions(benchmark::State& state, const std::string& algorithm) {
   spec.algorithm = algorithm;
   spec.params.uavs = static_cast<int>(state.range(0));
   spec.params.s2 = 7;
-  spec.corrosion = planners::scenario("perfect").corrosion(hull.width());
+  spec.corrosion = world::scenario("perfect").corrosion(hull.width());
   planners::PartitionCache partitions;
   planners::MissionOptions options;
   options.partitions = &partitions;
@@ -43,7 +43,7 @@ BENCHMARK(BM_LawnmowerMission)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
 // meaningful (it never completes), so time the instance draw separately.
 void BM_GenerateInstance(benchmark::State& state) {
   const auto& hull = world::default_hull();
-  const auto corrosion = planners::scenario("imperfect").corrosion(hull.width());
+  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
   std::uint64_t seed = 1;
   for (auto _ : state) benchmark::DoNotOptimize(world::generate_instance(hull, corrosion, seed++));
 }

@@ -21,7 +21,7 @@
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/partition_cache.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/world/hull.hpp"
 
 namespace {
@@ -33,7 +33,7 @@ constexpr int kInstances = 20;
 const std::vector<world::Instance>& instances() {
   static const std::vector<world::Instance> all = [] {
     const auto& hull = world::default_hull();
-    const auto corrosion = planners::scenario("perfect").corrosion(hull.width());
+    const auto corrosion = world::scenario("perfect").corrosion(hull.width());
     std::vector<world::Instance> v;
     for (int seed = 1; seed <= kInstances; ++seed) {
       v.push_back(world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed)));
@@ -141,7 +141,7 @@ BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact, true, std::string("exact"), Option
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_Mission, part_tsp_exact_dp12, true, std::string("exact"),
-                  OptionMap{{"dp_max_segments", "12"}})
+                  OptionMap{{"dp-max-segments", "12"}})
     ->Arg(4)
     ->Arg(8)
     ->Unit(benchmark::kMillisecond)

@@ -3,11 +3,11 @@
 // per-solve CPU times (median, p99, max), proofs, and per-mission totals side by side.
 //
 //   tsp_mission_bench [--hull FILE] [--uavs 4,8] [--scenarios perfect,combined] [--s2 7,9,11]
-//                     [--seeds N] [--solvers exact,dfj-iterative:time_limit=10,...]
+//                     [--seeds N] [--solvers exact,dfj-iterative:time-limit=10,...]
 //
 // Defaults: the default hull, the paper's grid (four scenarios, s2 ∈ {7, 9, 11}, n = 4…8), two
-// seeds, solvers exact, exact with the branch-and-cut only (dp_max_segments=0), dfj-iterative
-// (time_limit=10) and heuristic. The missions themselves run with the default solver. Times are
+// seeds, solvers exact, exact with the branch-and-cut only (dp-max-segments=0), dfj-iterative
+// (time-limit=10) and heuristic. The missions themselves run with the default solver. Times are
 // CPU time of the solving thread (the machine is shared: wall time measures the other jobs).
 
 #include <fmt/format.h>
@@ -27,7 +27,7 @@
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/partition_cache.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/tsp/segment_tsp.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
@@ -107,8 +107,8 @@ int run(int argc, char** argv) {
   std::vector<int> s2s = {7, 9, 11};
   std::vector<std::string> scenarios = {"perfect", "imperfect", "inhomogeneous", "combined"};
   int seeds = 2;
-  std::vector<std::string> solvers = {"exact", "exact:dp_max_segments=0",
-                                      "dfj-iterative:time_limit=10", "heuristic"};
+  std::vector<std::string> solvers = {"exact", "exact:dp-max-segments=0",
+                                      "dfj-iterative:time-limit=10", "heuristic"};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     const std::string value = argv[i + 1];
@@ -132,7 +132,7 @@ int run(int argc, char** argv) {
   planners::PartitionCache partitions;
   std::vector<Mission> missions;
   for (const auto& scenario_name : scenarios) {
-    const auto corrosion = planners::scenario(scenario_name).corrosion(hull.width());
+    const auto corrosion = world::scenario(scenario_name).corrosion(hull.width());
     for (int s2 : s2s) {
       for (int n : uavs) {
         for (int seed = 1; seed <= seeds; ++seed) {

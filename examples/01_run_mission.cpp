@@ -8,7 +8,7 @@
 #include <string>
 
 #include "hullinspect/planners/mission.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
 
@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   const std::string algorithm = argc > 1 ? argv[1] : "lawnmower";
 
   const world::HullMask& hull = world::default_hull();
-  const auto corrosion = planners::scenario("imperfect").corrosion(hull.width());
+  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
   const world::Instance instance = world::generate_instance(hull, corrosion, /*seed=*/7);
 
   world::MissionParams params;  // n = 4, s1 = 5, s2 = 7, θ = 90°

@@ -56,8 +56,8 @@ def read_trace(path):
         raise TraceError(f"{path}:{e.lineno}: not a JSON trace: {e.msg}") from None
     if not isinstance(trace, dict) or trace.get("format") != "hullinspect-trace":
         raise TraceError(f'{path}: format: expected "hullinspect-trace" (not a hullinspect trace?)')
-    if trace.get("version") != 1:
-        raise TraceError(f"{path}: version: {trace.get('version')} is not supported (this script reads version 1)")
+    if trace.get("version") not in (1, 2):
+        raise TraceError(f"{path}: version: {trace.get('version')} is not supported (this script reads versions 1 and 2)")
     for key in ("grid", "initial_map", "frames", "footprint", "result"):
         if key not in trace:
             raise TraceError(f"{path}: {key}: missing")
@@ -122,6 +122,34 @@ def uav_tracks(trace, until):
     return [u[:, k * UAV_FIELDS:(k + 1) * UAV_FIELDS] for k in range(n)]
 
 
+def flight_runs(track):
+    """The UAV's flight split into maximal runs on one style: yields (points [k, 2], close) where
+    close means flown at z = 1 (on z = 1 at both ends of every step of the run, not in transit)."""
+    xy = track[:, 0:2].astype(float)
+    z, transit = track[:, 2], track[:, 3]
+    if len(xy) < 2:
+        return
+    close = (z[:-1] == 1) & (transit[:-1] == 0) & (z[1:] == 1)
+    start = 0
+    for i in range(1, len(close) + 1):
+        if i == len(close) or close[i] != close[start]:
+            points = xy[start:i + 1]
+            if np.any(points != points[0]):  # a run that never moves draws nothing
+                yield points, bool(close[start])
+            start = i
+
+
+def plane_changes(track):
+    """Yields (t, descending) for every plane change starting between t and t + 1: the UAV was on a
+    plane at t and at t + 1 is in transit (z is then the plane it leaves) or already on the other
+    plane (u_z = 1)."""
+    z, transit = track[:, 2], track[:, 3]
+    on_plane = transit[:-1] == 0
+    starting = on_plane & ((transit[1:] > 0) | (z[1:] != z[:-1]))
+    for i in np.flatnonzero(starting):
+        yield int(i), bool(z[i] == 2)
+
+
 def plot(trace, until, title, show_partition):
     grid = trace["grid"]
     w, h = grid["width"], grid["height"]
@@ -149,32 +177,33 @@ def plot(trace, until, title, show_partition):
             boundary_segments(owner, lambda a, b: a >= 0 and b >= 0 and a != b),
             colors="black", linewidths=1.1))
 
-    ups, downs = [], []
+    ups, downs = {}, {}
     for k, track in enumerate(tracks):
         xy = track[:, 0:2].astype(float)
-        z = track[:, 2]
-        transit = track[:, 3]
-        # Segment i joins t = i and i + 1; close-up where the UAV was on z = 1 at both ends.
-        seg = np.stack([xy[:-1], xy[1:]], axis=1)
-        moved = np.any(xy[:-1] != xy[1:], axis=1)
-        close = (z[:-1] == 1) & (transit[:-1] == 0) & (z[1:] == 1)
-        for mask, style, width in ((close & moved, "solid", 1.8), (~close & moved, (0, (3, 2)), 1.0)):
-            if mask.any():
-                ax.add_collection(LineCollection(seg[mask], colors=[colors[k]], linestyles=style,
-                                                 linewidths=width, capstyle="round"))
-        # A plane change starts between t and t + 1 when the UAV was on a plane at t and at t + 1
-        # is in transit (z is then the plane it leaves) or already on the other plane (u_z = 1).
-        on_plane = transit[:-1] == 0
-        starting = on_plane & ((transit[1:] > 0) | (z[1:] != z[:-1]))
-        for i in np.flatnonzero(starting):
-            (downs if z[i] == 2 else ups).append((xy[i, 0], xy[i, 1], colors[k]))
-        ax.plot(xy[0, 0], xy[0, 1], "o", ms=9, mfc="white", mec=colors[k], mew=1.8, zorder=5)
-        ax.plot(xy[-1, 0], xy[-1, 1], "s", ms=5.5, mfc=colors[k], mec="black", mew=0.6, zorder=5)
-    for points, marker in ((downs, "v"), (ups, "^")):
+        for run_xy, close in flight_runs(track):
+            # One polyline per run, so the dash pattern of z = 2 flows along it (one line per
+            # one-cell segment would restart the pattern at every cell and look solid).
+            ax.plot(run_xy[:, 0], run_xy[:, 1], color=colors[k],
+                    ls="solid" if close else (0, (3, 2)), lw=1.8 if close else 1.0,
+                    solid_capstyle="round", dash_capstyle="round", zorder=3)
+        for i, descending in plane_changes(track):
+            key = (xy[i, 0], xy[i, 1], colors[k])
+            target = downs if descending else ups
+            target[key] = target.get(key, 0) + 1
+    # Plane changes: one marker per UAV and cell (repeats at one cell are counted, not stacked),
+    # ▼ just below the cell centre and ▲ just above, smaller when there are many (Coop-Frontier
+    # changes plane hundreds of times).
+    total = sum(downs.values()) + sum(ups.values())
+    size = 42 if total <= 40 else max(12, 42 * (40 / total) ** 0.5)
+    for points, marker, dy in ((downs, "v", -0.3), (ups, "^", 0.3)):
         if points:
             px, py, pc = zip(*points)
-            ax.scatter(px, py, marker=marker, s=42, c=list(pc), edgecolors="black", linewidths=0.6,
-                       zorder=6)
+            ax.scatter(px, np.asarray(py) + dy, marker=marker, s=size, c=list(pc),
+                       edgecolors="black", linewidths=0.5, zorder=6)
+    for k, track in enumerate(tracks):
+        ax.plot(track[0, 0], track[0, 1], "o", ms=9, mfc="white", mec=colors[k], mew=1.8, zorder=5)
+        ax.plot(track[-1, 0], track[-1, 1], "s", ms=5.5, mfc=colors[k], mec="black", mew=0.6,
+                zorder=5)
 
     ax.set_xlim(-0.5, w - 0.5)
     ax.set_ylim(-0.5, h - 0.5)
@@ -200,8 +229,10 @@ def plot(trace, until, title, show_partition):
     handles += [
         Line2D([], [], color="0.2", lw=1.8, label="flown at z = 1"),
         Line2D([], [], color="0.2", lw=1.0, ls=(0, (3, 2)), label="flown at z = 2"),
-        Line2D([], [], ls="", marker="v", mfc="0.6", mec="black", label="descend 2 → 1"),
-        Line2D([], [], ls="", marker="^", mfc="0.6", mec="black", label="ascend 1 → 2"),
+        Line2D([], [], ls="", marker="v", mfc="0.6", mec="black",
+               label=f"descend 2 → 1 ({sum(downs.values())})"),
+        Line2D([], [], ls="", marker="^", mfc="0.6", mec="black",
+               label=f"ascend 1 → 2 ({sum(ups.values())})"),
         Line2D([], [], ls="", marker="o", mfc="white", mec="0.2", label="start"),
         Line2D([], [], ls="", marker="s", mfc="0.4", mec="black", label="position at the end"),
         Patch(fc=INSPECTED, label="corrosion inspected"),

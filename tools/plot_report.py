@@ -2,6 +2,7 @@
 """Draws the figures of `hullinspect report` from an experiment's results.
 
 Usage: /usr/bin/python3 plot_report.py --results RESULTS_DIR --summary SUMMARY_CSV --out FIG_DIR
+           [--planners A,B,...] [--labels A=Label,...] [--format png,pdf] [--dpi 150]
 
 Reads RESULTS_DIR/curves.csv and RESULTS_DIR/manifest.json and the report's summary.csv, and
 writes, as PNG and PDF:
@@ -37,6 +38,7 @@ plt.rcParams.update({
     "axes.grid": True,
     "grid.alpha": 0.3,
     "pdf.fonttype": 42,
+    "svg.fonttype": "none",  # text stays text in SVG figures (editable, searchable)
 })
 
 # How swept parameters are written on the figures (other sweep names are shown as they are).
@@ -76,10 +78,21 @@ def number(text):
     return float(text) if text not in ("", None) else math.nan
 
 
+FORMATS = ["png", "pdf"]
+DPI = 150
+LABELS = {}
+# Algorithms that ignore the prior: under p_TP / p_FP sweeps their curves coincide.
+PRIOR_BLIND = {"lawnmower", "part-tsp0"}
+
+
+def legend_label(algorithm):
+    return LABELS.get(algorithm, algorithm)
+
+
 def save(fig, out_dir, stem, written):
-    for ext in ("png", "pdf"):
+    for ext in FORMATS:
         path = os.path.join(out_dir, f"{stem}.{ext}")
-        fig.savefig(path, dpi=150 if ext == "png" else None, bbox_inches="tight")
+        fig.savefig(path, dpi=DPI if ext == "png" else None, bbox_inches="tight")
         written.append(path)
     plt.close(fig)
 
@@ -91,7 +104,8 @@ def colours(algorithms):
 
 def algorithm_legend(fig, algorithms, colour):
     handles = [Line2D([0], [0], color=colour[a], lw=6) for a in algorithms]
-    fig.legend(handles, algorithms, loc="lower center", ncol=min(len(algorithms), 6),
+    fig.legend(handles, [legend_label(a) for a in algorithms], loc="lower center",
+               ncol=min(len(algorithms), 6),
                frameon=False, bbox_to_anchor=(0.5, -0.01))
 
 
@@ -196,7 +210,7 @@ def fig7(curves, scenario, n, algorithms, colour, instances, grid_end, out_dir, 
                 if len(t) == 0:
                     continue
                 shown.append((t, mean))
-                ax.plot(t, mean, color=colour[a], lw=1.4, label=a)
+                ax.plot(t, mean, color=colour[a], lw=1.4, label=legend_label(a))
                 band = ~np.isnan(std)
                 ax.fill_between(t[band], np.clip(mean - std, 0, 100)[band],
                                 np.clip(mean + std, 0, 100)[band], color=colour[a], alpha=0.18,
@@ -222,6 +236,7 @@ def fig8(curves, s2, n, sweeps, plain, algorithms, colour, instances, grid_end, 
     rows = math.ceil(len(panels) / cols)
     fig, axes = plt.subplots(rows, cols, figsize=(4.0 * cols + 0.6, 3.6 * rows + 0.8),
                              squeeze=False, sharey=True)
+    shown = []  # every curve drawn: one x range shared by all panels, so they compare
     for index, (kind, name) in enumerate(panels):
         ax = axes[index // cols][index % cols]
         if kind == "sweep":
@@ -230,28 +245,46 @@ def fig8(curves, s2, n, sweeps, plain, algorithms, colour, instances, grid_end, 
                       for s in scenarios]
         else:
             scenarios, values = [name], [None]
-        shown = []
-        for v_index, scenario in enumerate(scenarios):
-            style = LINE_STYLES[v_index % len(LINE_STYLES)]
-            for a in algorithms:
-                t, mean, _ = curve_series(curves, scenario, s2, n, a, "c")
-                if len(t) == 0:
-                    continue
+        same_notes = []
+        for a in algorithms:
+            series = [curve_series(curves, sc, s2, n, a, "c") for sc in scenarios]
+            series = [(i, t, mean) for i, (t, mean, _) in enumerate(series) if len(t) > 0]
+            if not series:
+                continue
+            # A prior-blind algorithm whose curve is the same for every swept value (the sweep
+            # changes only the prior) is drawn once, wide and translucent, instead of as several
+            # lines on top of each other that would show only the last style.
+            identical = len(series) > 1 and all(
+                len(t) == len(series[0][1]) and np.allclose(mean, series[0][2], equal_nan=True)
+                for _, t, mean in series[1:])
+            if identical:
+                _, t, mean = series[0]
                 shown.append((t, mean))
-                ax.plot(t, mean, color=colour[a], ls=style, lw=1.3)
-        ax.set_xlim(0, time_limit_shown(shown, grid_end))
+                ax.plot(t, mean, color=colour[a], lw=4.0, alpha=0.35, solid_capstyle="butt")
+                same_notes.append(legend_label(a))
+                continue
+            for i, t, mean in series:
+                shown.append((t, mean))
+                ax.plot(t, mean, color=colour[a], ls=LINE_STYLES[i % len(LINE_STYLES)], lw=1.3)
         ax.set_ylim(0, 102)
         ax.set_xlabel("time t (s)")
         if index % cols == 0:
             ax.set_ylabel("$c(t)$, corrosion inspected (%)")
         if kind == "sweep":
-            label = SWEEP_LABELS.get(name, name)
-            ax.set_title(f"sweep of {label}")
+            name_label = SWEEP_LABELS.get(name, name)
+            ax.set_title(f"sweep of {name_label}")
             handles = [Line2D([0], [0], color="black", ls=LINE_STYLES[i % len(LINE_STYLES)])
                        for i in range(len(values))]
-            ax.legend(handles, values, title=label, loc="lower right")
+            texts = list(values)
+            if same_notes:
+                handles.append(Line2D([0], [0], color="0.5", lw=4.0, alpha=0.35))
+                texts.append(f"{', '.join(same_notes)}: same for all")
+            ax.legend(handles, texts, title=name_label, loc="lower right", fontsize=8)
         else:
             ax.set_title(f"scenario {name}")
+    limit = time_limit_shown(shown, grid_end)
+    for index in range(len(panels)):
+        axes[index // cols][index % cols].set_xlim(0, limit)
     for index in range(len(panels), rows * cols):
         axes[index // cols][index % cols].set_visible(False)
     fig.suptitle(f"Mean $c(t)$ under single-parameter sweeps ($s_2$ = {s2}, n = {n}, "
@@ -266,7 +299,25 @@ def main():
     parser.add_argument("--results", required=True, help="experiment results directory")
     parser.add_argument("--summary", required=True, help="summary.csv written by the report")
     parser.add_argument("--out", required=True, help="directory for the figures")
+    parser.add_argument("--planners", default="",
+                        help="comma-separated algorithms to draw, in this order (default: all)")
+    parser.add_argument("--labels", default="",
+                        help="comma-separated ALGORITHM=LABEL pairs for legends")
+    parser.add_argument("--format", default="png,pdf",
+                        help="comma-separated file types: png, pdf, svg (default png,pdf)")
+    parser.add_argument("--dpi", type=int, default=150, help="resolution of PNG files (default 150)")
     args = parser.parse_args()
+    global DPI, FORMATS
+    DPI = args.dpi
+    FORMATS = [f for f in args.format.split(",") if f]
+    for f in FORMATS:
+        if f not in ("png", "pdf", "svg"):
+            sys.exit(f"plot_report.py: --format: '{f}' is not png, pdf or svg")
+    for pair in filter(None, args.labels.split(",")):
+        key, sep, value = pair.partition("=")
+        if not sep or not key or not value:
+            sys.exit(f"plot_report.py: --labels: '{pair}' is not ALGORITHM=LABEL")
+        LABELS[key] = value
 
     with open(os.path.join(args.results, "manifest.json"), encoding="utf-8") as f:
         manifest = json.load(f)
@@ -278,6 +329,13 @@ def main():
     os.makedirs(args.out, exist_ok=True)
 
     algorithms = unique(r["algorithm"] for r in summary)
+    if args.planners:
+        wanted = [a for a in args.planners.split(",") if a]
+        missing = [a for a in wanted if a not in algorithms]
+        if missing:
+            sys.exit(f"plot_report.py: --planners: no results for {', '.join(missing)} "
+                     f"(the results hold {', '.join(algorithms)})")
+        algorithms = wanted
     colour = colours(algorithms)
     plain = unique(r["scenario"] for r in summary if r["sweep"] == "")
     sweeps = unique(r["sweep"] for r in summary if r["sweep"] != "")

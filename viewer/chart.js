@@ -1,6 +1,6 @@
-// The progress chart of the replay viewer: c(t) and m(t) (SPEC §4) with T_c and T_m marked and
-// the current time as a vertical line. Axes and curves are drawn once per layout into a background
-// canvas; a frame only copies it and adds the time line.
+// The progress chart of the replay viewer: c(t) and m(t) (docs/model.md §4) with T_c and T_m marked
+// and the current time as a vertical line. Axes and curves are drawn once per layout into a
+// background canvas; a frame only copies it and adds the time line.
 'use strict';
 
 (function (hv) {

@@ -4,10 +4,17 @@
 'use strict';
 
 (function (hv) {
-  const {COLORS, FOOTPRINT_FILL, regionColor, regionTint, uavColor, layerColor} = hv.palette;
+  const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, regionColor, regionTint, uavColor, layerColor} =
+      hv.palette;
   const PATH_LENGTH = 40; // steps of recent path drawn behind each UAV
+  // Margins around the cells (CSS px), inside the overlay canvas: axes in metres below and left,
+  // room above and right so markers and labels of the outer rows are not cut off.
+  const PAD = {top: 18, right: 18, bottom: 34, left: 46};
 
   class MapView {
+    // The margins around the cells, CSS px.
+    static get padding() { return PAD; }
+
     // `show` holds the switches of the "show" row (footprints, paths, plans, targets, layers,
     // labels, regions); the viewer owns it and changes it.
     constructor(replay, gridCanvas, overlayCanvas, show) {
@@ -33,18 +40,26 @@
       this.cellPx = w / r.W;
       this.dpr = dpr;
       const h = Math.round(r.H * this.cellPx);
-      for (const c of [this.gridCanvas, this.overlayCanvas]) {
-        c.style.width = `${w}px`;
-        c.style.height = `${h}px`;
-        c.width = Math.round(w * dpr);
-        c.height = Math.round(h * dpr);
-      }
+      const g = this.gridCanvas;
+      g.style.width = `${w}px`;
+      g.style.height = `${h}px`;
+      g.width = Math.round(w * dpr);
+      g.height = Math.round(h * dpr);
+      // The margins are the stack's padding (a canvas margin would collapse out of the stack).
+      g.parentElement.style.padding = `${PAD.top}px ${PAD.right}px ${PAD.bottom}px ${PAD.left}px`;
+      const o = this.overlayCanvas;
+      const ow = w + PAD.left + PAD.right;
+      const oh = h + PAD.top + PAD.bottom;
+      o.style.width = `${ow}px`;
+      o.style.height = `${oh}px`;
+      o.width = Math.round(ow * dpr);
+      o.height = Math.round(oh * dpr);
       return w;
     }
 
     // The cell under a mouse position, or null.
     cellAt(clientX, clientY) {
-      const rect = this.overlayCanvas.getBoundingClientRect();
+      const rect = this.gridCanvas.getBoundingClientRect();
       const x = Math.floor((clientX - rect.left) / this.cellPx);
       const y = this.replay.H - 1 - Math.floor((clientY - rect.top) / this.cellPx);
       if (x < 0 || x >= this.replay.W || y < 0 || y >= this.replay.H) return null;
@@ -77,7 +92,7 @@
     cellColor(i) {
       const v = this.replay.map[i];
       if (v < 0) return COLORS.nonHull;
-      if (v === 2) return COLORS.corrosion;
+      if (v === 2) return this.replay.firstSeen[i] <= this.replay.t ? COLORS.corrosion : COLORS.priorOnly;
       if (v === 3) return COLORS.inspected;
       const o = this.replay.owner && this.show.regions ? this.replay.owner[i] : -1;
       if (o >= 0) return v === 0 ? regionColor(o) : regionTint(o);
@@ -122,10 +137,14 @@
     drawOverlay() {
       const r = this.replay;
       const ctx = this.overlayCanvas.getContext('2d');
-      ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
-      ctx.clearRect(0, 0, r.W * this.cellPx, r.H * this.cellPx);
+      ctx.setTransform(1, 0, 0, 1, 0, 0);
+      ctx.clearRect(0, 0, this.overlayCanvas.width, this.overlayCanvas.height);
+      // Everything below is in CSS px with the origin at the top-left corner of the cells.
+      ctx.setTransform(this.dpr, 0, 0, this.dpr, PAD.left * this.dpr, PAD.top * this.dpr);
+      this.drawAxes(ctx);
       const cp = this.cellPx;
       const t = r.t;
+      if (this.show.truth) this.drawTruth(ctx, t);
       if (this.show.layers) {
         r.layerNames.forEach((name, i) => {
           ctx.fillStyle = layerColor(name, i);
@@ -182,12 +201,31 @@
       states.forEach((s, k) => this.drawUav(ctx, s, k));
       if (this.show.labels) this.drawLabels(ctx, states, notes);
       if (this.hover) {
+        // A yellow ring and a cross-hair along the row and the column: unlike targets (white
+        // squares with a UAV's colour).
         const {x, y} = this.hover;
-        ctx.lineWidth = 1.5;
+        const px = x * cp;
+        const py = (r.H - 1 - y) * cp;
+        ctx.strokeStyle = 'rgba(0, 0, 0, 0.45)';
+        ctx.lineWidth = 1;
+        ctx.setLineDash([2, 3]);
+        ctx.beginPath();
+        ctx.moveTo(0, py + cp / 2);
+        ctx.lineTo(px - 3, py + cp / 2);
+        ctx.moveTo(px + cp + 3, py + cp / 2);
+        ctx.lineTo(r.W * cp, py + cp / 2);
+        ctx.moveTo(px + cp / 2, 0);
+        ctx.lineTo(px + cp / 2, py - 3);
+        ctx.moveTo(px + cp / 2, py + cp + 3);
+        ctx.lineTo(px + cp / 2, r.H * cp);
+        ctx.stroke();
+        ctx.setLineDash([]);
+        ctx.lineWidth = 2.5;
         ctx.strokeStyle = '#000';
-        ctx.strokeRect(x * cp - 1, (r.H - 1 - y) * cp - 1, cp + 2, cp + 2);
-        ctx.strokeStyle = '#fff';
-        ctx.strokeRect(x * cp - 2.5, (r.H - 1 - y) * cp - 2.5, cp + 5, cp + 5);
+        ctx.strokeRect(px - 2.5, py - 2.5, cp + 5, cp + 5);
+        ctx.lineWidth = 1.5;
+        ctx.strokeStyle = HOVER_MARK;
+        ctx.strokeRect(px - 2.5, py - 2.5, cp + 5, cp + 5);
       }
     }
 
@@ -218,6 +256,81 @@
       }
     }
 
+    // Undetected corrosion ("show truth"): a red dot in every corroded cell nobody has seen as
+    // corroded yet (M is 0 there); the planners never see it.
+    drawTruth(ctx, t) {
+      const r = this.replay;
+      const cp = this.cellPx;
+      const d = Math.max(2, cp * 0.5);
+      ctx.fillStyle = TRUTH_MARK;
+      for (let i = 0; i < r.W * r.H; ++i) {
+        if (r.truth[i] !== 1 || r.map[i] !== 0) continue;
+        const x = i % r.W;
+        const y = (i - x) / r.W;
+        ctx.fillRect((x + 0.5) * cp - d / 2, (r.H - 1 - y + 0.5) * cp - d / 2, d, d);
+      }
+    }
+
+    // Axes in metres: x along the hull from the stern (left) to the bow (right), y upward.
+    drawAxes(ctx) {
+      const r = this.replay;
+      const m = r.trace.grid.cell_size_m || 1;
+      const unit = r.trace.grid.cell_size_m ? 'm' : 'cells';
+      const cp = this.cellPx;
+      const w = r.W * cp;
+      const h = r.H * cp;
+      const step = (extentCells, spacePx) => {
+        const metres = extentCells * m;
+        for (const s of [0.5, 1, 2, 5, 10, 20, 25, 50, 100, 200, 500, 1000]) {
+          if ((s / metres) * spacePx >= 55) return s;
+        }
+        return metres;
+      };
+      ctx.font = '11px system-ui, sans-serif';
+      ctx.fillStyle = '#333';
+      ctx.strokeStyle = '#666';
+      ctx.lineWidth = 1;
+      ctx.beginPath();
+      ctx.moveTo(0, h + 0.5);
+      ctx.lineTo(w, h + 0.5);
+      ctx.moveTo(-0.5, 0);
+      ctx.lineTo(-0.5, h);
+      const sx = step(r.W, w);
+      ctx.textAlign = 'center';
+      ctx.textBaseline = 'top';
+      for (let v = 0; v <= r.W * m + 1e-9; v += sx) {
+        const x = (v / m) * cp;
+        ctx.moveTo(x, h);
+        ctx.lineTo(x, h + 4);
+        ctx.fillText(`${Number(v.toFixed(2))}`, Math.min(Math.max(x, 8), w - 8), h + 5);
+      }
+      const sy = step(r.H, h);
+      ctx.textAlign = 'right';
+      ctx.textBaseline = 'middle';
+      for (let v = 0; v <= r.H * m + 1e-9; v += sy) {
+        const y = h - (v / m) * cp;
+        ctx.moveTo(-4, y);
+        ctx.lineTo(0, y);
+        ctx.fillText(`${Number(v.toFixed(2))}`, -6, Math.min(Math.max(y, 6), h - 4));
+      }
+      ctx.stroke();
+      ctx.font = '600 11px system-ui, sans-serif';
+      ctx.textBaseline = 'top';
+      ctx.textAlign = 'left';
+      ctx.fillText('◀ stern', 0, h + 19);
+      ctx.textAlign = 'right';
+      ctx.fillText('bow ▶', w, h + 19);
+      ctx.textAlign = 'center';
+      ctx.fillText(`x (${unit}, along the hull)`, w / 2, h + 19);
+      ctx.save();
+      ctx.translate(-34, h / 2);
+      ctx.rotate(-Math.PI / 2);
+      ctx.textBaseline = 'middle';
+      ctx.fillText(`y (${unit})`, 0, 0);
+      ctx.restore();
+      ctx.textAlign = 'left';
+    }
+
     // "k mode" beside each UAV, moved to another corner of the marker when it would cover a label
     // already placed.
     drawLabels(ctx, states, notes) {
@@ -225,22 +338,35 @@
       ctx.textBaseline = 'middle';
       ctx.lineJoin = 'round';
       const rad = this.markerRadius();
-      const width = this.replay.W * this.cellPx;
-      const height = this.replay.H * this.cellPx;
-      const placed = [];
+      // Labels may use the margins above and to the right of the cells, never leave the canvas.
+      const minX = -PAD.left + 2;
+      const maxX = this.replay.W * this.cellPx + PAD.right - 2;
+      const minY = -PAD.top + 2;
+      const maxY = this.replay.H * this.cellPx;
+      // Markers first: a label covers no UAV.
+      const placed = states.map((s) => {
+        const d = rad + 1;
+        return {x: this.cx(s.x) - d, y: this.cy(s.y) - d, w: 2 * d, h: 2 * d};
+      });
       const overlaps = (b) => placed.some((p) => b.x < p.x + p.w && p.x < b.x + b.w && b.y < p.y + p.h && p.y < b.y + b.h);
+      const boxes = (x, y, w, h) => [
+        [x + rad, y - rad - h], [x + rad, y + rad], [x - rad - w, y - rad - h], [x - rad - w, y + rad],
+        [x + rad + 1, y - h / 2], [x - rad - w - 1, y - h / 2], [x - w / 2, y - rad - h - 1],
+        [x - w / 2, y + rad + 1], [x + rad, y - rad - 2 * h], [x - rad - w, y + rad + h],
+      ].map(([bx, by]) => ({x: Math.max(minX, Math.min(maxX - w, bx)), y: Math.max(minY, Math.min(maxY - h, by)), w, h}));
       states.forEach((s, k) => {
         const a = notes[k];
-        const text = a && a.mode ? `${k} ${a.mode}` : `${k}`;
-        const w = ctx.measureText(text).width + 2;
-        const h = 12;
         const x = this.cx(s.x);
         const y = this.cy(s.y);
-        const candidates = [
-          [x + rad, y - rad - h], [x + rad, y + rad], [x - rad - w, y - rad - h], [x - rad - w, y + rad],
-          [x + rad + 1, y - h / 2], [x - rad - w - 1, y - h / 2],
-        ].map(([bx, by]) => ({x: Math.max(0, Math.min(width - w, bx)), y: Math.max(0, Math.min(height - h, by)), w, h}));
-        const box = candidates.find((b) => !overlaps(b)) || candidates[0];
+        const h = 12;
+        // The full label where it fits; else the UAV's number alone; else its first place.
+        let text = a && a.mode ? `${k} ${a.mode}` : `${k}`;
+        let box = boxes(x, y, ctx.measureText(text).width + 2, h).find((b) => !overlaps(b));
+        if (!box) {
+          text = `${k}`;
+          const candidates = boxes(x, y, ctx.measureText(text).width + 2, h);
+          box = candidates.find((b) => !overlaps(b)) || candidates[0];
+        }
         placed.push(box);
         ctx.strokeStyle = 'rgba(255, 255, 255, 0.9)';
         ctx.lineWidth = 3;

@@ -8,19 +8,23 @@
     nonHull: [38, 43, 51],
     unknown: [139, 147, 158],
     clean: [226, 230, 235],
-    corrosion: [245, 140, 40],
+    corrosion: [245, 140, 40], // M = 2, detected (seen by a UAV)
+    priorOnly: [255, 196, 128], // M = 2 known only from the prior, not seen yet
     inspected: [46, 160, 67],
   };
   // Partition regions: unknown cells in the region's colour, explored cells in a light tint of it.
-  // Blues, purples, teals and pinks: far from the orange, green and light red of cell states.
+  // Purples, teals, pinks, olives: no blue (the footprints), no grey (unknown without regions), no
+  // orange, green or light red (corrosion, inspection, frontiers); neighbours differ in hue.
   const REGION_COLORS = [
-    [78, 121, 167], [150, 110, 190], [80, 160, 170], [200, 110, 150], [110, 120, 140], [100, 140, 225],
-    [170, 90, 140], [60, 140, 130], [160, 150, 220], [70, 170, 200], [180, 130, 170], [90, 90, 170],
+    [150, 105, 195], [40, 150, 150], [210, 100, 150], [140, 140, 45], [150, 75, 85], [165, 85, 125],
+    [60, 125, 95], [175, 150, 60], [185, 120, 200], [35, 115, 125], [200, 135, 160], [120, 60, 120],
   ];
   const REGION_TINT = 0.62; // share of white mixed into a region's colour for explored cells
   // UAV k is drawn in a dark shade of region k's colour.
   const UAV_SHADE = 0.3;
   const FOOTPRINT_FILL = 'rgba(40, 120, 255, 0.22)';
+  const TRUTH_MARK = 'rgb(200, 0, 0)'; // undetected corrosion with "show truth"
+  const HOVER_MARK = '#ffd400';
   const LAYER_COLORS = {frontiers: 'rgba(255, 105, 97, 0.62)'};
   const EXTRA_LAYER_COLORS = [
     'rgba(150, 80, 255, 0.45)', 'rgba(0, 190, 220, 0.45)', 'rgba(255, 215, 0, 0.55)',
@@ -40,6 +44,7 @@
   }
 
   hv.palette = {
-    COLORS, FOOTPRINT_FILL, M_NAMES, rgb, regionColor, regionTint, uavColor, layerColor,
+    COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, M_NAMES, rgb, regionColor, regionTint, uavColor,
+    layerColor,
   };
 })(window.hullinspectViewer = window.hullinspectViewer || {});

@@ -3,8 +3,11 @@
 //
 // State at time t is rebuilt from keyframes + deltas: the map M is copied every KEYFRAME_INTERVAL
 // frames while loading, and a seek restores the nearest keyframe at or before t and applies the
-// cell changes of the frames after it (at most KEYFRAME_INTERVAL - 1 of them). Planner annotations
-// and layers, which traces record only when they change, are found by binary search.
+// cell changes of the frames after it (at most KEYFRAME_INTERVAL - 1 of them). Planner annotations,
+// which traces record only when they change, are found by binary search. Layers are recorded as
+// whole sets or as changes ({add, remove}, trace version 2) with a whole set at least every 128
+// frames: a layer at time t is its last whole set at or before t plus the changes after it, kept
+// per layer and moved forward incrementally while playing.
 'use strict';
 
 (function (hv) {
@@ -24,7 +27,10 @@
   class Replay {
     constructor(trace) {
       if (!trace || trace.format !== 'hullinspect-trace') throw new Error('not a hullinspect trace');
-      if (trace.version !== 1) throw new Error(`trace version ${trace.version} is not supported`);
+      // Version 1 is version 2 without layer changes.
+      if (trace.version !== 1 && trace.version !== 2) {
+        throw new Error(`trace version ${trace.version} is not supported`);
+      }
       this.trace = trace;
       this.W = trace.grid.width;
       this.H = trace.grid.height;
@@ -40,6 +46,7 @@
       this.unreachable = trace.unreachable ? this.parseSymbols(trace.unreachable, {d: 1, x: 2}) : null;
       this.indexChanges();
       this.indexUavs();
+      this.indexFirstSeen();
       this.indexAnnotations();
       this.buildKeyframes();
       this.t = this.lastT;
@@ -98,6 +105,30 @@
       this.trace.frames.forEach((f, i) => this.uav.set(f.u, i * n5));
     }
 
+    // The first time each cell was in a sensing footprint (any UAV, any plane), or Infinity: so
+    // corrosion known only from the prior (M = 2, not seen yet) is told from detected corrosion.
+    indexFirstSeen() {
+      const fp = this.trace.footprint;
+      const seen = new Float64Array(this.W * this.H).fill(Infinity);
+      const n5 = this.uavCount * 5;
+      const u = this.uav;
+      for (let t = 0; t < this.frameCount; ++t) {
+        for (let o = t * n5; o < (t + 1) * n5; o += 5) {
+          if (u[o + 4] !== 1 || u[o + 3] !== 0) continue;  // failed or changing plane: no sensing
+          const half = ((u[o + 2] === 1 ? fp[0] : fp[1]) - 1) / 2;
+          const y0 = Math.max(0, u[o + 1] - half);
+          const y1 = Math.min(this.H - 1, u[o + 1] + half);
+          const x0 = Math.max(0, u[o] - half);
+          const x1 = Math.min(this.W - 1, u[o] + half);
+          for (let y = y0; y <= y1; ++y) {
+            for (let i = y * this.W + x0; i <= y * this.W + x1; ++i)
+              if (seen[i] > t) seen[i] = t;
+          }
+        }
+      }
+      this.firstSeen = seen;
+    }
+
     uavState(t, k) {
       const o = (t * this.uavCount + k) * 5;
       const u = this.uav;
@@ -111,6 +142,8 @@
       this.layerNames = [];
       this.layerTimes = {};
       this.layerCells = {};
+      this.layerFull = {};   // per change: the index of the last whole set at or before it
+      this.layerState = {};  // per layer: {i, set, cells} of the last lookup
       this.trace.frames.forEach((f, t) => {
         if (f.p) {
           for (const key of Object.keys(f.p)) {
@@ -126,9 +159,17 @@
               this.layerNames.push(name);
               this.layerTimes[name] = [];
               this.layerCells[name] = [];
+              this.layerFull[name] = [];
             }
-            this.layerTimes[name].push(t);
-            this.layerCells[name].push(f.l[name]);
+            const v = f.l[name];
+            const full = Array.isArray(v);
+            const times = this.layerTimes[name];
+            const fulls = this.layerFull[name];
+            if (!full && fulls.length === 0)
+              throw new Error(`frames[${t}].l.${name}: changes before a whole set`);
+            fulls.push(full ? times.length : fulls[fulls.length - 1]);
+            times.push(t);
+            this.layerCells[name].push(v);
           }
         }
       });
@@ -140,9 +181,32 @@
       return i < 0 ? null : this.annotations[k][i];
     }
 
+    // The cells of layer `name` at time t (an array; the same array while the layer is unchanged).
     layer(name, t) {
       const i = lastAtOrBefore(this.layerTimes[name], t);
-      return i < 0 ? [] : this.layerCells[name][i];
+      if (i < 0) return [];
+      const entries = this.layerCells[name];
+      if (Array.isArray(entries[i])) return entries[i];
+      let state = this.layerState[name];
+      const key = this.layerFull[name][i];
+      if (!state || state.i > i || state.i < key) {
+        state = {i: key, set: new Set(entries[key]), cells: null};
+      }
+      for (let j = state.i + 1; j <= i; ++j) {
+        const e = entries[j];
+        if (Array.isArray(e)) {
+          state.set = new Set(e);
+          continue;
+        }
+        if (e.remove)
+          for (const c of e.remove) state.set.delete(c);
+        if (e.add)
+          for (const c of e.add) state.set.add(c);
+      }
+      if (state.i !== i || !state.cells) state.cells = Array.from(state.set);
+      state.i = i;
+      this.layerState[name] = state;
+      return state.cells;
     }
 
     applyFrame(i, map) {

@@ -4,7 +4,8 @@
 'use strict';
 
 (function (hv) {
-  const {COLORS, FOOTPRINT_FILL, M_NAMES, rgb, regionColor, regionTint, uavColor, layerColor} = hv.palette;
+  const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, M_NAMES, rgb, regionColor, regionTint, uavColor,
+    layerColor} = hv.palette;
   const $ = (id) => document.getElementById(id);
 
   class Viewer {
@@ -39,6 +40,8 @@
       if (p.seed !== undefined) parts.push(`seed ${p.seed}`);
       if (p.hull) parts.push(`hull ${p.hull}`);
       if (p.p_tp !== undefined) parts.push(`p_TP ${p.p_tp}, p_FP ${p.p_fp}`);
+      if (p.prior_file) parts.push(`prior ${p.prior_file}`);
+      if (p.truth_file) parts.push(`truth ${p.truth_file}`);
       parts.push(`${this.replay.W} × ${this.replay.H} cells`);
       $('mission-title').textContent = parts.join(' · ');
       document.title = `hullinspect replay: ${parts.slice(0, 2).join(', ')}`;
@@ -74,7 +77,8 @@
         items.push([cell(COLORS.unknown), 'unknown']);
         items.push([cell(COLORS.clean), 'explored, clean']);
       }
-      items.push([cell(COLORS.corrosion), 'corrosion expected / detected (M = 2)']);
+      items.push([cell(COLORS.priorOnly), 'corrosion expected from the prior, not seen yet (M = 2)']);
+      items.push([cell(COLORS.corrosion), 'corrosion detected (M = 2)']);
       items.push([cell(COLORS.inspected), 'corrosion inspected (M = 3)']);
       items.push([swatch(`background:${FOOTPRINT_FILL};border-color:#2878ff`), 'in sight (footprint)']);
       this.replay.layerNames.forEach((name, i) => {
@@ -83,6 +87,11 @@
       const c0 = uavColor(0);
       items.push([swatch('background:#fff;border:2px solid #333;outline:1px solid #fff'),
         'target of a UAV']);
+      items.push([swatch(`border:2px solid ${HOVER_MARK};outline:1px solid #000`), 'cell under the mouse']);
+      if (this.show.truth) {
+        items.push([swatch(`background:radial-gradient(${TRUTH_MARK} 45%, transparent 50%)`),
+          'corrosion not detected yet (truth; planners do not see it)']);
+      }
       items.push([swatch(`background:#fff;border-color:${c0}`, 'marker'), 'UAV at z = 2 (detection)']);
       items.push([swatch(`background:${c0};border-color:#fff;outline:1px solid ${c0}`, 'marker'),
         'UAV at z = 1 (close-up)']);
@@ -140,13 +149,13 @@
       slider.addEventListener('input', () => { this.pause(); this.seek(Number(slider.value)); });
       $('speed').addEventListener('change', (e) => { this.speed = Number(e.target.value); e.target.blur(); });
       $('zoom').addEventListener('change', (e) => { this.layout(); e.target.blur(); });
-      for (const name of ['footprints', 'paths', 'plans', 'targets', 'layers', 'labels', 'regions']) {
+      for (const name of ['footprints', 'paths', 'plans', 'targets', 'layers', 'labels', 'regions', 'truth']) {
         const box = $(`show-${name}`);
         this.show[name] = box.checked;
         box.addEventListener('change', () => {
           this.show[name] = box.checked;
           box.blur();
-          if (name === 'regions') this.fillLegend();
+          if (name === 'regions' || name === 'truth') this.fillLegend();
           this.requestDraw();
         });
       }
@@ -206,7 +215,8 @@
       const zoom = Number($('zoom').value);
       const avail = Math.max(100, $('map-scroll').clientWidth);
       // Fit: the whole width, cells may be a fraction of a pixel wider than others on screen.
-      const cellPx = zoom > 0 ? zoom : Math.max(2, avail / this.replay.W);
+      const pad = hv.MapView.padding;
+      const cellPx = zoom > 0 ? zoom : Math.max(2, (avail - pad.left - pad.right) / this.replay.W);
       const dpr = window.devicePixelRatio || 1;
       $('map-stack').style.width = `${this.map.layout(cellPx, dpr)}px`;
       this.chart.layout(dpr);

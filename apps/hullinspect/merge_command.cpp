@@ -6,7 +6,9 @@
 #include <memory>
 
 #include "experiment_commands.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/experiment/merge.hpp"
+#include "hullinspect/io/output_set.hpp"
 
 namespace hullinspect::cli {
 
@@ -19,17 +21,24 @@ struct MergeArgs {
 
 int run(const MergeArgs& a) {
   std::vector<std::filesystem::path> inputs(a.inputs.begin(), a.inputs.end());
+  io::OutputSet outputs;
+  for (const auto& dir : a.inputs) outputs.add_input(dir, "input directory");
+  outputs.add_output_dir(a.out, "out");
+  outputs.check();
   const auto summary = experiment::merge_results(inputs, a.out);
   for (const auto& note : summary.notes) std::cerr << "hullinspect: " << note << "\n";
-  std::cout << fmt::format("merged {} directories into {}: {} runs", summary.inputs, a.out,
-                           summary.runs);
-  if (summary.duplicates > 0) std::cout << fmt::format(", {} duplicates dropped", summary.duplicates);
+  std::cout << fmt::format("merged {} into {}: {}",
+                           plural(summary.inputs, "directory", "directories"), a.out,
+                           plural(summary.runs, "run"));
+  if (summary.duplicates > 0) {
+    std::cout << fmt::format(", {} dropped", plural(summary.duplicates, "duplicate"));
+  }
   std::cout << "\n";
   if (summary.missing > 0) {
     std::cerr << fmt::format(
-        "hullinspect: {} runs of the experiment are in none of the inputs (the merge is partial; "
+        "hullinspect: {} of the experiment {} in none of the inputs (the merge is partial; "
         "finish the missing shards with --resume and merge again)\n",
-        summary.missing);
+        plural(summary.missing, "run"), summary.missing == 1 ? "is" : "are");
     return 3;
   }
   return 0;

@@ -3,54 +3,123 @@
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/planners/scenario.hpp"
 #include "hullinspect/world/no_fly.hpp"
+#include "hullinspect/core/parameters.hpp"
+#include "hullinspect/planners/planner.hpp"
+#include "hullinspect/world/scenario.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
+namespace {
+
+/// "desc (type, default D, range)" of a declared option, for --help.
+std::string declared_help(const std::vector<ParamSpec>& specs, std::string_view name,
+                          std::string_view prefix = "") {
+  for (const auto& s : specs) {
+    if (s.name != name) continue;
+    std::string text = std::string(prefix) + s.description + " (" +
+                       std::string(param_type_name(s.type)) + ", default " + s.default_value;
+    if (!s.range.empty() && s.type != ParamType::kBool) text += ", " + s.range;
+    return text + ")";
+  }
+  return std::string(prefix);
+}
+
+std::vector<ParamSpec> planner_specs(std::string_view planner) {
+  return planners::planners().get(planner).specs();
+}
+
+}  // namespace
+
 void add_mission_options(CLI::App& cmd, MissionArgs& a) {
-  cmd.add_option("--algorithm,-a", a.algorithm,
-                 "Planner: lawnmower, part-tsp, part-tsp0, coop-frontier")
-      ->capture_default_str();
+  std::string planner_names;
+  std::string planner_help;
+  for (const auto& info : planners::planner_registry()) {
+    planner_names += (planner_names.empty() ? "" : ", ") + info.name;
+    planner_help += fmt::format("  {}: {}\n{}", info.name, info.description,
+                                describe_params(info.options, "    "));
+  }
+  std::string scenario_names;
+  for (const auto& n : world::scenarios().names()) {
+    scenario_names += (scenario_names.empty() ? "" : ", ") + n;
+  }
+  const auto scenario = world::scenarios().get("perfect").specs();
+  cmd.add_option("--algorithm,-a", a.algorithm, "Planner: " + planner_names)->capture_default_str();
   cmd.add_option("--uavs,-n", a.uavs, "Fleet size n (1 … number of hull cells)")->capture_default_str();
   cmd.add_option("--s1", a.s1, "Footprint side at the close-up plane z = 1, cells (odd)")
       ->capture_default_str();
   cmd.add_option("--s2", a.s2, "Footprint side at the detection plane z = 2, cells (odd, > s1)")
       ->capture_default_str();
-  cmd.add_option("--theta", a.theta, "Camera aperture θ in degrees, in (0, 180)")->capture_default_str();
-  cmd.add_option("--start-z", a.start_z, "Plane every UAV starts on (1 or 2)")->capture_default_str();
+  cmd.add_option("--theta", a.theta, "Camera aperture θ in degrees, in (0, 180)")
+      ->capture_default_str();
+  cmd.add_option("--start-z", a.start_z, "Plane every UAV starts on (1 or 2)")
+      ->capture_default_str();
   cmd.add_option("--start", a.starts,
                  "Start cell x,y of each UAV (repeat once per UAV; default: spread along the hull)")
       ->type_name("X,Y");
-  cmd.add_option("--seed", a.seed, "Instance seed (same seed, same C and C')")->capture_default_str();
+  cmd.add_option("--seed", a.seed, "Instance seed (same seed, same C and C')")
+      ->capture_default_str();
   cmd.add_option("--scenario", a.scenario,
-                 "Corrosion scenario preset: perfect, imperfect, inhomogeneous, combined "
-                 "(explicit --p-c/--l-c/--p-tp/--p-fp override it)");
-  cmd.add_option("--p-c", a.p_c, "Probability that a hull cell is a corrosion centre [0, 1] (default 0.005)");
-  cmd.add_option("--l-c", a.l_c, "Largest corrosion rectangle side, odd (default 5)");
-  cmd.add_option("--front-p-c", a.front_p_c,
-                 "p_C of the front half (x >= a/2); --p-c then applies to the back half");
-  cmd.add_option("--front-l-c", a.front_l_c, "l_C of the front half (x >= a/2)");
-  cmd.add_option("--p-tp", a.p_tp, "Probability that a true centre is in the prior [0, 1] (default 1)");
-  cmd.add_option("--p-fp", a.p_fp,
-                 "Probability that another hull cell is a false prior centre [0, 1] (default 0)");
+                 "Corrosion scenario: " + scenario_names +
+                     " (--p-c/--l-c/--front-p-c/--front-l-c/--p-tp/--p-fp override its values; "
+                     "defaults below are perfect's, see `hullinspect list scenarios`)")
+      ->capture_default_str();
+  cmd.add_option("--p-c", a.p_c, declared_help(scenario, "p-c"))->type_name("P");
+  cmd.add_option("--l-c", a.l_c, declared_help(scenario, "l-c"))->type_name("L");
+  cmd.add_option("--front-p-c", a.front_p_c, declared_help(scenario, "front-p-c"))->type_name("P");
+  cmd.add_option("--front-l-c", a.front_l_c, declared_help(scenario, "front-l-c"))->type_name("L");
+  cmd.add_option("--p-tp", a.p_tp, declared_help(scenario, "p-tp"))->type_name("P");
+  cmd.add_option("--p-fp", a.p_fp, declared_help(scenario, "p-fp"))->type_name("P");
   cmd.add_option("--hull", a.hull,
-                 "Hull mask: 'default', a text mask or a PGM image (see docs/formats.md)")
+                 "Hull: 'default', 'dtc', a text mask, a PGM image, a hull JSON or a mesh "
+                 "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
       ->type_name("FILE")
       ->capture_default_str();
   cmd.add_option("--time-limit", a.time_limit,
                  "Steps after which an unfinished mission is reported incomplete")
       ->capture_default_str();
-  cmd.add_option("--partitioner", a.partitioner, "Partitioner for partitioned planners: darp, stripes");
-  cmd.add_option("--partition-seed", a.partition_seed, "Seed of the partitioner (default 0)");
-  cmd.add_option("--tsp-solver", a.tsp_solver, "Part-TSP: TSP solver (exact, dfj-iterative, heuristic)");
-  cmd.add_option("--r1", a.r1, "Part-TSP: steps after the last detection before descending (default 2)");
-  cmd.add_option("--r2", a.r2, "Part-TSP: steps after the last inspection before ascending (default 0)");
-  cmd.add_option("--alpha", a.alpha, "Coop-Frontier: weight α of the prior term in eq. 13");
-  cmd.add_option("--beta", a.beta, "Coop-Frontier: weight β of the distance term in eq. 15");
-  cmd.add_option("--option,-O", a.planner_options, "Any other planner option as key=value (repeatable)")
+  const auto part_tsp = planner_specs("part-tsp");
+  const auto coop = planner_specs("coop-frontier");
+  cmd.add_option("--partitioner", a.partitioner,
+                 declared_help(part_tsp, "partitioner", "Partitioned planners: "))
+      ->type_name("NAME");
+  cmd.add_option("--partition-seed", a.partition_seed,
+                 declared_help(part_tsp, "partition-seed", "Partitioned planners: "))
+      ->type_name("SEED");
+  cmd.add_option("--tsp-solver", a.tsp_solver, declared_help(part_tsp, "tsp-solver", "Part-TSP: "))
+      ->type_name("NAME");
+  cmd.add_option("--r1", a.r1, declared_help(part_tsp, "r1", "Part-TSP: "))->type_name("STEPS");
+  cmd.add_option("--r2", a.r2, declared_help(part_tsp, "r2", "Part-TSP: "))->type_name("STEPS");
+  cmd.add_option("--alpha", a.alpha, declared_help(coop, "alpha", "Coop-Frontier: "))
+      ->type_name("X");
+  cmd.add_option("--beta", a.beta, declared_help(coop, "beta", "Coop-Frontier: "))->type_name("X");
+  cmd.add_option("--option,-O", a.planner_options,
+                 "Any planner option as key=value (repeatable; listed below, also "
+                 "`hullinspect list planners`)")
       ->type_name("KEY=VALUE");
+  cmd.add_option("--fail", a.fail,
+                 "UAV k fails at the start of step T: it stops, senses nothing (repeatable; "
+                 "docs/beyond.md)")
+      ->type_name("UAV@T");
+  cmd.add_option("--fail-rate", a.fail_rate,
+                 "Probability that a working UAV fails at a step, drawn from the instance seed")
+      ->capture_default_str();
+  cmd.add_option("--fail-one-within", a.fail_one_within,
+                 "One UAV (drawn from the instance seed) fails at a random step below H (0: none)")
+      ->type_name("H")
+      ->capture_default_str();
+  cmd.add_option("--prior", a.prior,
+                 "Expected corrosion C' from FILE (text mask or PGM, marked = corroded) instead of "
+                 "the generated prior")
+      ->type_name("FILE");
+  cmd.add_option("--truth", a.truth,
+                 "Ground truth C from FILE (text mask or PGM, marked = corroded) instead of the "
+                 "generated one")
+      ->type_name("FILE");
+  add_mesh_options(cmd, a.mesh);
   add_no_fly_options(cmd, a.no_fly, a.no_fly_boxes);
+  cmd.footer("Planners and their options (-O KEY=VALUE):\n" + planner_help);
 }
 
 void add_no_fly_options(CLI::App& cmd, std::string& file, std::vector<std::string>& boxes) {
@@ -73,20 +142,10 @@ std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& 
       world::make_no_fly_mask(hull, file, cell_boxes));
 }
 
-world::HullMask load_mission_hull(const MissionArgs& a) { return world::load_hull(a.hull); }
+world::HullMask load_mission_hull(const MissionArgs& a) {
+  return load_hull_argument(a.hull, a.mesh);
 
-namespace {
-grid::Cell parse_cell(const std::string& text) {
-  int x = 0;
-  int y = 0;
-  char comma = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
-    throw ParameterError("start", fmt::format("expects X,Y (got '{}')", text));
-  }
-  return {x, y};
 }
-}  // namespace
 
 planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hull) {
   planners::MissionSpec spec;
@@ -99,18 +158,29 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   p.theta_deg = a.theta;
   p.start_z = a.start_z;
   p.time_limit = a.time_limit;
-  for (const auto& s : a.starts) p.starts.push_back(parse_cell(s));
+  if (hull.geometry()) p.cell_size_m = hull.geometry()->cell_size;
+  for (const auto& s : a.starts) p.starts.push_back(parse_xy(s));
   p.no_fly = build_no_fly(a.no_fly, a.no_fly_boxes, hull);
 
-  planners::Scenario sc{"custom", "", 0.005, 0.005, 5, 5, 1.0, 0.0};
-  if (!a.scenario.empty()) sc = planners::scenario(a.scenario);
-  if (a.p_c) sc.back_p_c = sc.front_p_c = *a.p_c;
-  if (a.l_c) sc.back_l_c = sc.front_l_c = *a.l_c;
-  if (a.front_p_c) sc.front_p_c = *a.front_p_c;
-  if (a.front_l_c) sc.front_l_c = *a.front_l_c;
-  if (a.p_tp) sc.p_tp = *a.p_tp;
-  if (a.p_fp) sc.p_fp = *a.p_fp;
-  spec.corrosion = sc.corrosion(hull.width());
+  OptionMap scenario_options;
+  auto set = [&](const char* key, const std::optional<std::string>& v) {
+    if (v) scenario_options[key] = *v;
+  };
+  set("p-c", a.p_c);
+  set("l-c", a.l_c);
+  set("front-p-c", a.front_p_c);
+  set("front-l-c", a.front_l_c);
+  set("p-tp", a.p_tp);
+  set("p-fp", a.p_fp);
+  try {
+    spec.corrosion = world::scenario(a.scenario, scenario_options).corrosion(hull.width());
+  } catch (const ParameterError& e) {
+    // "perfect.p-c" is --p-c on this command line.
+    const auto dot = e.name().find('.');
+    if (dot == std::string::npos) throw;
+    throw ParameterError(e.name().substr(dot + 1), e.problem());
+  }
+  spec.maps = world::load_user_maps(a.prior, a.truth, hull);
 
   auto put = [&](const char* key, const std::optional<std::string>& v) {
     if (v) spec.planner_options[key] = *v;
@@ -122,6 +192,9 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   put("r2", a.r2);
   put("alpha", a.alpha);
   put("beta", a.beta);
+  for (const auto& f : a.fail) spec.failures.at.push_back(world::parse_uav_failure(f));
+  spec.failures.rate = a.fail_rate;
+  spec.failures.one_within = a.fail_one_within;
   for (const auto& kv : a.planner_options) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) {

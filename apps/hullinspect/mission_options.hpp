@@ -10,27 +10,33 @@
 
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "mesh_options.hpp"
 
 namespace hullinspect::cli {
 
+/// Defaults are MissionParams{}'s and the scenario's declared ones (nothing retyped here).
 struct MissionArgs {
   std::string algorithm = "lawnmower";
   std::string hull = "default";
-  std::string scenario;
-  int uavs = 4;
-  int s1 = 5;
-  int s2 = 7;
-  double theta = 90.0;
-  int start_z = 2;
+  std::string scenario = "perfect";
+  int uavs = world::MissionParams{}.uavs;
+  int s1 = world::MissionParams{}.s1;
+  int s2 = world::MissionParams{}.s2;
+  double theta = world::MissionParams{}.theta_deg;
+  int start_z = world::MissionParams{}.start_z;
   std::vector<std::string> starts;
   std::uint64_t seed = 1;
-  std::optional<double> p_c, p_tp, p_fp, front_p_c;
-  std::optional<int> l_c, front_l_c;
-  int time_limit = 20000;
+  std::optional<std::string> p_c, p_tp, p_fp, front_p_c, l_c, front_l_c;
+  int time_limit = world::MissionParams{}.time_limit;
   std::optional<std::string> partitioner, partition_seed, tsp_solver, r1, r2, alpha, beta;
   std::vector<std::string> planner_options;  // key=value
   std::string no_fly;                        // mask file of no-fly positions ("" = none)
   std::vector<std::string> no_fly_boxes;     // X0,Y0,X1,Y1 (cells, inclusive)
+  std::vector<std::string> fail;             // UAV@STEP
+  double fail_rate = 0;
+  int fail_one_within = 0;
+  MeshArgs mesh;                             // how a mesh --hull is imported
+  std::string prior, truth;                  // the user's C′ and C (any hull-mask format)
 };
 
 /// Adds --no-fly FILE and --no-fly-box X0,Y0,X1,Y1 (repeatable) to a command.
@@ -44,8 +50,5 @@ void add_mission_options(CLI::App& cmd, MissionArgs& args);
 world::HullMask load_mission_hull(const MissionArgs& args);
 /// Turns the arguments into a spec; throws ParameterError naming the option.
 planners::MissionSpec build_spec(const MissionArgs& args, const world::HullMask& hull);
-
-/// Writes the HTML replay viewer for a trace (implemented with the view command).
-void write_viewer_html(const nlohmann::json& trace, const std::string& path);
 
 }  // namespace hullinspect::cli

@@ -8,13 +8,16 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
 #include "mission_options.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -35,18 +38,8 @@ struct PartitionArgs {
   std::string out_path;
   std::string no_fly;
   std::vector<std::string> no_fly_boxes;
+  MeshArgs mesh;  // how a mesh --hull is imported
 };
-
-grid::Cell parse_start(const std::string& text) {
-  int x = 0;
-  int y = 0;
-  char comma = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
-    throw ParameterError("start", fmt::format("expects X,Y (got '{}')", text));
-  }
-  return {x, y};
-}
 
 // Explicit starts that snap onto one hull cell: name the cells as the user gave them.
 void reject_shared_starts(const std::vector<grid::Cell>& given,
@@ -93,10 +86,10 @@ std::vector<bool> connected_regions(const world::HullMask& hull, const partition
 std::string region_mask(const world::HullMask& hull, const partition::Partition& p,
                         const PartitionArgs& args) {
   std::string text = fmt::format(
-      "; hullinspect partition: {}, {} UAVs, seed {}, hull {}\n"
+      "; hullinspect partition: {}, {}, seed {}, hull {}\n"
       "; one symbol per cell, top row (y = {}) first: UAV 0-9, then A-Z = 10-35, a-z = 36-61; "
       "'.' = not hull\n",
-      args.partitioner, args.uavs, args.seed, hull.source(), hull.height() - 1);
+      args.partitioner, plural(args.uavs, "UAV"), args.seed, hull.source(), hull.height() - 1);
   for (int y = hull.height() - 1; y >= 0; --y) {
     for (int x = 0; x < hull.width(); ++x) {
       const int k = p.owner(x, y);
@@ -110,8 +103,9 @@ std::string region_mask(const world::HullMask& hull, const partition::Partition&
 void print_summary(const PartitionArgs& args, const world::HullMask& hull,
                    const std::vector<grid::Cell>& starts, const partition::Partition& p,
                    const std::vector<bool>& connected) {
-  std::cout << fmt::format("{}: {} UAVs on {} ({} hull cells), seed {}\n", args.partitioner,
-                           args.uavs, hull.source(), hull.cell_count(), args.seed);
+  std::cout << fmt::format("{}: {} on {} ({}), seed {}\n", args.partitioner,
+                           plural(args.uavs, "UAV"), hull.source(),
+                           plural(hull.cell_count(), "hull cell"), args.seed);
   if (p.converged) {
     std::cout << fmt::format(
         "  converged after {} iterations in {:.3f} ms; tolerance reached {:g} "
@@ -156,10 +150,14 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
 }
 
 int run_partition(const PartitionArgs& args) {
-  const world::HullMask hull = world::load_hull(args.hull);
+  io::OutputSet outputs;
+  if (args.hull != "default") outputs.add_input(args.hull, "hull");
+  outputs.add_output(args.out_path, "out");
+  outputs.check();
+  const world::HullMask hull = load_hull_argument(args.hull, args.mesh);
   world::MissionParams params;
   params.uavs = args.uavs;
-  for (const auto& s : args.starts) params.starts.push_back(parse_start(s));
+  for (const auto& s : args.starts) params.starts.push_back(parse_xy(s));
   params.no_fly = build_no_fly(args.no_fly, args.no_fly_boxes, hull);
   try {
     world::validate(params, hull);
@@ -194,7 +192,10 @@ int run_partition(const PartitionArgs& args) {
   reject_shared_starts(params.starts, request.starts);
   const partition::Partition result = partitioner->partition(request);
   const auto connected = connected_regions(hull, result, args.uavs);
-  if (!args.out_path.empty()) io::write_file_atomic(args.out_path, region_mask(hull, result, args));
+  if (!args.out_path.empty()) {
+    outputs.write(args.out_path, region_mask(hull, result, args));
+    outputs.commit();
+  }
   if (args.json) {
     std::cout << summary_json(args, hull, request.starts, result, connected).dump() << "\n";
   } else {
@@ -210,25 +211,35 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
   auto args = std::make_shared<PartitionArgs>();
   CLI::App* cmd =
       app.add_subcommand("partition", "Divide the hull among the UAVs and report the regions");
+  std::string partitioners;
+  std::string names;
+  for (const auto& info : partition::partitioner_registry()) {
+    partitioners += fmt::format("  {}: {}\n{}", info.name, info.description,
+                                describe_params(info.options, "    "));
+    names += (names.empty() ? "" : ", ") + info.name;
+  }
   cmd->footer(
+      "Partitioners and their options (-O KEY=VALUE):\n" + partitioners +
       "Exit status: 0 converged, 3 not converged (the best connected partition found is still "
       "reported and written), 2 invalid input, 1 other failure.\n"
       "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
   cmd->add_option("--uavs,-n", args->uavs, "Fleet size n (1 … number of hull cells)")->required();
   cmd->add_option("--hull", args->hull,
-                  "Hull mask: 'default', a text mask or a PGM image (see docs/formats.md)")
+                  "Hull: 'default', 'dtc', a text mask, a PGM image, a hull JSON or a mesh "
+                  "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
       ->type_name("FILE")
       ->capture_default_str();
+  add_mesh_options(*cmd, args->mesh);
   cmd->add_option("--start", args->starts,
                   "Start cell x,y of each UAV (repeat once per UAV; default: spread along the "
                   "hull); cells off the hull are snapped to the nearest hull cell")
       ->type_name("X,Y");
   cmd->add_option("--seed", args->seed, "Partitioner seed")->capture_default_str();
-  cmd->add_option("--partitioner", args->partitioner, "Partitioner: darp, stripes")
+  cmd->add_option("--partitioner", args->partitioner, "Partitioner: " + names)
       ->capture_default_str();
   cmd->add_option("--option,-O", args->options,
-                  "Partitioner option as key=value, e.g. iteration-limit=500 (repeatable; see "
-                  "docs/partition.md)")
+                  "Partitioner option as key=value, e.g. iteration-limit=500 (repeatable; listed "
+                  "below)")
       ->type_name("KEY=VALUE");
   add_no_fly_options(*cmd, args->no_fly, args->no_fly_boxes);
   cmd->add_flag("--json", args->json,

@@ -4,6 +4,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
+#include "hullinspect/planners/planner.hpp"
 
 namespace hullinspect::experiment {
 
@@ -16,21 +17,36 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
   const auto& a = c.algorithms[static_cast<std::size_t>(cell.algorithm)];
   std::string zones;
   for (const auto& z : s.corrosion.zones) {
-    zones += fmt::format("{}{}:{}:{}:{}", zones.empty() ? "" : ";", z.x_begin, z.x_end, z.p_c, z.l_c);
+    zones +=
+        fmt::format("{}{}:{}:{}:{}", zones.empty() ? "" : ";", z.x_begin, z.x_end, z.p_c, z.l_c);
   }
   std::string options;
-  for (const auto& [k, v] : a.options) options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
+  for (const auto& [k, v] : a.options)
+    options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
   return fmt::format(
       "hullinspect-run/1|hull={}|cell_size={}|scenario={}|zones={}|p_tp={}|p_fp={}|s1={}|s2={}|"
       "theta={}|uavs={}|start_z={}|time_limit={}|algorithm={}|planner={}|options={}",
       c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp, c.s1,
       c.s2[static_cast<std::size_t>(cell.s2)], c.theta, c.uavs[static_cast<std::size_t>(cell.uavs)],
-      c.start_z, c.time_limit, a.label, a.planner, options);
+      c.start_z, c.time_limit, a.label, a.planner, options) +
+         // Only scenarios with failures say so, so that every other run keeps its id.
+         (s.failures.empty() ? std::string() : "|failures=" + s.failures.text());
 }
 
 }  // namespace
 
 ExperimentPlan::ExperimentPlan(ExperimentConfig config) : config_(std::move(config)) {
+  if (config_.hull) {
+    // Every algorithm's effective options (defaults included) define its cells, the manifest and
+    // runs.csv, so an option spelled out at its default names the same experiment as one left out.
+    for (auto& a : config_.algorithms) {
+      try {
+        a.options = planners::resolve_planner_options(a.planner, a.options);
+      } catch (const ParameterError& e) {
+        throw InputError(config_.source, a.line, e.what());
+      }
+    }
+  }
   const auto& c = config_;
   for (int sc = 0; sc < static_cast<int>(c.scenarios.size()); ++sc) {
     for (int s2 = 0; s2 < static_cast<int>(c.s2.size()); ++s2) {
@@ -49,7 +65,8 @@ ExperimentPlan::ExperimentPlan(ExperimentConfig config) : config_(std::move(conf
     for (int si = 0; si < static_cast<int>(c.seeds.size()); ++si) {
       const std::uint64_t seed = c.seeds[static_cast<std::size_t>(si)];
       RunKey run{ci, si, seed,
-                 stable_id(fmt::format("{}|seed={}", cells_[static_cast<std::size_t>(ci)].canonical, seed))};
+                 stable_id(fmt::format("{}|seed={}", cells_[static_cast<std::size_t>(ci)].canonical,
+                                       seed))};
       if (!position_.emplace(run.id, static_cast<int>(runs_.size())).second) {
         throw LogicError(fmt::format("run id {} is not unique (hash collision)", run.id));
       }
@@ -82,7 +99,9 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.time_limit = c.time_limit;
   spec.params.no_fly = c.no_fly;
   spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
+  spec.failures = c.scenarios[static_cast<std::size_t>(cell.scenario)].failures;
   spec.seed = seed;
+  spec.maps = c.maps;
   return spec;
 }
 
@@ -101,7 +120,8 @@ void ExperimentPlan::validate_cell(const Cell& cell) const {
     } else if (name == "p_c" || name == "l_c" || name == "p_tp" || name == "p_fp" ||
                name == "zones") {
       line = config_.scenarios[static_cast<std::size_t>(cell.scenario)].line;
-    } else if (name == "algorithm" || name.find('.') != std::string::npos) {
+    } else if (name == "algorithm" || name == "partitioner" ||
+               name.find('.') != std::string::npos) {
       line = config_.algorithms[static_cast<std::size_t>(cell.algorithm)].line;
     } else {
       line = config_.line_of(name);

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include "hullinspect/core/errors.hpp"
 
@@ -91,9 +92,11 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
   const int c_complete = runs.column("complete", source);
   const int c_tc = runs.column("T_c", source);
   const int c_tm = runs.column("T_m", source);
+  const int c_btc = runs.find_column("bound_T_c");
+  const int c_btm = runs.find_column("bound_T_m");
 
   std::vector<SummaryRow> rows;
-  std::vector<std::vector<double>> tc, tm;
+  std::vector<std::vector<double>> tc, tm, btc, btm;
   std::map<std::tuple<std::string, int, int, std::string>, std::size_t> index;
   int line = 1;
   for (const auto& r : runs.rows) {
@@ -114,16 +117,22 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
       rows.push_back(row);
       tc.emplace_back();
       tm.emplace_back();
+      btc.emplace_back();
+      btm.emplace_back();
     }
     SummaryRow& row = rows[it->second];
     ++row.runs;
     if (at(c_complete) != "1") ++row.incomplete;
     if (!at(c_tc).empty()) tc[it->second].push_back(parse_int(at(c_tc), source, line));
     if (!at(c_tm).empty()) tm[it->second].push_back(parse_int(at(c_tm), source, line));
+    if (c_btc >= 0 && !at(c_btc).empty()) btc[it->second].push_back(parse_int(at(c_btc), source, line));
+    if (c_btm >= 0 && !at(c_btm).empty()) btm[it->second].push_back(parse_int(at(c_btm), source, line));
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     rows[i].t_c = stats(tc[i]);
     rows[i].t_m = stats(tm[i]);
+    rows[i].bound_t_c = stats(btc[i]);
+    rows[i].bound_t_m = stats(btm[i]);
   }
   return rows;
 }
@@ -131,7 +140,7 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
 std::string summary_csv(const std::vector<SummaryRow>& rows) {
   std::string out = csv_line({"scenario", "sweep", "sweep_value", "s2", "uavs", "algorithm", "runs",
                               "incomplete", "T_c_count", "T_c_mean", "T_c_std", "T_m_count",
-                              "T_m_mean", "T_m_std"}) +
+                              "T_m_mean", "T_m_std", "bound_T_c_mean", "bound_T_m_mean"}) +
                     "\n";
   auto number = [](const TimeStats& t, double v) {
     return t.count == 0 ? std::string() : fmt::format("{:.3f}", v);
@@ -142,44 +151,57 @@ std::string summary_csv(const std::vector<SummaryRow>& rows) {
                      std::to_string(r.incomplete), std::to_string(r.t_c.count),
                      number(r.t_c, r.t_c.mean), number(r.t_c, r.t_c.std),
                      std::to_string(r.t_m.count), number(r.t_m, r.t_m.mean),
-                     number(r.t_m, r.t_m.std)}) +
+                     number(r.t_m, r.t_m.std), number(r.bound_t_c, r.bound_t_c.mean),
+                     number(r.bound_t_m, r.bound_t_m.mean)}) +
            "\n";
   }
   return out;
 }
 
 std::string summary_markdown(const std::vector<SummaryRow>& rows) {
-  std::vector<std::string> scenarios;
+  // One group per plain scenario and one per sweep (all its values in one table, not one
+  // one-row table per value).
+  auto group_of = [](const SummaryRow& r) { return r.sweep.empty() ? r.scenario : r.sweep; };
+  std::vector<std::pair<std::string, bool>> groups;  // (name, is a sweep)
   std::vector<std::string> algorithms;
   for (const auto& r : rows) {
-    if (std::find(scenarios.begin(), scenarios.end(), r.scenario) == scenarios.end()) {
-      scenarios.push_back(r.scenario);
-    }
+    const std::pair<std::string, bool> g{group_of(r), !r.sweep.empty()};
+    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
     if (std::find(algorithms.begin(), algorithms.end(), r.algorithm) == algorithms.end()) {
       algorithms.push_back(r.algorithm);
     }
   }
   std::string out;
-  for (const auto& scenario : scenarios) {
-    std::vector<std::pair<int, int>> params;  // (s2, n) in order of appearance
-    std::map<std::pair<std::pair<int, int>, std::string>, const SummaryRow*> cell;
+  for (const auto& [group, is_sweep] : groups) {
+    // Rows of the table: (swept value, s2, n) in order of appearance.
+    using Key = std::tuple<std::string, int, int>;
+    std::vector<Key> params;
+    std::map<std::pair<Key, std::string>, const SummaryRow*> cell;
     int runs = 0;
     for (const auto& r : rows) {
-      if (r.scenario != scenario) continue;
-      const auto p = std::make_pair(r.s2, r.uavs);
+      if (group_of(r) != group || r.sweep.empty() == is_sweep) continue;
+      const Key p{is_sweep ? r.sweep_value : std::string(), r.s2, r.uavs};
       if (std::find(params.begin(), params.end(), p) == params.end()) params.push_back(p);
       cell[{p, r.algorithm}] = &r;
       runs = std::max(runs, r.runs);
     }
     for (const bool mission : {false, true}) {
-      out += fmt::format("### {} — {} (s), mean ± std over {} instances\n\n", scenario,
-                         mission ? "T_m" : "T_c", runs);
+      out += fmt::format("### {}{} — {} (s), mean ± std over {} instances\n\n",
+                         is_sweep ? "sweep of " : "", group, mission ? "T_m" : "T_c", runs);
       std::vector<std::vector<std::string>> t;
-      std::vector<std::string> header = {"s2", "n"};
+      std::vector<std::string> header;
+      if (is_sweep) header.push_back(group);
+      header.insert(header.end(), {"s2", "n"});
       header.insert(header.end(), algorithms.begin(), algorithms.end());
+      bool any_bound = false;
+      for (const auto& [key, r] : cell) any_bound = any_bound || r->bound_t_c.count > 0;
+      if (any_bound) header.push_back("lower bound");
       t.push_back(header);
       for (const auto& p : params) {
-        std::vector<std::string> line = {std::to_string(p.first), std::to_string(p.second)};
+        std::vector<std::string> line;
+        if (is_sweep) line.push_back(std::get<0>(p));
+        line.push_back(std::to_string(std::get<1>(p)));
+        line.push_back(std::to_string(std::get<2>(p)));
         for (const auto& a : algorithms) {
           auto it = cell.find({p, a});
           if (it == cell.end()) {
@@ -189,6 +211,18 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
           const SummaryRow& r = *it->second;
           std::string text = mean_std(mission ? r.t_m : r.t_c);
           if (r.incomplete > 0) text += fmt::format(" [{} incomplete]", r.incomplete);
+          line.push_back(text);
+        }
+        if (any_bound) {
+          // The bound depends on the instance only: every algorithm's rows hold the same seeds.
+          std::string text;
+          for (const auto& a : algorithms) {
+            auto it = cell.find({p, a});
+            if (it == cell.end()) continue;
+            const TimeStats& b = mission ? it->second->bound_t_m : it->second->bound_t_c;
+            if (b.count > 0) text = fmt::format("{:.1f}", b.mean);
+            break;
+          }
           line.push_back(text);
         }
         t.push_back(line);

@@ -7,10 +7,13 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <string_view>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/io/json_document.hpp"
 
 namespace hullinspect::io {
 
@@ -38,6 +41,11 @@ class TraceChecker {
   std::int64_t integer(const json& v, const std::string& where, std::int64_t lo,
                        std::int64_t hi) const {
     if (!v.is_number_integer()) fail(where, "expected an integer");
+    if (v.is_number_unsigned() &&
+        v.get<std::uint64_t>() >
+            static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+      fail(where, fmt::format("{} is outside [{}, {}]", v.dump(), lo, hi));
+    }
     const auto i = v.get<std::int64_t>();
     if (i < lo || i > hi) fail(where, fmt::format("{} is outside [{}, {}]", i, lo, hi));
     return i;
@@ -86,8 +94,23 @@ class TraceChecker {
   std::string source_;
 };
 
+// Sorted, distinct flat cell indices inside the grid.
+void check_cell_set(const TraceChecker& check, const json& v, const std::string& where,
+                    std::int64_t cells) {
+  check.array(v, where);
+  std::int64_t previous = -1;
+  for (std::size_t j = 0; j < v.size(); ++j) {
+    const auto at = fmt::format("{}[{}]", where, j);
+    const auto c = check.integer(v[j], at, 0, cells - 1);
+    if (c <= previous)
+      check.fail(at, fmt::format("{} is not above the previous index {}", c, previous));
+    previous = c;
+  }
+}
+
+// `layers_seen`: the layers whose whole set an earlier frame gave (changes need one).
 void check_frame(const TraceChecker& check, const json& f, std::size_t i, int width, int height,
-                 std::size_t uav_values) {
+                 std::size_t uav_values, std::set<std::string>& layers_seen) {
   const auto where = fmt::format("frames[{}]", i);
   check.object(f, where);
   const auto cells = static_cast<std::int64_t>(width) * height;
@@ -136,11 +159,24 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
   if (auto l = f.find("l"); l != f.end()) {
     check.object(*l, where + ".l");
-    for (const auto& [name, indices] : l->items()) {
+    for (const auto& [name, value] : l->items()) {
       const auto at = fmt::format("{}.l.{}", where, name);
-      check.array(indices, at);
-      for (std::size_t j = 0; j < indices.size(); ++j) {
-        check.integer(indices[j], fmt::format("{}[{}]", at, j), 0, cells - 1);
+      if (value.is_array()) {
+        check_cell_set(check, value, at, cells);
+        layers_seen.insert(name);
+        continue;
+      }
+      if (!value.is_object()) {
+        check.fail(at,
+                   "expected the layer's cells (an array) or its changes {\"add\", \"remove\"}");
+      }
+      if (!layers_seen.contains(name)) {
+        check.fail(at, "changes to a layer whose whole set was not given before");
+      }
+      for (const auto& [key, part] : value.items()) {
+        if (key != "add" && key != "remove")
+          check.fail(at + "." + key, "unknown key (known: add, remove)");
+        check_cell_set(check, part, at + "." + key, cells);
       }
     }
   }
@@ -148,12 +184,6 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
 // "[json.exception.parse_error.101] parse error at line 3, column 1: syntax error …" → the part
 // after the location, on one line.
-std::string parse_problem(const json::parse_error& e) {
-  std::string what = e.what();
-  if (auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
-  std::replace(what.begin(), what.end(), '\n', ' ');
-  return what;
-}
 
 }  // namespace
 
@@ -165,9 +195,12 @@ void validate_trace(const json& trace, const std::string& source) {
     check.fail("format", fmt::format("expected \"{}\" (not a hullinspect trace?)", kTraceFormat));
   }
   const auto& version = check.field(trace, "", "version");
-  if (!version.is_number_integer() || version.get<int>() != kTraceVersion) {
-    check.fail("version", fmt::format("{} is not supported (this hullinspect reads version {})",
-                                      version.dump(), kTraceVersion));
+  // Version 1 is version 2 without layer changes, so both are read.
+  if (!version.is_number_integer() || version.get<int>() < 1 ||
+      version.get<int>() > kTraceVersion) {
+    check.fail("version",
+               fmt::format("{} is not supported (this hullinspect reads versions 1 to {})",
+                           version.dump(), kTraceVersion));
   }
   check.object(check.field(trace, "", "parameters"), "parameters");
 
@@ -215,8 +248,9 @@ void validate_trace(const json& trace, const std::string& source) {
     check.fail("frames[0].u",
                fmt::format("expected {} numbers per UAV, got {} in all", kUavFields, u0.size()));
   }
+  std::set<std::string> layers_seen;
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    check_frame(check, frames[i], i, width, height, u0.size());
+    check_frame(check, frames[i], i, width, height, u0.size(), layers_seen);
   }
 
   const auto last = static_cast<std::int64_t>(frames.size()) - 1;
@@ -250,17 +284,12 @@ void validate_trace(const json& trace, const std::string& source) {
   }
 }
 
+// A trace file larger than this is refused before it is read whole.
+constexpr std::size_t kMaxTraceBytes = std::size_t{1} << 30;
+
 json read_trace(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
-  json trace;
-  try {
-    trace = json::parse(text);
-  } catch (const json::parse_error& e) {
-    const auto end = std::min(static_cast<std::size_t>(e.byte), text.size());
-    const int line = 1 + static_cast<int>(std::count(
-                             text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
-    throw InputError(path.string(), line, "not a JSON trace: " + parse_problem(e));
-  }
+  const std::string text = read_file(path, kMaxTraceBytes);
+  const json trace = parse_json_document(text, path.string(), "a JSON trace");
   validate_trace(trace, path.string());
   return trace;
 }

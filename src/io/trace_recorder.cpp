@@ -1,7 +1,9 @@
 #include "hullinspect/io/trace_recorder.hpp"
 
 #include <algorithm>
+#include <iterator>
 
+#include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/version.hpp"
 
 namespace hullinspect::io {
@@ -34,7 +36,7 @@ json uav_states(const sim::Simulator& sim) {
     u.push_back(s.pos.y);
     u.push_back(s.z);
     u.push_back(s.transit_left);
-    u.push_back(s.active ? 1 : 0);
+    u.push_back(s.failed ? 0 : 1);
   }
   return u;
 }
@@ -44,7 +46,7 @@ json uav_states(const sim::Simulator& sim) {
 TraceRecorder::TraceRecorder(const world::Instance& instance, json parameters)
     : instance_(instance) {
   trace_["format"] = "hullinspect-trace";
-  trace_["version"] = 1;
+  trace_["version"] = kTraceVersion;
   trace_["generator"] = std::string("hullinspect ") + kVersion;
   trace_["parameters"] = std::move(parameters);
 }
@@ -66,22 +68,37 @@ void TraceRecorder::uav(int k, std::string_view mode, grid::Cell target,
 }
 
 void TraceRecorder::cells(std::string_view layer, std::span<const int> indices) {
-  std::vector<int> sorted(indices.begin(), indices.end());
-  std::sort(sorted.begin(), sorted.end());
+  sorted_.assign(indices.begin(), indices.end());
+  std::sort(sorted_.begin(), sorted_.end());
   auto it = std::find_if(last_layers_.begin(), last_layers_.end(),
-                         [&](const auto& l) { return l.first == layer; });
+                         [&](const LayerState& l) { return l.name == layer; });
   if (it == last_layers_.end()) {
-    last_layers_.emplace_back(std::string(layer), std::vector<int>{});
+    last_layers_.push_back({std::string(layer), {}, -1});
     it = std::prev(last_layers_.end());
   }
-  if (it->second != sorted) {
-    pending_layers_[std::string(layer)] = sorted;
-    it->second = std::move(sorted);
+  if (it->last_full >= 0 && it->cells == sorted_) return;
+  added_.clear();
+  removed_.clear();
+  std::set_difference(sorted_.begin(), sorted_.end(), it->cells.begin(), it->cells.end(),
+                      std::back_inserter(added_));
+  std::set_difference(it->cells.begin(), it->cells.end(), sorted_.begin(), sorted_.end(),
+                      std::back_inserter(removed_));
+  // The whole set on the layer's first appearance, when the last whole set is a keyframe interval
+  // old, or when it is no longer than the change.
+  const bool full = it->last_full < 0 || frame_index_ - it->last_full >= kLayerKeyframeInterval ||
+                    sorted_.size() <= added_.size() + removed_.size();
+  if (full) {
+    pending_layers_[std::string(layer)] = sorted_;
+    it->last_full = frame_index_;
+  } else {
+    pending_layers_[std::string(layer)] = {{"add", added_}, {"remove", removed_}};
   }
+  it->cells.swap(sorted_);
 }
 
 json TraceRecorder::frame(const sim::Simulator& sim, const planners::Planner& planner) {
   json f;
+  frame_index_ = sim.time();
   f["t"] = sim.time();
   f["u"] = uav_states(sim);
   json changes = json::array();

@@ -1,4 +1,5 @@
 #include "hullinspect/partition/darp_partitioner.hpp"
+#include "hullinspect/core/plural.hpp"
 
 #include <fmt/format.h>
 
@@ -91,39 +92,32 @@ bool divides_exactly(std::span<const double> desired, double unit) {
 
 }  // namespace
 
-std::vector<OptionSpec> darp_option_specs() {
-  const DarpOptions d;
-  return {
-      {"iteration-limit", std::to_string(d.iteration_limit),
-       "iterations at the first tolerance; halves each time the tolerance grows"},
-      {"cc", fmt::format("{}", d.cc), "connectivity correction variation: factors in [1-cc, 1+cc]"},
-      {"rl", fmt::format("{}", d.rl), "random level: factors in [1-rl, 1+rl]"},
-      {"max-discrepancy", std::to_string(d.max_discrepancy),
-       "largest tolerance (cells) before falling back to the best connected partition"},
-      {"fairness-gain", fmt::format("{}", d.fairness_gain),
-       "largest gain g of the fairness multiplier exp(g * (w - d) / d)"},
-      {"gain-growth", fmt::format("{}", d.gain_growth),
-       "gain factor after a step that kept the sign"},
-      {"gain-shrink", fmt::format("{}", d.gain_shrink), "gain factor after a step that flipped it"},
-      {"repair-fallback", d.repair_fallback ? "true" : "false",
-       "fallback may repair the best-balanced iterate into a connected partition"},
-  };
+const Params<DarpOptions>& darp_params() {
+  static const Params<DarpOptions> params = [] {
+    Params<DarpOptions> p("darp");
+    p.integer("iteration-limit", &DarpOptions::iteration_limit, 1, 1'000'000,
+              "iterations at the first tolerance; halves each time the tolerance grows")
+        .number("cc", &DarpOptions::cc, 0.0, 0.5,
+                "connectivity correction variation: factors in [1-cc, 1+cc]")
+        .number("rl", &DarpOptions::rl, 0.0, 0.1, "random level: factors in [1-rl, 1+rl]")
+        .integer("max-discrepancy", &DarpOptions::max_discrepancy, 0, 1'000'000,
+                 "largest tolerance (cells) before falling back to the best connected partition")
+        .number("fairness-gain", &DarpOptions::fairness_gain, 1e-6, 10.0,
+                "largest gain g of the fairness multiplier exp(g * (w - d) / d)")
+        .number("gain-growth", &DarpOptions::gain_growth, 1.0, 10.0,
+                "gain factor after a step that kept the sign")
+        .number("gain-shrink", &DarpOptions::gain_shrink, 0.01, 1.0,
+                "gain factor after a step that flipped it")
+        .flag("repair-fallback", &DarpOptions::repair_fallback,
+              "fallback may repair the best-balanced iterate into a connected partition");
+    return p;
+  }();
+  return params;
 }
 
-DarpOptions read_darp_options(const OptionMap& options) {
-  OptionReader reader(options, "darp");
-  DarpOptions o;
-  o.iteration_limit = reader.get_int("iteration-limit", o.iteration_limit, 1, 1'000'000);
-  o.cc = reader.get_double("cc", o.cc, 0.0, 0.5);
-  o.rl = reader.get_double("rl", o.rl, 0.0, 0.1);
-  o.max_discrepancy = reader.get_int("max-discrepancy", o.max_discrepancy, 0, 1'000'000);
-  o.fairness_gain = reader.get_double("fairness-gain", o.fairness_gain, 1e-6, 10.0);
-  o.gain_growth = reader.get_double("gain-growth", o.gain_growth, 1.0, 10.0);
-  o.gain_shrink = reader.get_double("gain-shrink", o.gain_shrink, 0.01, 1.0);
-  o.repair_fallback = reader.get_bool("repair-fallback", o.repair_fallback);
-  reader.reject_unknown();
-  return o;
-}
+std::vector<ParamSpec> darp_option_specs() { return darp_params().specs(); }
+
+DarpOptions read_darp_options(const OptionMap& options) { return darp_params().read(options); }
 
 DarpPartitioner::DarpPartitioner(DarpOptions options) : options_(options) {
   auto check = [](bool ok, const char* name, const std::string& problem) {
@@ -258,9 +252,9 @@ Partition DarpPartitioner::partition(const PartitionRequest& request) const {
   out.tolerance = ws.best_connected_discrepancy();
   const bool repaired = connected_before_repair < 0 || out.tolerance < connected_before_repair;
   out.warnings.push_back(fmt::format(
-      "darp did not balance the regions within {} cell(s) in {} iterations; returned the best "
+      "darp did not balance the regions within {} in {}; returned the best "
       "connected partition found{} (largest imbalance {:g})",
-      options_.max_discrepancy, iterations,
+      plural(options_.max_discrepancy, "cell"), plural(iterations, "iteration"),
       repaired
           ? ", the best-balanced iterate with its stray pieces merged into neighbouring regions"
           : "",

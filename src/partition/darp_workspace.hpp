@@ -1,5 +1,5 @@
 #pragma once
-// Internal to DarpPartitioner: the buffers and the per-iteration steps of DARP (SPEC §5.1).
+// Internal to DarpPartitioner: the buffers and the per-iteration steps of DARP (model.md §5.1).
 //
 // Representation. Hull cells are numbered 0..N-1 in (y, x) order, so the per-cell steps never scan
 // non-hull cells; the distance transforms run on a copy of the grid padded with a ring of blocked

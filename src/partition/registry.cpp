@@ -1,5 +1,3 @@
-#include <fmt/format.h>
-
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/partition/darp_partitioner.hpp"
 #include "hullinspect/partition/partitioner.hpp"
@@ -9,36 +7,35 @@ namespace hullinspect::partition {
 
 namespace {
 
-std::unique_ptr<Partitioner> make_stripes(const OptionMap& options) {
-  OptionReader reader(options, "stripes");
-  reader.reject_unknown();
-  return std::make_unique<StripesPartitioner>();
-}
+struct StripesOptions {};
 
-std::unique_ptr<Partitioner> make_darp(const OptionMap& options) {
-  return std::make_unique<DarpPartitioner>(read_darp_options(options));
-}
-
-const std::vector<PartitionerInfo>& registry() {
-  static const std::vector<PartitionerInfo> entries = {
-      {"darp", "DARP (SPEC 5.1): connected, balanced regions grown from the start cells",
-       darp_option_specs(), &make_darp},
-      {"stripes", "equal-area vertical bands, in the order of the start cells' x", {}, &make_stripes},
-  };
-  return entries;
+void add_builtins(PartitionerRegistry& r) {
+  r.add_builtin(make_entry<Partitioner, DarpOptions>(
+      "darp", "DARP (docs/partition.md): connected, balanced regions grown from the start cells",
+      darp_params(), [](const DarpOptions& o) { return std::make_unique<DarpPartitioner>(o); }));
+  r.add_builtin(make_entry<Partitioner, StripesOptions>(
+      "stripes", "equal-area vertical bands, in the order of the start cells' x",
+      Params<StripesOptions>("stripes"),
+      [](const StripesOptions&) { return std::make_unique<StripesPartitioner>(); }));
 }
 
 }  // namespace
 
-std::span<const PartitionerInfo> partitioner_registry() { return registry(); }
+PartitionerRegistry& partitioners() {
+  static PartitionerRegistry registry("partitioner", "partitioner", &add_builtins);
+  return registry;
+}
+
+std::vector<PartitionerInfo> partitioner_registry() {
+  return partitioners().entries();
+}
 
 std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const OptionMap& options) {
-  std::string names;
-  for (const auto& info : registry()) {
-    if (info.name == name) return info.make(options);
-    names += (names.empty() ? "" : ", ") + info.name;
-  }
-  throw ParameterError("partitioner", fmt::format("unknown partitioner '{}' (known: {})", name, names));
+  return partitioners().make(name, options);
+}
+
+OptionMap resolve_partitioner_options(std::string_view name, const OptionMap& options) {
+  return partitioners().resolve(name, options);
 }
 
 }  // namespace hullinspect::partition

@@ -67,7 +67,7 @@ void LawnmowerPlanner::decide(const sim::PlannerView& view, std::span<sim::Actio
   last_.assign(view.uavs.begin(), view.uavs.end());
   for (std::size_t k = 0; k < view.uavs.size(); ++k) {
     const sim::UavState& u = view.uavs[k];
-    if (!u.active || u.in_transit()) continue;
+    if (u.failed || u.in_transit()) continue;
     if (climbed_[k] != 0) {  // the z = 2 leg of a route around no-fly zones
       actions[k] = u.z == 1 ? sim::Action::kHover : followers_[k].next_action(u.pos);
       continue;
@@ -84,6 +84,15 @@ void LawnmowerPlanner::decide(const sim::PlannerView& view, std::span<sim::Actio
       actions[k] = sim::Action::kChangePlane;
     }
   }
+}
+
+bool LawnmowerPlanner::idle(const sim::PlannerView& view) const {
+  for (std::size_t k = 0; k < view.uavs.size(); ++k) {
+    const sim::UavState& u = view.uavs[k];
+    if (u.failed) continue;
+    if (u.in_transit() || u.z != 1 || !followers_[k].finished(u.pos)) return false;
+  }
+  return true;
 }
 
 void LawnmowerPlanner::annotate(AnnotationSink& sink) const {

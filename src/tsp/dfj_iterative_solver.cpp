@@ -158,12 +158,18 @@ class DeadlineHandler final : public CbcEventHandler {
 
 }  // namespace
 
+const Params<DfjIterativeOptions>& DfjIterativeSolver::params() {
+  static const Params<DfjIterativeOptions> params = [] {
+    Params<DfjIterativeOptions> p("dfj-iterative");
+    p.number("time-limit", &DfjIterativeOptions::time_limit, 0.0, 1e9,
+             "seconds before returning the heuristic's tour with optimal = false (0 = none)");
+    return p;
+  }();
+  return params;
+}
+
 DfjIterativeOptions DfjIterativeSolver::read_options(const OptionMap& options) {
-  OptionReader reader(options, "dfj-iterative");
-  DfjIterativeOptions o;
-  o.time_limit = reader.get_double("time_limit", o.time_limit, 0.0, 1e9);
-  reader.reject_unknown();
-  return o;
+  return params().read(options);
 }
 
 TspSolution DfjIterativeSolver::solve(const SegmentTsp& problem) {

@@ -23,18 +23,26 @@ ExactSolver::ExactSolver(ExactOptions options)
 
 ExactSolver::~ExactSolver() = default;
 
-ExactOptions ExactSolver::read_options(const OptionMap& options) {
-  OptionReader reader(options, "exact");
-  ExactOptions o;
-  o.time_limit = reader.get_double("time_limit", o.time_limit, 0.0, 1e9);
-  o.dp_max_segments =
-      reader.get_int("dp_max_segments", o.dp_max_segments, 0, detail::SegmentDp::kMaxSegments);
-  o.kicks = reader.get_int("kicks", o.kicks, 0, 1'000'000);
-  o.max_segments = reader.get_int("max_segments", o.max_segments, 0, 1'000'000);
-  o.work_budget = reader.get_double("work_budget", o.work_budget, 0.0, 1e9);
-  reader.reject_unknown();
-  return o;
+const Params<ExactOptions>& ExactSolver::params() {
+  static const Params<ExactOptions> params = [] {
+    Params<ExactOptions> p("exact");
+    p.number("time-limit", &ExactOptions::time_limit, 0.0, 1e9,
+             "seconds before returning the best tour with optimal = false (0 = none)")
+        .integer("dp-max-segments", &ExactOptions::dp_max_segments, 0,
+                 detail::SegmentDp::kMaxSegments, "largest g solved by the dynamic program")
+        .integer("kicks", &ExactOptions::kicks, 0, 1'000'000,
+                 "local-search kicks for the first tour of branch-and-cut")
+        .integer("max-segments", &ExactOptions::max_segments, 0, 1'000'000,
+                 "above this g: the local search's tour and a lower bound, no proof (0 = no limit)")
+        .number("work-budget", &ExactOptions::work_budget, 0.0, 1e9,
+                "LP work (10^6 units of rows^2 per pivot, ~2 ms each) before returning the best "
+                "tour and a bound, no proof (0 = none)");
+    return p;
+  }();
+  return params;
 }
+
+ExactOptions ExactSolver::read_options(const OptionMap& options) { return params().read(options); }
 
 TspSolution ExactSolver::solve(const SegmentTsp& problem) {
   const auto started = std::chrono::steady_clock::now();

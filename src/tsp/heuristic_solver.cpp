@@ -15,13 +15,19 @@ HeuristicSolver::HeuristicSolver(HeuristicOptions options)
 
 HeuristicSolver::~HeuristicSolver() = default;
 
+const Params<HeuristicOptions>& HeuristicSolver::params() {
+  static const Params<HeuristicOptions> params = [] {
+    Params<HeuristicOptions> p("heuristic");
+    p.integer("kicks", &HeuristicOptions::kicks, 0, 1'000'000,
+              "double-bridge kicks, each followed by local search")
+        .integer("seed", &HeuristicOptions::seed, 0, 2'147'483'647, "seed of the kicks");
+    return p;
+  }();
+  return params;
+}
+
 HeuristicOptions HeuristicSolver::read_options(const OptionMap& options) {
-  OptionReader reader(options, "heuristic");
-  HeuristicOptions o;
-  o.kicks = reader.get_int("kicks", o.kicks, 0, 1'000'000);
-  o.seed = reader.get_int("seed", o.seed, 0, 2'147'483'647);
-  reader.reject_unknown();
-  return o;
+  return params().read(options);
 }
 
 TspSolution HeuristicSolver::solve(const SegmentTsp& problem) {

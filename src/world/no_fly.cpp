@@ -1,5 +1,7 @@
 #include "hullinspect/world/no_fly.hpp"
 
+#include "hullinspect/world/cell_map.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,7 +14,7 @@ NoFlyMask make_no_fly_mask(const HullMask& hull, const std::filesystem::path& fi
                            std::span<const CellBox> boxes) {
   NoFlyMask mask(hull.width(), hull.height(), 0);
   if (!file.empty()) {
-    const grid::Grid<std::uint8_t> read = load_mask_grid(file);
+    const grid::Grid<std::uint8_t> read = load_cell_map(file);
     if (read.width() != hull.width() || read.height() != hull.height()) {
       throw InputError(file.string(), 0,
                        fmt::format("the no-fly mask is {} × {} but the hull is {} × {}",

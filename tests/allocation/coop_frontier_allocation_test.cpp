@@ -8,7 +8,7 @@
 #include <new>
 
 #include "hullinspect/planners/coop_frontier_planner.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/sim/simulator.hpp"
 
 namespace {
@@ -45,7 +45,7 @@ TEST(CoopFrontierAllocation, StepLoopAllocatesNothing) {
   for (const char* name : {"perfect", "combined"}) {
     for (int n : {1, 8}) {
       const auto instance =
-          world::generate_instance(hull, scenario(name).corrosion(hull.width()), 4);
+          world::generate_instance(hull, world::scenario(name).corrosion(hull.width()), 4);
       world::MissionParams params;
       params.uavs = n;
       params.s2 = 11;

@@ -45,9 +45,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--s1", "7", "--s2", "7"},
                  "hullinspect: --s2: must be an odd integer greater than s1 = 7 (got 7)"},
         BadInput{{"--s2", "3"}, "hullinspect: --s2: must be an odd integer greater than s1 = 5 (got 3)"},
-        BadInput{{"--p-c", "1.5"}, "hullinspect: --p-c: must be a probability in [0, 1] (got 1.5)"},
-        BadInput{{"--p-tp", "-0.1"}, "hullinspect: --p-tp: must be a probability in [0, 1] (got -0.1)"},
-        BadInput{{"--p-fp", "2"}, "hullinspect: --p-fp: must be a probability in [0, 1] (got 2)"},
+        BadInput{{"--p-c", "1.5"}, "hullinspect: --p-c: must be a number in [0, 1] (got '1.5')"},
+        BadInput{{"--p-tp", "-0.1"}, "hullinspect: --p-tp: must be a number in [0, 1] (got '-0.1')"},
+        BadInput{{"--p-fp", "2"}, "hullinspect: --p-fp: must be a number in [0, 1] (got '2')"},
         BadInput{{"--l-c", "4"}, "hullinspect: --l-c: must be a positive odd integer (got 4)"},
         BadInput{{"--theta", "0"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 0)"},
         BadInput{{"--theta", "180"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 180)"},
@@ -59,11 +59,26 @@ INSTANTIATE_TEST_SUITE_P(
                  "hullinspect: --scenario: unknown scenario 'stormy' (known: perfect, imperfect, "
                  "inhomogeneous, combined)"},
         BadInput{{"--algorithm", "lawnmower", "--alpha", "0.3"},
-                 "hullinspect: --alpha: unknown option (known: partitioner, partition-seed)"},
-        BadInput{{"--seed", "x1"}, "hullinspect: --seed: 'x1' is not a valid value (see --help)"},
+                 "hullinspect: --alpha: unknown option (known: partitioner, partition-seed, "
+                 "partitioner.<key>)"},
+        BadInput{{"--seed", "x1"},
+                 "hullinspect: --seed: must be an integer in [0, 18446744073709551615] (got 'x1') "
+                 "(see --help)"},
         BadInput{{"--start", "3;4"}, "hullinspect: --start: expects X,Y (got '3;4')"},
         BadInput{{"--uavs", "abc"},
-                 "hullinspect: --uavs: 'abc' is not a valid value (see --help)"}));
+                 "hullinspect: --uavs: must be an integer in [-2147483648, 2147483647] (got 'abc') "
+                 "(see --help)"}));
+
+TEST(RunCommand, SummaryCountsOneUavInTheSingular) {
+  const auto one = run_cli({"run", "--uavs", "1", "--seed", "2"});
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_TRUE(one.out.starts_with("lawnmower with 1 UAV, s1 = 5, s2 = 7, seed 2: complete\n"))
+      << one.out;
+  const auto two = run_cli({"run", "--uavs", "2", "--seed", "2"});
+  ASSERT_EQ(two.status, 0) << two.err;
+  EXPECT_TRUE(two.out.starts_with("lawnmower with 2 UAVs, s1 = 5, s2 = 7, seed 2: complete\n"))
+      << two.out;
+}
 
 TEST(RunCommand, UnknownAlgorithmListsTheKnownOnes) {
   const auto r = run_cli({"run", "--algorithm", "zigzag"});

@@ -160,13 +160,27 @@ TEST(ExperimentCli, ReportWritesEveryTableAndFigure) {
   ASSERT_EQ(made.status, 0) << made.err;
   EXPECT_NE(made.out.find("### dense — T_c (s), mean ± std over 3 instances"), std::string::npos)
       << made.out;
-  EXPECT_NE(made.out.find("### p_tp=0.5 — T_m (s)"), std::string::npos) << made.out;
+  // One table per sweep, one row per swept value.
+  EXPECT_NE(made.out.find("### sweep of p_tp — T_m (s)"), std::string::npos) << made.out;
+  EXPECT_EQ(made.out.find("### p_tp=0.5"), std::string::npos) << made.out;
+  EXPECT_NE(made.out.find("| p_tp | s2  | n   | lawnmower"), std::string::npos) << made.out;
   EXPECT_NE(made.out.find("| s2  | n   | lawnmower"), std::string::npos) << made.out;
 
   EXPECT_EQ(count_lines(read(report / "summary.csv")), 1 + 3 * 2);  // 3 scenarios × 2 algorithms
   const std::string md = read(report / "report.md");
   EXPECT_NE(md.find("# Experiment report: report-test"), std::string::npos);
-  EXPECT_EQ(read(report / "summary.md"), made.out.substr(0, made.out.rfind("report: ")));
+  EXPECT_TRUE(made.out.starts_with(read(report / "summary.md"))) << made.out;
+  // The paired comparisons and the claims (none testable with these algorithms).
+  EXPECT_NE(md.find("## The paper's claims"), std::string::npos);
+  EXPECT_NE(
+      md.find("| C1: Perfect information: Part-TSP achieves considerably smaller T_c than the "
+              "other algorithms (V-B.1, Fig. 6 a1) | **not testable** |"),
+      std::string::npos)
+      << md;
+  EXPECT_NE(md.find("### dense, s2 = 7, n = 2"), std::string::npos) << md;
+  EXPECT_NE(md.find("| lawnmower − lm-seed2 | 3 | "), std::string::npos) << md;
+  EXPECT_EQ(count_lines(read(report / "paired.csv")),
+            1 + 3 * 2);  // 3 scenarios × 2 metrics × 1 pair
   for (const std::string stem : {"fig6_dense", "fig7_dense_n2", "fig8_s2-7_n2"}) {
     for (const std::string ext : {".png", ".pdf"}) {
       const auto file = report / "figures" / (stem + ext);
@@ -182,6 +196,26 @@ TEST(ExperimentCli, ReportWritesEveryTableAndFigure) {
   int figures = 0;
   for (const auto& f : std::filesystem::directory_iterator(report / "figures")) figures += f.is_regular_file();
   EXPECT_EQ(figures, 6);
+
+  // --planners, --labels, --format, --dpi: one algorithm, SVG only, no pairs to compare.
+  const auto chosen = dir / "chosen";
+  const Outcome flags =
+      run_cli({"report", results.string(), "--out", chosen.string(), "--planners", "lm-seed2",
+               "--labels", "lm-seed2=Seeded", "--format", "svg", "--dpi", "80"},
+              dir);
+  ASSERT_EQ(flags.status, 0) << flags.err;
+  EXPECT_EQ(count_lines(read(chosen / "paired.csv")), 1);
+  const std::string svg = read(chosen / "figures" / "fig6_dense.svg");
+  EXPECT_NE(svg.find("Seeded"), std::string::npos);
+  EXPECT_EQ(svg.find("lawnmower"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(chosen / "figures" / "fig6_dense.png"));
+  EXPECT_NE(read(chosen / "report.md").find("![fig6_dense](figures/fig6_dense.svg)"),
+            std::string::npos);
+  const Outcome bad = run_cli(
+      {"report", results.string(), "--out", (dir / "bad").string(), "--labels", "zz=Z"}, dir);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, "hullinspect: --labels: 'zz' is not an algorithm of the report\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
 
 TEST(ExperimentCli, ErrorsAreOneLineWithExitStatus2) {
@@ -197,7 +231,7 @@ TEST(ExperimentCli, ErrorsAreOneLineWithExitStatus2) {
 
   o = run_cli({"experiment", "--preset", "nope", "--out", out.string()}, dir);
   EXPECT_EQ(o.status, 2);
-  EXPECT_EQ(o.err, "hullinspect: --preset: unknown preset 'nope' (known: fig8, obstacles, paper, paper-quick)\n");
+  EXPECT_EQ(o.err, "hullinspect: --preset: unknown preset 'nope' (known: beyond, fig8, obstacles, paper, paper-quick)\n");
 
   o = run_cli({"experiment", "--preset", "paper-quick", "--out", out.string(), "--shard", "4/3"}, dir);
   EXPECT_EQ(o.status, 2);
@@ -228,14 +262,20 @@ TEST(ExperimentCli, ShardsFromSlurmAndAPartialMerge) {
   EXPECT_NE(partial.err.find("9 runs of the experiment are in none of the inputs"), std::string::npos)
       << partial.err;
   const Outcome first = run_cli({"experiment", "--config", config.string(), "--out",
-                                 (dir / "s1").string(), "--shard", "1/2"},
+                                 (dir / "s1").string(), "--shard", "1/2", "--jobs", "1"},
                                 dir);
   ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.out.find(", 1 job, 0 resumed)\n"), std::string::npos) << first.out;
   const Outcome full = run_cli({"merge", (dir / "s1").string(), (dir / "s2").string(), "--out",
                                 (dir / "all").string()},
                                dir);
   EXPECT_EQ(full.status, 0) << full.err;
   EXPECT_EQ(full.out, "merged 2 directories into " + (dir / "all").string() + ": 18 runs\n");
+  // One directory is counted in the singular.
+  const Outcome single =
+      run_cli({"merge", (dir / "all").string(), "--out", (dir / "one").string()}, dir);
+  EXPECT_EQ(single.status, 0) << single.err;
+  EXPECT_EQ(single.out, "merged 1 directory into " + (dir / "one").string() + ": 18 runs\n");
 }
 
 }  // namespace

@@ -97,10 +97,13 @@ TEST(ExperimentPlan, RunIdsAreStableAndUnique) {
             "hullinspect-run/1|hull=" + a.config().hull_hash +
                 "|cell_size=0.5|scenario=perfect|zones=0:24:0.005:5|p_tp=1|p_fp=0|s1=5|s2=7|"
                 "theta=90|uavs=1|start_z=2|time_limit=20000|algorithm=lawnmower|planner=lawnmower|"
-                "options=");
+                "options=partition-seed=0;partitioner=darp;partitioner.cc=0.01;"
+                "partitioner.fairness-gain=1;partitioner.gain-growth=1.25;partitioner.gain-shrink="
+                "0.7;partitioner.iteration-limit=2000;partitioner.max-discrepancy=2;"
+                "partitioner.repair-fallback=true;partitioner.rl=0.0001");
   EXPECT_EQ(a.runs()[0].id, stable_id(a.cells()[0].canonical + "|seed=11"));
   EXPECT_EQ(a.config().hull_hash, "5f6762874a04fea0");
-  EXPECT_EQ(a.runs()[0].id, "cd93b917872157f4");
+  EXPECT_EQ(a.runs()[0].id, "ef3533719d160398");  // effective options since the parameter system
 }
 
 TEST(ExperimentPlan, IdsDependOnTheirOwnCellOnly) {
@@ -186,6 +189,49 @@ TEST(Shard, FromSlurmJobArrays) {
   EXPECT_EQ(shard_from_slurm(lookup)->text(), "3/3");  // --array=0-4:2
   env = {{"SLURM_ARRAY_TASK_ID", "x"}, {"SLURM_ARRAY_TASK_COUNT", "3"}};
   EXPECT_THROW(shard_from_slurm(lookup), ParameterError);
+}
+
+}  // namespace
+}  // namespace hullinspect::experiment
+
+namespace hullinspect::experiment {
+namespace {
+
+// Issue 17 §2: every algorithm's effective options (defaults included) are what the plan, the
+// manifest and runs.csv record, so spelling out a default names the same experiment.
+TEST(ExperimentPlan, RecordsEffectiveOptionsWithDefaults) {
+  const auto plan = plan_of(
+      "hull: rectangle\ngrid: {width: 24, height: 8}\n"
+      "algorithms: [lawnmower, {name: part-tsp, label: pt, options: {r1: 3, tsp.kicks: 4}}]\n"
+      "instances: 1\n");
+  const auto& lawnmower = plan.config().algorithms[0].options;
+  EXPECT_EQ(lawnmower.at("partition-seed"), "0");
+  EXPECT_EQ(lawnmower.at("partitioner"), "darp");
+  EXPECT_EQ(lawnmower.at("partitioner.iteration-limit"), "2000");
+  const auto& pt = plan.config().algorithms[1].options;
+  EXPECT_EQ(pt.at("r1"), "3");
+  EXPECT_EQ(pt.at("r2"), "0");
+  EXPECT_EQ(pt.at("tsp.kicks"), "4");
+  EXPECT_EQ(pt.at("tsp.dp-max-segments"), "8");
+  const auto json = config_json(plan.config());
+  EXPECT_EQ(json["algorithms"][1]["options"]["tsp-solver"], "exact");
+  // An explicit default and an omitted one give the same cells.
+  const auto explicit_default = plan_of(
+      "hull: rectangle\ngrid: {width: 24, height: 8}\n"
+      "algorithms: [lawnmower, {name: part-tsp, label: pt, options: {r1: 3, r2: 0, tsp.kicks: 4}}]\n"
+      "instances: 1\n");
+  EXPECT_EQ(explicit_default.cells()[1].id, plan.cells()[1].id);
+  // Old spellings are refused with the line and a hint.
+  try {
+    plan_of("hull: rectangle\ngrid: {width: 24, height: 8}\n"
+            "algorithms:\n  - {name: part-tsp, options: {tsp.dp_max_segments: 4}}\n");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "plan.yaml:4: exact.dp_max_segments: unknown option (did you mean "
+              "dp-max-segments?) (known: time-limit, dp-max-segments, kicks, max-segments, "
+              "work-budget)");
+  }
 }
 
 }  // namespace

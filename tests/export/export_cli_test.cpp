@@ -70,7 +70,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "hullinspect: --origin: expects LAT,LON,ALT with LAT in [-90, 90] and LON in "
                   "[-180, 180] (got 95,9.9,0)"},
         BadExport{{"--origin", "1,2,3", "--heading", "x"},
-                  "hullinspect: --heading: 'x' is not a valid value (see --help)"},
+                  "hullinspect: --heading: must be a number in [-360, 360] (got 'x') (see --help)"},
         BadExport{{"--geo", "/nonexistent/geo.yaml"},
                   "hullinspect: /nonexistent/geo.yaml: cannot open the geo-reference file"},
         BadExport{
@@ -215,6 +215,15 @@ TEST_F(ExportCli, RunExportWritesWhatExportOfItsTraceWrites) {
   const auto stray = run_cli({"run", "-n", "2", "--origin", "1,2,3"});
   EXPECT_EQ(stray.status, 2);
   EXPECT_EQ(stray.err, "hullinspect: --origin: has no effect without --export DIR\n");
+}
+
+TEST_F(ExportCli, PlanRefusesBadExportOptionsBeforePlanning) {
+  const auto r = run_cli({"plan", "-n", "2", "--export", dir_ + "/p", "--format", "wpl", "--geo",
+                          "/nonexistent.yaml"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: /nonexistent.yaml: cannot open the geo-reference file\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(dir_ + "/p"));
 }
 
 TEST_F(ExportCli, PlanFliesThePriorAndExportsItsWaypoints) {

@@ -123,8 +123,10 @@ TEST(TraceReader, ReadsAFileAndNamesItOnFailure) {
 TEST(TraceReader, NamesTheDamagedField) {
   EXPECT_EQ(problem_after([](json& t) { t["format"] = "something-else"; }),
             "mission.json: format: expected \"hullinspect-trace\" (not a hullinspect trace?)");
-  EXPECT_EQ(problem_after([](json& t) { t["version"] = 2; }),
-            "mission.json: version: 2 is not supported (this hullinspect reads version 1)");
+  EXPECT_EQ(problem_after([](json& t) { t["version"] = 3; }),
+            "mission.json: version: 3 is not supported (this hullinspect reads versions 1 to 2)");
+  EXPECT_EQ(problem_after([](json& t) { t["version"] = 0; }),
+            "mission.json: version: 0 is not supported (this hullinspect reads versions 1 to 2)");
   EXPECT_EQ(problem_after([](json& t) { t.erase("frames"); }), "mission.json: frames: missing");
   EXPECT_EQ(problem_after([](json& t) { t["grid"]["width"] = 0; }),
             "mission.json: grid.width: 0 is outside [1, 32768]");
@@ -175,6 +177,30 @@ TEST(TraceReader, NamesTheDamagedField) {
               t["frames"][2]["l"] = {{"frontiers", {1, 2, -3}}};
             }),
             "mission.json: frames[2].l.frontiers[2]: -3 is outside [0, 6899]");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["l"] = {{"frontiers", {1, 3, 3}}};
+            }),
+            "mission.json: frames[2].l.frontiers[2]: 3 is not above the previous index 3");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["l"] = {{"frontiers", {{"add", {4}}, {"remove", json::array()}}}};
+            }),
+            "mission.json: frames[2].l.frontiers: changes to a layer whose whole set was not given "
+            "before");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][1]["l"] = {{"frontiers", {1, 2}}};
+              t["frames"][2]["l"] = {{"frontiers", {{"add", {4}}, {"drop", {1}}}}};
+            }),
+            "mission.json: frames[2].l.frontiers.drop: unknown key (known: add, remove)");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][1]["l"] = {{"frontiers", {1, 2}}};
+              t["frames"][2]["l"] = {{"frontiers", {{"add", {9, 4}}}}};
+            }),
+            "mission.json: frames[2].l.frontiers.add[1]: 4 is not above the previous index 9");
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][2]["l"] = {{"frontiers", 5}};
+            }),
+            "mission.json: frames[2].l.frontiers: expected the layer's cells (an array) or its "
+            "changes {\"add\", \"remove\"}");
   EXPECT_EQ(problem_after([](json& t) { t["series"]["known"].erase(0); }),
             "mission.json: series.known: expected one value per frame (" +
                 std::to_string(recorded_trace()["frames"].size()) + "), got " +
@@ -194,6 +220,13 @@ TEST(TraceReader, AcceptsOptionalAnnotationsAndLayers) {
               t["partition"] = nullptr;
             }),
             "(accepted)");
+  // Changes after a whole set, and a version 1 trace (whole sets only).
+  EXPECT_EQ(problem_after([](json& t) {
+              t["frames"][1]["l"] = {{"frontiers", {1, 2}}};
+              t["frames"][2]["l"] = {{"frontiers", {{"add", {4}}, {"remove", {1}}}}};
+            }),
+            "(accepted)");
+  EXPECT_EQ(problem_after([](json& t) { t["version"] = 1; }), "(accepted)");
 }
 
 }  // namespace

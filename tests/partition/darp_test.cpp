@@ -1,7 +1,7 @@
-// DARP partitioner (SPEC §5.1): every result is checked with the shared partition checker (every
-// hull cell owned once, regions 4-connected and holding their starts, sizes as reported, balance
-// within the reported tolerance), over the default hull, random hulls, bunched starts, unequal
-// shares, weights, a bottleneck and an impossible case.
+// DARP partitioner (docs/model.md §5.1): every result is checked with the shared partition checker
+// (every hull cell owned once, regions 4-connected and holding their starts, sizes as reported,
+// balance within the reported tolerance), over the default hull, random hulls, bunched starts,
+// unequal shares, weights, a bottleneck and an impossible case.
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -226,7 +226,7 @@ TEST(Darp, WalledInStartEndsInTheFallbackWithAWarning) {
     EXPECT_EQ(p.iterations, 200 + 100);
     EXPECT_EQ(p.region_cells[1], 1);
     ASSERT_EQ(p.warnings.size(), 1u);
-    EXPECT_NE(p.warnings[0].find("did not balance the regions within 2 cell(s) in 300 iterations"),
+    EXPECT_NE(p.warnings[0].find("did not balance the regions within 2 cells in 300 iterations"),
               std::string::npos)
         << p.warnings[0];
     // The reported tolerance is the imbalance actually returned.

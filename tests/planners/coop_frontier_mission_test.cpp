@@ -10,7 +10,7 @@
 #include "coop_frontier_fixtures.hpp"
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/mission.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 
 namespace hullinspect::planners {
@@ -33,7 +33,7 @@ class CoopFrontierMatrix : public ::testing::TestWithParam<MatrixCell> {};
 
 TEST_P(CoopFrontierMatrix, EveryMissionCompletesUnderTheChecker) {
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario(GetParam().scenario).corrosion(hull.width());
+  const auto corrosion = world::scenario(GetParam().scenario).corrosion(hull.width());
   for (int n = 1; n <= 8; ++n) {
     for (int seed = 1; seed <= kSeedsPerCell; ++seed) {
       const auto instance =
@@ -76,7 +76,7 @@ class FailureWatcher final : public MissionObserver {
   void on_step(const sim::Simulator& sim, const Planner& planner) override {
     const auto& cf = dynamic_cast<const CoopFrontierPlanner&>(planner);
     for (int k : failed_) {
-      if (sim.uavs()[static_cast<std::size_t>(k)].active) continue;
+      if (!sim.uavs()[static_cast<std::size_t>(k)].failed) continue;
       // The planner learns of the failure at its next decision, i.e. one step later.
       if (seen_inactive_.count(k) && cf.mode(k) != Mode::kFailed) bad_ = true;
       if (seen_inactive_.count(k) && (!cf.claims().claims(k).empty() || cf.target(k))) bad_ = true;
@@ -94,7 +94,7 @@ class FailureWatcher final : public MissionObserver {
 TEST(CoopFrontierMission, OthersCompleteWhenUavsFailMidMission) {
   const auto& hull = world::default_hull();
   for (const char* name : {"perfect", "combined"}) {
-    const auto corrosion = scenario(name).corrosion(hull.width());
+    const auto corrosion = world::scenario(name).corrosion(hull.width());
     for (int seed = 1; seed <= 5; ++seed) {
       for (const auto& failures : std::vector<std::vector<UavFailure>>{
                {{1, 40}}, {{0, 1}}, {{3, 120}}, {{0, 30}, {2, 60}}}) {
@@ -109,7 +109,7 @@ TEST(CoopFrontierMission, OthersCompleteWhenUavsFailMidMission) {
         FailureWatcher watcher(failed);
         MissionOptions options;
         options.observers = {&checker, &watcher};
-        options.failures = failures;
+        options.failures.at = failures;
         const auto r = run_mission(hull, instance, params, planner, options);
         SCOPED_TRACE(::testing::Message() << name << " seed " << seed << " first failure UAV "
                                           << failures[0].uav << " at " << failures[0].time);
@@ -140,7 +140,7 @@ TEST(CoopFrontierMission, FailureWhileInspectingReleasesTheClaims) {
   testing::MissionChecker checker;
   MissionOptions options;
   options.observers = {&checker};
-  options.failures = {{0, 1}};
+  options.failures.at = {{0, 1}};
   const auto r = run_mission(hull, instance, params, planner, options);
   ASSERT_TRUE(r.complete);
   EXPECT_TRUE(checker.ok());
@@ -154,7 +154,7 @@ TEST(CoopFrontierMission, ActionsDoNotDependOnUnseenTruth) {
   // Same prior, different truth: B has extra corrosion far from the start cells. The two missions
   // must decide identically until some UAV's readings differ.
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario("imperfect").corrosion(hull.width());
+  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
   for (int seed = 1; seed <= 3; ++seed) {
     const auto a = world::generate_instance(hull, corrosion, static_cast<std::uint64_t>(seed));
     auto b = a;
@@ -196,7 +196,7 @@ TEST(CoopFrontierMission, ActionsDoNotDependOnUnseenTruth) {
 
 TEST(CoopFrontierMission, IdenticalRunsGiveIdenticalResults) {
   const auto& hull = world::default_hull();
-  const auto corrosion = scenario("combined").corrosion(hull.width());
+  const auto corrosion = world::scenario("combined").corrosion(hull.width());
   const auto instance = world::generate_instance(hull, corrosion, 11);
   world::MissionParams params;
   params.uavs = 6;
@@ -222,7 +222,7 @@ TEST(CoopFrontierMission, StateMatchesItsDefinitionsAtEveryDecision) {
   const auto& hull = world::default_hull();
   for (const char* name : {"imperfect", "combined"}) {
     const auto instance =
-        world::generate_instance(hull, scenario(name).corrosion(hull.width()), 21);
+        world::generate_instance(hull, world::scenario(name).corrosion(hull.width()), 21);
     world::MissionParams params;
     params.uavs = 5;
     params.s2 = 11;

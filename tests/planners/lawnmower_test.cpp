@@ -7,7 +7,7 @@
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/partition_cache.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 #include "support/printers.hpp"
 #include "support/truth_blindness.hpp"
@@ -30,7 +30,7 @@ TEST_P(LawnmowerMissions, CompleteOnTheDefaultHullWithInvariants) {
     spec.params.uavs = n;
     spec.params.s2 = s2;
     spec.seed = seed;
-    spec.corrosion = scenario("perfect").corrosion(230);
+    spec.corrosion = world::scenario("perfect").corrosion(230);
     testing::MissionChecker checker;
     MissionOptions options;
     options.observers = {&checker};
@@ -105,7 +105,7 @@ TEST(Lawnmower, CannotReachTheGroundTruth) {
 TEST(Determinism, SameInputsGiveIdenticalResultsAndTraces) {
   MissionSpec spec;
   spec.params.uavs = 3;
-  spec.corrosion = scenario("imperfect").corrosion(230);
+  spec.corrosion = world::scenario("imperfect").corrosion(230);
   spec.seed = 11;
   auto run_traced = [&] {
     const auto instance = world::generate_instance(world::default_hull(), spec.corrosion, spec.seed);
@@ -137,7 +137,9 @@ TEST(Registry, UnknownNamesAndOptionsAreNamed) {
     make_planner("lawnmower", {{"alpha", "0.5"}});
     FAIL();
   } catch (const ParameterError& e) {
-    EXPECT_EQ(std::string(e.what()), "lawnmower.alpha: unknown option (known: partitioner, partition-seed)");
+    EXPECT_EQ(std::string(e.what()),
+              "lawnmower.alpha: unknown option (known: partitioner, partition-seed, "
+              "partitioner.<key>)");
   }
 }
 

@@ -1,4 +1,4 @@
-// The plane-change FSM of Part-TSP (paper Fig. 3, SPEC §5.3), clause by clause.
+// The plane-change FSM of Part-TSP (paper Fig. 3, model.md §5.3), clause by clause.
 
 #include <gtest/gtest.h>
 

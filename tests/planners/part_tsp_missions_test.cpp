@@ -1,4 +1,4 @@
-// Whole Part-TSP / Part-TSP₀ missions on the default hull: every SPEC §6 scenario, s2 ∈ {7, 9, 11},
+// Whole Part-TSP / Part-TSP₀ missions on the default hull: every model.md §6 scenario, s2 ∈ {7, 9, 11},
 // n = 1…8, 20 seeds each, with the shared invariant checker — every mission must complete.
 //
 // The planners are built through the registry with the "heuristic" TSP solver: completion does not
@@ -12,7 +12,7 @@
 #include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/partition_cache.hpp"
 #include "hullinspect/planners/planner.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 
 namespace hullinspect::testing {
@@ -104,7 +104,7 @@ std::unique_ptr<planners::Planner> make_registered(bool use_prior, OptionMap opt
 TEST_P(PartTspMissions, EveryMissionCompletes) {
   const auto& [scenario_name, s2] = GetParam();
   const auto& hull = world::default_hull();
-  const auto& scenario = planners::scenario(scenario_name);
+  const auto scenario = world::scenario(scenario_name);
   const auto corrosion = scenario.corrosion(hull.width());
   constexpr int kSeeds = kSanitized ? 3 : 20;
   for (int n = 1; n <= 8; ++n) {
@@ -127,8 +127,8 @@ TEST_P(PartTspMissions, EveryMissionCompletes) {
 // The refinements beyond the paper (off by default) must keep every mission complete too.
 TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
   const auto& hull = world::default_hull();
-  for (const auto& scenario : planners::scenarios()) {
-    const auto corrosion = scenario.corrosion(hull.width());
+  for (const auto& scenario : world::scenarios().names()) {
+    const auto corrosion = world::scenario(scenario).corrosion(hull.width());
     for (int s2 : {7, 11}) {
       for (int n : {1, 6}) {
         world::MissionParams params;
@@ -145,7 +145,7 @@ TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
                                                          {"skip-resolved", skip ? "true" : "false"},
                                                          {"trim-ends", trim ? "true" : "false"}});
               ASSERT_TRUE(completes(instance, params, *planner))
-                  << fmt::format("{} s2={} n={} seed={} prior={} skip={} trim={}", scenario.name,
+                  << fmt::format("{} s2={} n={} seed={} prior={} skip={} trim={}", scenario,
                                  s2, n, seed, use_prior, skip, trim);
             }
           }
@@ -160,9 +160,8 @@ TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
 // is where the branch-and-cut once gave up, tests/tsp/regression_test.cpp).
 TEST(PartTspExactMissions, EveryMissionCompletes) {
   const auto& hull = world::default_hull();
-  for (const auto& scenario : planners::scenarios()) {
-    const std::string& scenario_name = scenario.name;
-    const auto corrosion = scenario.corrosion(hull.width());
+  for (const auto& scenario_name : world::scenarios().names()) {
+    const auto corrosion = world::scenario(scenario_name).corrosion(hull.width());
     for (int s2 : {7, 11}) {
       for (int n : {4, 8}) {
         world::MissionParams params;
@@ -185,7 +184,7 @@ TEST(PartTspExactMissions, EveryMissionCompletes) {
 
 std::vector<Cell> all_cells() {
   std::vector<Cell> cells;
-  for (const auto& s : planners::scenarios()) {
+  for (const auto& s : world::scenarios().entries()) {
     for (int s2 : {7, 9, 11}) cells.push_back({s.name, s2});
   }
   return cells;

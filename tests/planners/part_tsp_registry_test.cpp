@@ -11,7 +11,7 @@
 namespace hullinspect::planners {
 namespace {
 
-const PlannerInfo& info(std::string_view name) {
+PlannerInfo info(std::string_view name) {
   const auto all = planner_registry();
   const auto it =
       std::find_if(all.begin(), all.end(), [&](const auto& i) { return i.name == name; });
@@ -34,7 +34,8 @@ TEST(PartTspRegistry, BothPlannersDeclareTheirOptions) {
     for (const auto& o : info(name).options) names.push_back(o.name);
     EXPECT_EQ(names,
               (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner", "partition-seed",
-                                        "skip-resolved", "trim-ends", "tsp.<key>"}))
+                                        "skip-resolved", "trim-ends", "tsp.<key>",
+                                        "partitioner.<key>"}))
         << name;
     EXPECT_EQ(info(name).options[0].default_value, "2");
     EXPECT_EQ(info(name).options[1].default_value, "0");
@@ -78,19 +79,25 @@ TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {
             "part-tsp.trim-ends: must be true or false (got 'maybe')");
   EXPECT_EQ(error_of("part-tsp0", {{"alpha", "0.5"}}),
             "part-tsp0.alpha: unknown option (known: r1, r2, tsp-solver, partitioner, "
-            "partition-seed, skip-resolved, trim-ends)");
+            "partition-seed, skip-resolved, trim-ends, tsp.<key>, partitioner.<key>)");
   EXPECT_EQ(error_of("part-tsp", {{"tsp-solver", "nope"}})
-                .rfind("tsp_solver: unknown TSP solver 'nope'", 0),
+                .rfind("part-tsp.tsp-solver: unknown name 'nope'", 0),
             0u);
-  EXPECT_EQ(error_of("part-tsp", {{"partitioner", "nope"}}).rfind("partitioner: unknown", 0), 0u);
+  EXPECT_EQ(error_of("part-tsp", {{"partitioner", "nope"}}).rfind("part-tsp.partitioner: unknown", 0), 0u);
   EXPECT_EQ(error_of("part-tsp", {{"tsp.bogus", "1"}}).rfind("exact.bogus: ", 0), 0u)
       << error_of("part-tsp", {{"tsp.bogus", "1"}});
 }
 
 TEST(PartTspRegistry, ForwardsTspPrefixedOptionsToTheSolver) {
-  const auto p = make_planner("part-tsp", {{"tsp.dp_max_segments", "12"}});
+  const auto p = make_planner("part-tsp", {{"tsp.dp-max-segments", "12"}});
   const auto& o = dynamic_cast<const PartTspPlanner&>(*p).options();
-  EXPECT_EQ(o.tsp_solver_options, (OptionMap{{"dp_max_segments", "12"}}));
+  // The solver's effective options: the one given plus its defaults.
+  EXPECT_EQ(o.tsp_solver_options,
+            (OptionMap{{"dp-max-segments", "12"},
+                       {"kicks", "10"},
+                       {"max-segments", "120"},
+                       {"time-limit", "0"},
+                       {"work-budget", "50"}}));
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/planners/scenario.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 
 namespace hullinspect::planners {
@@ -18,7 +18,7 @@ TEST(PartTspRegression, ExactSolverNeverStopsAMission) {
   spec.params.uavs = 8;
   spec.params.s2 = 7;
   spec.seed = 1;
-  spec.corrosion = scenario("combined").corrosion(230);
+  spec.corrosion = world::scenario("combined").corrosion(230);
   testing::MissionChecker checker;
   MissionOptions options;
   options.observers = {&checker};

@@ -40,8 +40,8 @@ class BranchAndCutRegression : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BranchAndCutRegression, ProvesTheOptimumWithoutFallback) {
   const SegmentTsp p = regression_instance(GetParam());
-  const long long optimum = make_tsp_solver("exact", {{"dp_max_segments", "16"}})->solve(p).length;
-  for (const OptionMap& options : {OptionMap{}, OptionMap{{"dp_max_segments", "0"}}}) {
+  const long long optimum = make_tsp_solver("exact", {{"dp-max-segments", "16"}})->solve(p).length;
+  for (const OptionMap& options : {OptionMap{}, OptionMap{{"dp-max-segments", "0"}}}) {
     const TspSolution s = make_tsp_solver("exact", options)->solve(p);
     ASSERT_TRUE(valid_solution(p, s));
     EXPECT_TRUE(s.optimal);
@@ -60,9 +60,9 @@ INSTANTIATE_TEST_SUITE_P(MissionInstances, BranchAndCutRegression,
 
 TEST(TspLowerBounds, NeverAboveTheOptimum) {
   // The heuristic's bound and the capped exact solver's bound against the proven optimum.
-  auto exact = make_tsp_solver("exact", {{"work_budget", "0"}});
+  auto exact = make_tsp_solver("exact", {{"work-budget", "0"}});
   auto heuristic = make_tsp_solver("heuristic");
-  auto capped = make_tsp_solver("exact", {{"max_segments", "9"}});
+  auto capped = make_tsp_solver("exact", {{"max-segments", "9"}});
   for (int g : {2, 5, 10, 20, 30}) {
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
       const SegmentTsp p = random_strip_instance(g, seed, 230, 30, 60);
@@ -86,7 +86,7 @@ TEST(TspLowerBounds, NeverAboveTheOptimum) {
 TEST(TspLowerBounds, CappedExactReturnsTheLocalSearchTourAboveItsSize) {
   // Above max_segments "exact" is exactly its first tour: the local search's, deterministic.
   const SegmentTsp p = random_strip_instance(60, 3, 230, 30, 60);
-  const TspSolution capped = make_tsp_solver("exact", {{"max_segments", "40"}})->solve(p);
+  const TspSolution capped = make_tsp_solver("exact", {{"max-segments", "40"}})->solve(p);
   const TspSolution search = make_tsp_solver("heuristic", {{"kicks", "10"}})->solve(p);
   ASSERT_TRUE(valid_solution(p, capped));
   EXPECT_EQ(capped.order, search.order);
@@ -98,11 +98,11 @@ TEST(TspWorkBudget, StopsDeterministicallyWithABound) {
   // A hard g = 80 instance: with a small budget the answer is unproven, the same on every call,
   // and its bound is below the proven optimum.
   const SegmentTsp p = random_strip_instance(80, 1, 230, 30, 60);
-  const TspSolution best = make_tsp_solver("exact", {{"work_budget", "0"}})->solve(p);
+  const TspSolution best = make_tsp_solver("exact", {{"work-budget", "0"}})->solve(p);
   ASSERT_TRUE(best.optimal);
-  auto budgeted = make_tsp_solver("exact", {{"work_budget", "1"}});
+  auto budgeted = make_tsp_solver("exact", {{"work-budget", "1"}});
   const TspSolution a = budgeted->solve(p);
-  const TspSolution b = make_tsp_solver("exact", {{"work_budget", "1"}})->solve(p);
+  const TspSolution b = make_tsp_solver("exact", {{"work-budget", "1"}})->solve(p);
   ASSERT_TRUE(valid_solution(p, a));
   EXPECT_FALSE(a.optimal);
   EXPECT_FALSE(a.fallback);
@@ -128,8 +128,8 @@ TEST(TspTimeLimits, HonouredWithinTenPercentAndFiftyMilliseconds) {
   for (const std::string name : {"exact", "dfj-iterative"}) {
     for (std::uint64_t seed : {1, 2}) {
       const SegmentTsp p = random_strip_instance(80, seed, 230, 30, 60);
-      OptionMap options{{"time_limit", "0.3"}};
-      if (name == "exact") options["work_budget"] = "0";  // the deadline alone stops it
+      OptionMap options{{"time-limit", "0.3"}};
+      if (name == "exact") options["work-budget"] = "0";  // the deadline alone stops it
       auto solver = make_tsp_solver(name, options);
       double fastest_wall = 1e9;
       double fastest_cpu = 1e9;

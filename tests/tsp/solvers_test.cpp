@@ -26,8 +26,8 @@ struct Config {
 /// Every solver configuration that claims optimality, including each internal method of "exact".
 std::vector<Config> exact_configs() {
   return {{"exact", {}, "exact"},
-          {"exact", {{"dp_max_segments", "0"}}, "exact (branch-and-cut only)"},
-          {"exact", {{"dp_max_segments", "16"}}, "exact (dynamic program only)"},
+          {"exact", {{"dp-max-segments", "0"}}, "exact (branch-and-cut only)"},
+          {"exact", {{"dp-max-segments", "16"}}, "exact (dynamic program only)"},
           {"dfj-iterative", {}, "dfj-iterative"}};
 }
 
@@ -44,24 +44,24 @@ TEST(TspSolvers, UnknownSolverOrOptionIsAParameterError) {
     FAIL();
   } catch (const ParameterError& e) {
     EXPECT_STREQ(e.what(),
-                 "tsp_solver: unknown TSP solver 'lkh' (known: exact, dfj-iterative, heuristic)");
+                 "tsp-solver: unknown TSP solver 'lkh' (known: exact, dfj-iterative, heuristic)");
   }
   try {
     make_tsp_solver("exact", {{"timelimit", "3"}});
     FAIL();
   } catch (const ParameterError& e) {
     EXPECT_STREQ(e.what(),
-                 "exact.timelimit: unknown option (known: time_limit, dp_max_segments, kicks, "
-                 "max_segments, work_budget)");
+                 "exact.timelimit: unknown option (did you mean time-limit?) (known: time-limit, "
+                 "dp-max-segments, kicks, max-segments, work-budget)");
   }
   try {
-    make_tsp_solver("exact", {{"dp_max_segments", "17"}});
+    make_tsp_solver("exact", {{"dp-max-segments", "17"}});
     FAIL();
   } catch (const ParameterError& e) {
-    EXPECT_STREQ(e.what(), "exact.dp_max_segments: must be an integer in [0, 16] (got '17')");
+    EXPECT_STREQ(e.what(), "exact.dp-max-segments: must be an integer in [0, 16] (got '17')");
   }
   EXPECT_THROW(make_tsp_solver("heuristic", {{"kicks", "-1"}}), ParameterError);
-  EXPECT_THROW(make_tsp_solver("dfj-iterative", {{"time_limit", "soon"}}), ParameterError);
+  EXPECT_THROW(make_tsp_solver("dfj-iterative", {{"time-limit", "soon"}}), ParameterError);
 }
 
 TEST(TspSolvers, ExactSolversMatchBruteForce) {
@@ -112,8 +112,8 @@ TEST(TspSolvers, HeuristicIsValidAndNeverBelowTheOptimum) {
 }
 
 TEST(TspSolvers, AllOptimalSolversAgreeOnLargerInstances) {
-  auto dp = make_tsp_solver("exact", {{"dp_max_segments", "12"}});
-  auto cut = make_tsp_solver("exact", {{"dp_max_segments", "0"}});
+  auto dp = make_tsp_solver("exact", {{"dp-max-segments", "12"}});
+  auto cut = make_tsp_solver("exact", {{"dp-max-segments", "0"}});
   auto dfj = make_tsp_solver("dfj-iterative");
   for (int g : {8, 10, 12}) {
     for (std::uint64_t seed = 0; seed < 3; ++seed) {
@@ -192,7 +192,7 @@ TEST(TspSolvers, TimeLimitReturnsAValidUnprovenTour) {
   const SegmentTsp p = random_strip_instance(40, 5, 230, 30, 60);
   for (const std::string name : {"exact", "dfj-iterative"}) {
     SCOPED_TRACE(name);
-    auto solver = make_tsp_solver(name, {{"time_limit", "0.000001"}});
+    auto solver = make_tsp_solver(name, {{"time-limit", "0.000001"}});
     const TspSolution s = solver->solve(p);
     ASSERT_TRUE(valid_solution(p, s));
     EXPECT_FALSE(s.optimal);

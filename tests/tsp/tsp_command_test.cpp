@@ -78,7 +78,7 @@ TEST(TspCommand, SolverOptions) {
   const auto a = run_cli({"tsp", "--solver", "heuristic", "-O", "kicks=0", "-O", "seed=3", file});
   EXPECT_EQ(a.status, 0) << a.err;
   EXPECT_TRUE(valid_solution(problem, solution_of(a.out)));
-  const auto b = run_cli({"tsp", "-O", "dp_max_segments=0", file});
+  const auto b = run_cli({"tsp", "-O", "dp-max-segments=0", file});
   EXPECT_EQ(b.status, 0) << b.err;
   EXPECT_TRUE(solution_of(b.out).optimal);
   std::filesystem::remove_all(dir);
@@ -127,17 +127,17 @@ INSTANTIATE_TEST_SUITE_P(
                  "heuristic)"},
         BadInput{{"--time-limit", "-1", "FILE"},
                  "",
-                 "hullinspect: --time-limit: must be >= 0 seconds (got -1)"},
+                 "hullinspect: --time-limit: must be a number in [0, 1e+09] (got '-1') (see --help)"},
         BadInput{
             {"-O", "kicks", "FILE"}, "", "hullinspect: --option: expects KEY=VALUE (got 'kicks')"},
         BadInput{{"--solver", "heuristic", "-O", "kicks=many", "FILE"},
                  "",
                  "hullinspect: --option: heuristic.kicks: must be an integer in [0, 1000000] (got "
                  "'many')"},
-        BadInput{{"--solver", "dfj-iterative", "-O", "dp_max_segments=3", "FILE"},
+        BadInput{{"--solver", "dfj-iterative", "-O", "dp-max-segments=3", "FILE"},
                  "",
-                 "hullinspect: --option: dfj-iterative.dp_max_segments: unknown option (known: "
-                 "time_limit)"}));
+                 "hullinspect: --option: dfj-iterative.dp-max-segments: unknown option (known: "
+                 "time-limit)"}));
 
 }  // namespace
 }  // namespace hullinspect::testing

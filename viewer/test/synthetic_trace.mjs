@@ -1,6 +1,6 @@
 // A synthetic but well-formed trace (docs/trace-format.md) for load and playback measurements:
 // `uavs` UAVs random-walking for `steps` steps over the hull of a real trace, sensing by the rules
-// of SPEC §3, with an annotation for every UAV at every step and a "frontiers" layer that changes
+// of docs/model.md §3, with an annotation for every UAV at every step and a "frontiers" layer that changes
 // every step: meant as a worst case for a trace of that length.
 
 // Small deterministic PRNG (mulberry32), so the trace is the same on every run.
@@ -38,7 +38,7 @@ export function syntheticTrace(base, {uavs = 8, steps = 5000, seed = 1} = {}) {
   const state = Array.from({length: uavs}, (_, k) => ({
     x: Math.floor(((k + 0.5) * W) / uavs), y: Math.floor(H / 2), z: 2, transit: 0,
   }));
-  // SPEC §3: z = 2 sees corrosion as 2 (unless already 3) and clears clean cells to 1; z = 1
+  // docs/model.md §3: z = 2 sees corrosion as 2 (unless already 3) and clears clean cells to 1; z = 1
   // inspects corrosion (3) and clears clean cells.
   const sense = (changes) => {
     for (const s of state) {

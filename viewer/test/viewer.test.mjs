@@ -22,17 +22,37 @@ const NON_HULL = [38, 43, 51];
 const UNKNOWN = [139, 147, 158];
 const CLEAN = [226, 230, 235];
 const CORROSION = [245, 140, 40];
+const PRIOR_ONLY = [255, 196, 128];
 const INSPECTED = [46, 160, 67];
 const REGIONS = [
-  [78, 121, 167], [150, 110, 190], [80, 160, 170], [200, 110, 150], [110, 120, 140], [100, 140, 225],
-  [170, 90, 140], [60, 140, 130], [160, 150, 220], [70, 170, 200], [180, 130, 170], [90, 90, 170],
+  [150, 105, 195], [40, 150, 150], [210, 100, 150], [140, 140, 45], [150, 75, 85], [165, 85, 125],
+  [60, 125, 95], [175, 150, 60], [185, 120, 200], [35, 115, 125], [200, 135, 160], [120, 60, 120],
 ];
 const tint = (c) => c.map((v) => Math.round(v * (1 - 0.62) + 255 * 0.62));
 
-function expectedColor(trace, map, i) {
+// Cells some UAV has sensed at or before t (footprints of UAVs on a plane), written out again.
+function seenBy(trace, t) {
+  const W = trace.grid.width;
+  const H = trace.grid.height;
+  const seen = new Uint8Array(W * H);
+  for (let i = 0; i <= t; ++i) {
+    const u = trace.frames[i].u;
+    for (let o = 0; o < u.length; o += 5) {
+      const [x, y, z, transit, active] = u.slice(o, o + 5);
+      if (!active || transit) continue;
+      const half = (trace.footprint[z - 1] - 1) / 2;
+      for (let yy = Math.max(0, y - half); yy <= Math.min(H - 1, y + half); ++yy) {
+        for (let xx = Math.max(0, x - half); xx <= Math.min(W - 1, x + half); ++xx) seen[yy * W + xx] = 1;
+      }
+    }
+  }
+  return seen;
+}
+
+function expectedColor(trace, map, i, seen) {
   const v = map[i];
   if (v < 0) return NON_HULL;
-  if (v === 2) return CORROSION;
+  if (v === 2) return seen[i] ? CORROSION : PRIOR_ONLY;
   if (v === 3) return INSPECTED;
   if (trace.partition) {
     const W = trace.grid.width;
@@ -166,10 +186,11 @@ async function checkCellsAt(page, trace, t) {
   assert.equal(await page.evaluate(() => window.hullViewer.time()), t);
   assert.match(await page.textContent('#time-display'), new RegExp(`^t = ${t} s`));
   const {map} = mapAt(trace, t);
+  const seen = seenBy(trace, t);
   const states = new Set();
   for (const {i, x, y} of sampleCells(trace, map, t + 1)) {
     states.add(map[i]);
-    assert.deepEqual(await pixelOfCell(page, x, y), expectedColor(trace, map, i),
+    assert.deepEqual(await pixelOfCell(page, x, y), expectedColor(trace, map, i, seen),
                      `cell (${x}, ${y}) at t = ${t}, M = ${map[i]}`);
   }
   return states;
@@ -245,7 +266,7 @@ test('the slider and the arrow keys move in time, play advances it', async () =>
 test('hovering a cell describes it', async () => {
   const {page} = await open(mission.html);
   await page.evaluate(() => window.hullViewer.seek(0));
-  const box = await page.locator('#overlay-canvas').boundingBox();
+  const box = await page.locator('#grid-canvas').boundingBox();
   const {width: W, height: H} = mission.trace.grid;
   const cell = box.width / W;
   await page.mouse.move(box.x + 100.5 * cell, box.y + (H - 1 - 20 + 0.5) * cell);
@@ -311,4 +332,140 @@ test('screenshot of a real mission', async (t) => {
   assert.ok(fs.statSync(file).size > 10000);
   t.diagnostic(`screenshots in ${OUT}`);
   await page.close();
+});
+
+// Layer cells at time t rebuilt independently from the trace: the last whole set at or before t,
+// then the changes ({add, remove}) after it.
+function layerAt(trace, name, t) {
+  let set = new Set();
+  for (let i = 0; i <= t; ++i) {
+    const v = trace.frames[i].l && trace.frames[i].l[name];
+    if (!v) continue;
+    if (Array.isArray(v)) {
+      set = new Set(v);
+    } else {
+      for (const c of v.remove || []) set.delete(c);
+      for (const c of v.add || []) set.add(c);
+    }
+  }
+  return [...set].sort((a, b) => a - b);
+}
+
+test('a 16-UAV Coop-Frontier trace of a 700 × 70 hull opens in a few seconds', async (t) => {
+  const hull = path.join(OUT, 'rect-700x70.txt');
+  fs.writeFileSync(hull, `${'X'.repeat(700)}\n`.repeat(70));
+  const tracePath = path.join(OUT, 'coop-16-700x70.json');
+  const html = path.join(OUT, 'coop-16-700x70.html');
+  const run = cli(['run', '-a', 'coop-frontier', '--uavs', '16', '--hull', hull, '--seed', '1',
+                   '--trace', tracePath, '--html', html]);
+  assert.equal(run.status, 0, run.stderr);
+  const trace = JSON.parse(fs.readFileSync(tracePath, 'utf8'));
+  assert.equal(trace.version, 2);
+  measurements.coop16_trace_mb = Number((fs.statSync(tracePath).size / 1e6).toFixed(2));
+  measurements.coop16_steps = trace.frames.length - 1;
+  const {page, openMs} = await open(html);
+  measurements.coop16_open_ms = Math.round(openMs);
+  t.diagnostic(`coop-frontier, 16 UAVs, 700 × 70: ${measurements.coop16_trace_mb} MB trace, ` +
+               `${measurements.coop16_steps} steps, open ${openMs.toFixed(0)} ms`);
+  assert.ok(openMs < 10000, `opening took ${openMs.toFixed(0)} ms`);
+  // The frontier layer the page shows is the one the trace describes, forwards and backwards.
+  const last = trace.frames.length - 1;
+  for (const time of [0, 1, 129, 300, last, 200, 201, 5]) {
+    const shown = await page.evaluate((time) => {
+      const r = window.hullViewer.replay;
+      return [...r.layer('frontiers', time)].sort((a, b) => a - b);
+    }, time);
+    assert.deepEqual(shown, layerAt(trace, 'frontiers', time), `frontiers at t = ${time}`);
+  }
+  const seekDraw = await page.evaluate((last) => {
+    const v = window.hullViewer.viewer;
+    const started = performance.now();
+    for (let i = 0; i < 50; ++i) { v.replay.seek((i * 7919) % (last + 1)); v.draw(); }
+    return (performance.now() - started) / 50;
+  }, last);
+  measurements.coop16_seek_draw_ms = Number(seekDraw.toFixed(2));
+  await page.close();
+});
+
+// Screenshots of the map checked against committed references (viewer/test/reference/): at most
+// 1 % of the pixels may differ by more than 24 in a channel (anti-aliasing, font hinting).
+// HULLINSPECT_UPDATE_REFERENCES=1 writes the references instead (then look at them).
+const REFERENCE_DIR = path.join(path.dirname(new URL(import.meta.url).pathname), 'reference');
+
+async function compareWithReference(page, name) {
+  const file = path.join(OUT, `${name}.png`);
+  await page.locator('#map-panel').screenshot({path: file});
+  const reference = path.join(REFERENCE_DIR, `${name}.png`);
+  if (process.env.HULLINSPECT_UPDATE_REFERENCES) {
+    fs.mkdirSync(REFERENCE_DIR, {recursive: true});
+    fs.copyFileSync(file, reference);
+    return;
+  }
+  assert.ok(fs.existsSync(reference), `${reference} is missing (HULLINSPECT_UPDATE_REFERENCES=1)`);
+  const url = (f) => `data:image/png;base64,${fs.readFileSync(f).toString('base64')}`;
+  const result = await page.evaluate(async ({a, b}) => {
+    const load = (src) => new Promise((resolve, reject) => {
+      const image = new Image();
+      image.onload = () => resolve(image);
+      image.onerror = () => reject(new Error('cannot decode'));
+      image.src = src;
+    });
+    const [ia, ib] = await Promise.all([load(a), load(b)]);
+    if (ia.width !== ib.width || ia.height !== ib.height) {
+      return {size: `${ia.width}×${ia.height} against the reference's ${ib.width}×${ib.height}`};
+    }
+    const pixels = (image) => {
+      const c = document.createElement('canvas');
+      c.width = image.width;
+      c.height = image.height;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(image, 0, 0);
+      return ctx.getImageData(0, 0, c.width, c.height).data;
+    };
+    const pa = pixels(ia);
+    const pb = pixels(ib);
+    let differing = 0;
+    for (let i = 0; i < pa.length; i += 4) {
+      if (Math.abs(pa[i] - pb[i]) > 24 || Math.abs(pa[i + 1] - pb[i + 1]) > 24 ||
+          Math.abs(pa[i + 2] - pb[i + 2]) > 24) ++differing;
+    }
+    return {differing, total: pa.length / 4};
+  }, {a: url(file), b: url(reference)});
+  assert.equal(result.size, undefined, `${name}: ${result.size}`);
+  const share = result.differing / result.total;
+  measurements[`${name}_differing_pixel_share`] = Number(share.toFixed(5));
+  assert.ok(share <= 0.01, `${name}: ${(100 * share).toFixed(2)} % of the pixels differ from ${reference}`);
+}
+
+async function missionPage(name, args, time, setup) {
+  const html = path.join(OUT, `${name}.html`);
+  const run = cli(['run', ...args, '--html', html]);
+  assert.equal(run.status, 0, run.stderr);
+  const {page} = await open(html);
+  await page.setViewportSize({width: 1400, height: 900});
+  if (setup) await setup(page);
+  await page.evaluate((t) => window.hullViewer.seek(t), time);
+  await settle(page);
+  return page;
+}
+
+test('screenshots of 4 and 8 UAVs match the references', async () => {
+  // 4 UAVs, Coop-Frontier (frontier layer, labels close together), imperfect prior.
+  const four = await missionPage('viewer-4-coop-frontier',
+                                 ['-a', 'coop-frontier', '--uavs', '4', '--seed', '3', '--scenario',
+                                  'imperfect'], 60);
+  await compareWithReference(four, 'viewer-4-coop-frontier');
+  await four.close();
+  // 8 UAVs, Part-TSP with regions, the truth shown and a hovered cell near the top row.
+  const eight = await missionPage('viewer-8-part-tsp',
+                                  ['-a', 'part-tsp', '--uavs', '8', '--seed', '3', '--scenario',
+                                   'imperfect'], 90, async (page) => {
+                                    await page.check('#show-truth');
+                                  });
+  const box = await eight.locator('#grid-canvas').boundingBox();
+  const cell = box.width / 230;
+  await eight.mouse.move(box.x + 120.5 * cell, box.y + 1.5 * cell);
+  await settle(eight);
+  await compareWithReference(eight, 'viewer-8-part-tsp');
+  await eight.close();
 });

@@ -45,4 +45,11 @@ class LogicError : public Error {
   using Error::Error;
 };
 
+/// "--p-tp" for the parameter "p_tp"; "--algorithm" for "algorithm"; "--r1" for "part-tsp.r1".
+std::string option_name(const std::string& parameter);
+
+/// The one line the CLI prints after "hullinspect: " (and the Python module raises): a
+/// ParameterError as "--option: problem", anything else as what().
+std::string user_message(const std::exception& error);
+
 }  // namespace hullinspect

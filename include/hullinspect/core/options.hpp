@@ -10,14 +10,15 @@ namespace hullinspect {
 
 using OptionMap = std::map<std::string, std::string>;
 
-/// One declared option of a stage: its name, default and meaning (shown by --help and docs).
+/// Superseded by ParamSpec (core/parameters.hpp); kept until every branch has moved over.
 struct OptionSpec {
   std::string name;
   std::string default_value;
   std::string description;
 };
 
-/// Reads typed values from an OptionMap; every error names "<owner>.<key>" and the accepted range.
+/// Superseded by Params<Options> (core/parameters.hpp), which declares each option once; kept
+/// until every branch has moved over. Reads typed values from an OptionMap.
 class OptionReader {
  public:
   OptionReader(const OptionMap& options, std::string owner);

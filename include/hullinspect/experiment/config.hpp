@@ -14,17 +14,20 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/world/failures.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/user_maps.hpp"
 
 namespace hullinspect::experiment {
 
-/// One corrosion scenario: a built-in one (SPEC §6), a custom one, or one point of a sweep.
+/// One corrosion scenario: a built-in one (model.md §6), a custom one, or one point of a sweep.
 struct ScenarioSpec {
   std::string name;
   std::string sweep;        ///< the sweep it belongs to; empty for plain scenarios
   std::string sweep_value;  ///< the swept value as text ("0.8", "0.01/0.0025" for front/back)
   world::CorrosionParams corrosion;
+  world::FailurePlan failures;  ///< UAV failures of every mission of the scenario (paired by seed)
   int line = 0;             ///< config line that declared it (for error messages)
 };
 
@@ -47,7 +50,9 @@ struct ExperimentConfig {
   std::string source;  ///< names the config in messages: a path or "presets/<name>.yaml"
   std::string name;
   std::string description;
-  std::string hull_spec = "default";  ///< as written: "default", "rectangle" or a mask path
+  /// As written: "default", "rectangle", "dtc", a mask/hull JSON/mesh path, or for a `hull: {mesh:
+  /// …}` map "mesh:FILE" followed by its options.
+  std::string hull_spec = "default";
   std::shared_ptr<const world::HullMask> hull;  ///< null in a config read back from a manifest
   std::string hull_hash;                        ///< stable id of the mask's contents
   int hull_width = 0;
@@ -57,6 +62,8 @@ struct ExperimentConfig {
   /// No-fly positions (null = none) and how the config stated them ({file, boxes-m, hash}).
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
   nlohmann::json no_fly_spec;
+  std::string prior_path, truth_path;  ///< the user's C′ and C ("prior:", "truth:"), resolved
+  world::UserMaps maps;                ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
   int s1 = 5;
   std::vector<int> s2 = {7};

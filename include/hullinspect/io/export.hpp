@@ -60,7 +60,7 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
 /// a plane change its straight flight does not take.
 double hold_seconds(const ExportWaypoint& w, const ExportWaypoint& previous, double speed_mps);
 
-/// The cruise speed of an exported plan: one cell per second (SPEC §1: a move takes one step).
+/// The cruise speed of an exported plan: one cell per second (model.md §1: a move takes one step).
 double cruise_speed_mps(const ExportPlan& plan);
 
 }  // namespace hullinspect::io

@@ -1,5 +1,5 @@
 #pragma once
-// Reads a mission trace written by TraceRecorder (format "hullinspect-trace", version 1,
+// Reads a mission trace written by TraceRecorder (format "hullinspect-trace", version 2,
 // docs/trace-format.md) and checks its structure, so the viewer and scripts can trust it.
 
 #include <nlohmann/json.hpp>
@@ -11,7 +11,9 @@ namespace hullinspect::io {
 
 /// The trace format this build writes and reads.
 inline constexpr const char* kTraceFormat = "hullinspect-trace";
-inline constexpr int kTraceVersion = 1;
+/// Version 2 writes planner layers as changes with periodic whole sets; version 1 (whole sets
+/// only) is still read.
+inline constexpr int kTraceVersion = 2;
 
 /// Parses and validates a trace file. Throws InputError naming the file (and the JSON line, or the
 /// offending field such as "frames[12].u") when it cannot be read, is not JSON or breaks the

@@ -1,11 +1,11 @@
 #pragma once
-// DARP (Kapoutsis et al. 2017) as specified in SPEC §5.1: divides the hull into connected regions,
+// DARP (Kapoutsis et al. 2017) as specified in model.md §5.1: divides the hull into connected regions,
 // one per UAV, each holding its start cell, with region weights balanced within a tolerance.
 // The algorithm, its parameters and measurements are described in docs/partition.md.
 
 #include <vector>
 
-#include "hullinspect/core/options.hpp"
+#include "hullinspect/core/parameters.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 
 namespace hullinspect::partition {
@@ -41,8 +41,9 @@ struct DarpOptions {
   bool repair_fallback = true;
 };
 
-/// Names and defaults of the options as the registry reads them ("iteration-limit", "cc", …).
-std::vector<OptionSpec> darp_option_specs();
+/// The declared options ("iteration-limit", "cc", …; defaults from DarpOptions{}).
+const Params<DarpOptions>& darp_params();
+std::vector<ParamSpec> darp_option_specs();
 /// Reads DarpOptions from named options; throws ParameterError("darp.<key>", …) out of range or for
 /// an unknown key.
 DarpOptions read_darp_options(const OptionMap& options);
@@ -51,7 +52,7 @@ class DarpPartitioner final : public Partitioner {
  public:
   explicit DarpPartitioner(DarpOptions options = {});
   /// Start cells outside the grid are rejected (ParameterError "starts"); start cells that are not
-  /// hull cells are snapped to the nearest hull cell (HullMask::snap, SPEC §1). Two UAVs on one
+  /// hull cells are snapped to the nearest hull cell (HullMask::snap, model.md §1). Two UAVs on one
   /// cell (also after snapping) is a ParameterError("starts", …). Returns a partition whose regions
   /// are all 4-connected and hold their start cells: the balanced one when DARP converges, else the
   /// best connected one found with a warning (converged = false); throws Error when none was found.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/core/registry.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/world/hull.hpp"
 
@@ -48,17 +49,17 @@ class Partitioner {
   virtual Partition partition(const PartitionRequest& request) const = 0;
 };
 
-struct PartitionerInfo {
-  std::string name;
-  std::string description;
-  std::vector<OptionSpec> options;
-  std::unique_ptr<Partitioner> (*make)(const OptionMap& options);
-};
+using PartitionerInfo = RegistryEntry<Partitioner>;
+using PartitionerRegistry = Registry<Partitioner>;
 
-/// Every partitioner by name ("darp", "stripes").
-std::span<const PartitionerInfo> partitioner_registry();
+/// Every partitioner by name ("darp", "stripes"); add your own with partitioners().add(…).
+PartitionerRegistry& partitioners();
+/// A snapshot of partitioners().entries().
+std::vector<PartitionerInfo> partitioner_registry();
 /// Throws ParameterError("partitioner", …) for an unknown name.
 std::unique_ptr<Partitioner> make_partitioner(std::string_view name, const OptionMap& options = {});
+/// The effective options of a partitioner (validated, defaults filled in).
+OptionMap resolve_partitioner_options(std::string_view name, const OptionMap& options = {});
 /// The default partitioner's name.
 inline constexpr std::string_view kDefaultPartitioner = "darp";
 

@@ -1,6 +1,6 @@
 #pragma once
 // Frontier utilities and the greedy robot–frontier assignment of the Coop-Frontier planner
-// (SPEC §5.4; paper eqs. 13 and 15–17).
+// (model.md §5.4; paper eqs. 13 and 15–17).
 
 #include <span>
 #include <vector>
@@ -12,7 +12,7 @@ namespace hullinspect::planners {
 
 /// U_f = α / d_HP + (1 − α) / d_C (eq. 13). Each distance is to the nearest member of its set, or
 /// grid::kUnreachable (or any value < 0) when that set is empty: the term then contributes 0. Both
-/// distances are clamped to at least 1 (SPEC: d_C = max(1, ·); d_HP ≥ 1 on a frontier anyway).
+/// distances are clamped to at least 1 (model.md §5.4: d_C = max(1, ·); d_HP ≥ 1 on a frontier anyway).
 double frontier_utility(double alpha, int d_hp, int d_c);
 
 /// P(d) of eq. 17: d / (2·s2) for d < 2·s2, else 1.

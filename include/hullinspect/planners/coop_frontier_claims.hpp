@@ -1,6 +1,6 @@
 #pragma once
 // Which UAV claimed which detected corrosion cell, and the INSPECT target rule of the Coop-Frontier
-// planner (SPEC §5.4).
+// planner (model.md §5.4).
 
 #include <cstdint>
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// Distance fields behind d_HP and d_C (SPEC §5.4): the distance (docs/model.md) from every cell to the
+// Distance fields behind d_HP and d_C (model.md §5.4): the distance (docs/model.md) from every cell to the
 // nearest member of a cell set that changes during the mission.
 
 #include <cstdint>

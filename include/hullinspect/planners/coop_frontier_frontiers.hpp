@@ -1,5 +1,5 @@
 #pragma once
-// The frontier set F of SPEC §5.4, kept up to date cell by cell as the map M fills in.
+// The frontier set F of model.md §5.4, kept up to date cell by cell as the map M fills in.
 
 #include <cstdint>
 #include <span>

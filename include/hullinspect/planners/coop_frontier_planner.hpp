@@ -1,5 +1,5 @@
 #pragma once
-// Coop-Frontier (SPEC §5.4; paper Section IV-B): fully cooperative frontier-based inspection on the
+// Coop-Frontier (model.md §5.4; paper Section IV-B): fully cooperative frontier-based inspection on the
 // shared map M, with frontier utilities from the prior and from detections (eq. 13), a greedy
 // robot–frontier assignment with utility reduction (eqs. 15–17) and close-up inspection of detected
 // corrosion. No partition, so the fleet keeps working when UAVs fail.

@@ -15,7 +15,7 @@ struct LawnmowerOptions {
   std::uint64_t partition_seed = 0;  ///< seed of the partitioner (not of the instance)
 };
 
-/// The baseline of SPEC §5.2: descend to z = 1 once, then sweep the UAV's region strip by strip
+/// The baseline of model.md §5.2: descend to z = 1 once, then sweep the UAV's region strip by strip
 /// (strips of s1 rows from the bottom, flown along their centre rows, bottom to top, each from its
 /// nearer end). Ignores the prior and everything sensed. With no-fly zones its route goes around
 /// them (lawnmower_no_fly.hpp).
@@ -25,6 +25,8 @@ class LawnmowerPlanner final : public Planner {
   void start(const PlannerContext& context) override;
   void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override;
   const partition::Partition* partition() const override { return partition_.get(); }
+  /// Every working UAV has flown its whole sweep.
+  bool idle(const sim::PlannerView& view) const override;
   void annotate(AnnotationSink& sink) const override;
 
   /// The sweep of one region: the waypoints (strip ends) from `from`.

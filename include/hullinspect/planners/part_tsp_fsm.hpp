@@ -1,5 +1,5 @@
 #pragma once
-// The finite-state machine of Part-TSP (paper Fig. 3, SPEC §5.3) that decides when a UAV changes
+// The finite-state machine of Part-TSP (paper Fig. 3, model.md §5.3) that decides when a UAV changes
 // plane. It is evaluated every step for a UAV that is on a plane, before it acts.
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The local maps M^k of Part-TSP (SPEC §5.3): UAV k knows only its region R_k, and only from its
+// The local maps M^k of Part-TSP (model.md §5.3): UAV k knows only its region R_k, and only from its
 // own readings (no communication). Regions are disjoint, so all the M^k live in one grid where a
 // cell holds the value of its owner's map.
 //
@@ -50,7 +50,7 @@ class LocalMaps {
   /// in M^k from now on (nothing is left to do there). `reach` holds world::kReachZ1/Z2 bits.
   void write_off(const grid::Grid<std::uint8_t>& reach);
 
-  /// Applies UAV k's readings of one step to M^k (the SPEC §3 table, cells of R_k only).
+  /// Applies UAV k's readings of one step to M^k (the model.md §3 table, cells of R_k only).
   LocalEvents ingest(int k, std::span<const sim::Reading> readings);
 
   int uavs() const { return static_cast<int>(regions_.size()); }

@@ -1,5 +1,5 @@
 #pragma once
-// Segment division of Part-TSP (SPEC §5.3, paper IV-A.2): in each strip of s_z rows, a column is
+// Segment division of Part-TSP (model.md §5.3, paper IV-A.2): in each strip of s_z rows, a column is
 // targeted when a cell of the strip in that column belongs to R_k and holds the target value in
 // M^k; a segment is a maximal run of targeted columns, flown along the strip's flight row.
 

@@ -10,6 +10,7 @@
 
 #include "hullinspect/core/options.hpp"
 #include "hullinspect/grid/distance_service.hpp"
+#include "hullinspect/core/registry.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/sim/mission_result.hpp"
@@ -50,6 +51,8 @@ struct PlannerContext {
   grid::DistanceService* distances = nullptr;
   /// Which hull cells can be inspected / detected at all; null: every one.
   const world::Reachability* reach = nullptr;
+  /// The ground truth C — only for planners whose sees_truth() is true (oracle bounds); else null.
+  const grid::Grid<std::int8_t>* truth = nullptr;
 };
 
 /// Adds the mission's no-fly zones to a partition request (DARP's initial distances then follow
@@ -79,6 +82,11 @@ class Planner {
   virtual void start(const PlannerContext& context) = 0;
   /// The main hook: fills one action per UAV from the view at time t.
   virtual void decide(const sim::PlannerView& view, std::span<sim::Action> actions) = 0;
+  /// True only for oracle planners (name "oracle-…"): run_mission then hands them the truth C.
+  virtual bool sees_truth() const { return false; }
+  /// True when every UAV that has not failed will only hover from now on, whatever it senses: the
+  /// mission then ends (incomplete if the hull is not done). Called after each step.
+  virtual bool idle(const sim::PlannerView& /*view*/) const { return false; }
   /// Counters for the mission result.
   virtual sim::PlannerStats stats() const { return {}; }
   /// The partition used, for partitioned planners (traces and viewer).
@@ -87,16 +95,24 @@ class Planner {
   virtual void annotate(AnnotationSink& /*sink*/) const {}
 };
 
-struct PlannerInfo {
-  std::string name;
-  std::string description;
-  std::vector<OptionSpec> options;
-  std::unique_ptr<Planner> (*make)(const OptionMap& options);
-};
+using PlannerInfo = RegistryEntry<Planner>;
+using PlannerRegistry = Registry<Planner>;
 
-/// Every planner by name.
-std::span<const PlannerInfo> planner_registry();
+/// Every planner by name. Add your own (docs/user-planners.md) with
+/// `static const planners::PlannerRegistration reg(make_entry<Planner, MyOptions>(…));`
+/// or planners().add(…) before use.
+PlannerRegistry& planners();
+/// A snapshot of planners().entries().
+std::vector<PlannerInfo> planner_registry();
 /// Throws ParameterError("algorithm", …) for an unknown name, or ("<name>.<option>", …).
 std::unique_ptr<Planner> make_planner(std::string_view name, const OptionMap& options = {});
+/// The effective options of a planner: validated, every default filled in, canonical text
+/// (nested groups such as "tsp.<key>" expanded for the chosen solver/partitioner).
+OptionMap resolve_planner_options(std::string_view name, const OptionMap& options = {});
+
+/// Registers a planner at static-initialisation time (one line in the planner's own file).
+struct PlannerRegistration {
+  explicit PlannerRegistration(PlannerInfo entry);
+};
 
 }  // namespace hullinspect::planners

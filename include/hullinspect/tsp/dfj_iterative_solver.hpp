@@ -20,6 +20,7 @@ class DfjIterativeSolver final : public TspSolver {
   explicit DfjIterativeSolver(DfjIterativeOptions options = {}) : options_(options) {}
   TspSolution solve(const SegmentTsp& problem) override;
   /// Reads "time_limit"; rejects unknown keys.
+  static const Params<DfjIterativeOptions>& params();
   static DfjIterativeOptions read_options(const OptionMap& options);
 
  private:

@@ -43,8 +43,10 @@ class ExactSolver final : public TspSolver {
   explicit ExactSolver(ExactOptions options = {});
   ~ExactSolver() override;
   TspSolution solve(const SegmentTsp& problem) override;
-  /// Reads "time_limit", "dp_max_segments", "kicks", "max_segments", "work_budget"; rejects
-  /// unknown keys.
+  /// The declared options: "time-limit", "dp-max-segments", "kicks", "max-segments",
+  /// "work-budget".
+  static const Params<ExactOptions>& params();
+  /// Reads the declared options; rejects unknown keys.
   static ExactOptions read_options(const OptionMap& options);
 
  private:

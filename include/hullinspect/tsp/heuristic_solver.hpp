@@ -29,6 +29,7 @@ class HeuristicSolver final : public TspSolver {
   ~HeuristicSolver() override;
   TspSolution solve(const SegmentTsp& problem) override;
   /// Reads "kicks", "seed"; rejects unknown keys.
+  static const Params<HeuristicOptions>& params();
   static HeuristicOptions read_options(const OptionMap& options);
 
  private:

@@ -1,5 +1,5 @@
 #pragma once
-// The segment TSP of Part-TSP (SPEC §5.3, eqs. 6–12): an open path from the UAV through every
+// The segment TSP of Part-TSP (model.md §5.3, eqs. 6–12): an open path from the UAV through every
 // segment, each segment flown end to end in one of its two directions. Costs are the mission's
 // distances (docs/model.md): Manhattan without no-fly zones, shortest allowed flights with them.
 // Solvers (docs/tsp.md): "exact" (default, proves optimality), "dfj-iterative" (the paper's
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/core/registry.hpp"
 #include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/distance_service.hpp"
 
@@ -68,17 +69,18 @@ class TspSolver {
   virtual TspSolution solve(const SegmentTsp& problem) = 0;
 };
 
-struct TspSolverInfo {
-  std::string name;
-  std::string description;
-  std::vector<OptionSpec> options;
-  std::unique_ptr<TspSolver> (*make)(const OptionMap& options);
-};
+using TspSolverInfo = RegistryEntry<TspSolver>;
+using TspSolverRegistry = Registry<TspSolver>;
 
-std::span<const TspSolverInfo> tsp_solver_registry();
-/// Throws ParameterError("tsp_solver", …) for an unknown name and ParameterError("<name>.<key>", …)
+/// Every segment-TSP solver by name; add your own with tsp_solvers().add(…).
+TspSolverRegistry& tsp_solvers();
+/// A snapshot of tsp_solvers().entries().
+std::vector<TspSolverInfo> tsp_solver_registry();
+/// Throws ParameterError("tsp-solver", …) for an unknown name and ParameterError("<name>.<key>", …)
 /// for an unknown or out-of-range option.
 std::unique_ptr<TspSolver> make_tsp_solver(std::string_view name, const OptionMap& options = {});
+/// The effective options of a solver (validated, defaults filled in).
+OptionMap resolve_tsp_solver_options(std::string_view name, const OptionMap& options = {});
 /// The default solver's name.
 inline constexpr std::string_view kDefaultTspSolver = "exact";
 

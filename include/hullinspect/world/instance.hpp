@@ -1,5 +1,5 @@
 #pragma once
-// Instances (SPEC §2): the ground truth C and the prior C' drawn from corrosion parameters and a seed.
+// Instances (model.md §2): the ground truth C and the prior C' drawn from corrosion parameters and a seed.
 
 #include <cstdint>
 #include <vector>
@@ -26,7 +26,7 @@ struct CorrosionParams {
   /// One zone over a grid of width a.
   static CorrosionParams homogeneous(int a, double p_c, int l_c, double p_tp = 1.0,
                                      double p_fp = 0.0);
-  /// Two zones: back x < a/2 and front x >= a/2 (SPEC §2 inhomogeneous instances).
+  /// Two zones: back x < a/2 and front x >= a/2 (model.md §2 inhomogeneous instances).
   static CorrosionParams front_back(int a, double back_p_c, int back_l_c, double front_p_c,
                                     int front_l_c, double p_tp = 1.0, double p_fp = 0.0);
 };
@@ -45,7 +45,7 @@ struct Instance {
   int corroded_cells() const;  ///< #{C = 1}
 };
 
-/// Draws C and C' (SPEC §2). C depends only on (seed, hull, zones); the prior uses separate streams
+/// Draws C and C' (model.md §2). C depends only on (seed, hull, zones); the prior uses separate streams
 /// of the same seed, so sweeping p_tp or p_fp keeps C.
 Instance generate_instance(const HullMask& hull, const CorrosionParams& params, std::uint64_t seed);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Mission parameters (SPEC §1): fleet, camera footprints, plane-change time, start cells, time limit.
+// Mission parameters (model.md §1): fleet, camera footprints, plane-change time, start cells, time limit.
 
 #include <cstdint>
 #include <memory>
@@ -19,7 +19,7 @@ struct MissionParams {
   double cell_size_m = 0.5;          ///< side of one cell in metres (for reports and exports)
   double plane_speed_cells = 1.0;    ///< standoff change per step, cells per step (> 0)
   int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
-  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = SPEC §1 default spacing
+  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
   int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
   /// No-fly positions (1 = no UAV may be there, on either plane), the hull's size; null = none.
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
@@ -35,9 +35,10 @@ struct MissionParams {
 /// Throws ParameterError naming the field ("uavs", "s2", "theta", …) and the accepted range.
 void validate(const MissionParams& params, const HullMask& hull);
 
-/// The start cells of the mission: `params.starts` snapped to the hull, or the defaults
-/// x_k = floor((k + 0.5)·a/n), y = floor(b/2), snapped to the nearest hull cell (with no-fly
-/// positions: the nearest hull cell that is not one).
+/// The start cells of the mission: `params.starts` snapped to the hull, or the defaults of
+/// docs/model.md §1: UAV k aims at x = x0 + floor((k + 0.5)·w/n) on the middle row of the hull's
+/// bounding box and takes the nearest hull cell that no earlier UAV took and that is not a no-fly
+/// position, so default starts are always distinct and allowed.
 std::vector<grid::Cell> start_cells(const MissionParams& params, const HullMask& hull);
 
 }  // namespace hullinspect::world

@@ -25,7 +25,7 @@ struct CellBox {
 using NoFlyMask = grid::Grid<std::uint8_t>;
 
 /// Builds the mask for `hull`: the no-fly cells of `file` (any hull-mask format, read with
-/// load_mask_grid; its size must equal the hull's) plus every box (clipped to nothing: a box must
+/// load_cell_map; its size must equal the hull's) plus every box (clipped to nothing: a box must
 /// lie inside the grid). Empty `file` = no file. Throws InputError naming the file for a size
 /// mismatch and ParameterError("no-fly-box", …) for a box outside the grid.
 NoFlyMask make_no_fly_mask(const HullMask& hull, const std::filesystem::path& file,
