@@ -108,7 +108,7 @@ TEST(Parameters, OldSnakeCaseSpellingsAreRefusedWithAHint) {
   } catch (const ParameterError& e) {
     EXPECT_EQ(std::string(e.what()),
               "exact.time_limit: unknown option (did you mean time-limit?) (known: time-limit, "
-              "dp-max-segments, kicks)");
+              "dp-max-segments, kicks, max-segments, work-budget)");
   }
   try {
     planners::make_planner("part-tsp", {{"tsp.dp_max_segments", "12"}});

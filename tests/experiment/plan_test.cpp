@@ -229,7 +229,8 @@ TEST(ExperimentPlan, RecordsEffectiveOptionsWithDefaults) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "plan.yaml:4: exact.dp_max_segments: unknown option (did you mean "
-              "dp-max-segments?) (known: time-limit, dp-max-segments, kicks)");
+              "dp-max-segments?) (known: time-limit, dp-max-segments, kicks, max-segments, "
+              "work-budget)");
   }
 }
 
