@@ -9,6 +9,12 @@ endif()
 if(HULLINSPECT_WERROR)
   target_compile_options(hullinspect_warnings INTERFACE -Werror)
 endif()
+if(HULLINSPECT_FUZZ)
+  # Every object is instrumented for coverage-guided fuzzing; fuzz/ links the fuzzer's main.
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+                      -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()
 if(HULLINSPECT_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)

@@ -40,6 +40,8 @@
       if (p.seed !== undefined) parts.push(`seed ${p.seed}`);
       if (p.hull) parts.push(`hull ${p.hull}`);
       if (p.p_tp !== undefined) parts.push(`p_TP ${p.p_tp}, p_FP ${p.p_fp}`);
+      if (p.prior_file) parts.push(`prior ${p.prior_file}`);
+      if (p.truth_file) parts.push(`truth ${p.truth_file}`);
       parts.push(`${this.replay.W} × ${this.replay.H} cells`);
       $('mission-title').textContent = parts.join(' · ');
       document.title = `hullinspect replay: ${parts.slice(0, 2).join(', ')}`;

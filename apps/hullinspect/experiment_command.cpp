@@ -14,6 +14,8 @@
 #include "hullinspect/experiment/build_data.hpp"
 #include "hullinspect/experiment/presets.hpp"
 #include "hullinspect/experiment/runner.hpp"
+#include "hullinspect/io/output_set.hpp"
+#include "number_options.hpp"
 #include "progress_reporter.hpp"
 
 namespace hullinspect::cli {
@@ -37,7 +39,8 @@ experiment::ExperimentConfig load(const ExperimentArgs& a) {
   if (a.preset.empty() == a.config.empty()) {
     throw ParameterError("preset", "give exactly one of --preset NAME or --config FILE");
   }
-  auto config = a.preset.empty() ? experiment::load_config(a.config) : experiment::load_preset(a.preset);
+  auto config =
+      a.preset.empty() ? experiment::load_config(a.config) : experiment::load_preset(a.preset);
   if (!a.algorithms.empty()) experiment::restrict_algorithms(config, a.algorithms);
   if (a.instances != 0) experiment::set_instance_count(config, a.instances);
   return config;
@@ -60,16 +63,20 @@ int run(const ExperimentArgs& a) {
   options.resume = a.resume;
   if (!a.shard.empty()) {
     options.shard = experiment::parse_shard(a.shard);
-  } else if (auto slurm = experiment::shard_from_slurm([](const char* n) -> const char* {
-               return std::getenv(n);
-             })) {
+  } else if (auto slurm = experiment::shard_from_slurm(
+                 [](const char* n) -> const char* { return std::getenv(n); })) {
     options.shard = *slurm;
     std::cerr << fmt::format("hullinspect: shard {} (from the Slurm job array)\n", slurm->text());
   }
+  io::OutputSet outputs;
+  outputs.add_input(a.config, "config");
+  if (!a.dry_run) outputs.add_output_dir(a.out, "out");
+  outputs.check();
   const experiment::ExperimentPlan plan(load(a));  // validates every cell before anything runs
   const auto& config = plan.config();
   int in_shard = 0;
-  for (int p = 0; p < static_cast<int>(plan.runs().size()); ++p) in_shard += options.shard.contains(p);
+  for (int p = 0; p < static_cast<int>(plan.runs().size()); ++p)
+    in_shard += options.shard.contains(p);
   if (a.dry_run) {
     std::cout << fmt::format(
         "{}: {} scenarios × {} s2 × {} fleet sizes × {} algorithms = {} cells; × {} instances = "
@@ -111,14 +118,16 @@ void add_experiment_command(CLI::App& app, CommandAction& action) {
       "cell), samples.csv, timings.csv, manifest.json. See docs/experiments.md.\n"
       "Example: hullinspect experiment --preset paper-quick --out results/quick");
   std::string presets;
-  for (const auto& name : experiment::preset_names()) presets += (presets.empty() ? "" : ", ") + name;
-  cmd->add_option("--preset", args->preset, "Built-in experiment: " + presets)
-      ->type_name("NAME");
+  for (const auto& name : experiment::preset_names())
+    presets += (presets.empty() ? "" : ", ") + name;
+  cmd->add_option("--preset", args->preset, "Built-in experiment: " + presets)->type_name("NAME");
   cmd->add_option("--config", args->config, "Experiment config (YAML, see docs/experiments.md)")
       ->type_name("FILE");
   cmd->add_option("--out,-o", args->out, "Results directory (new or empty, or with --resume)")
       ->type_name("DIR");
-  cmd->add_option("--jobs,-j", args->jobs, "Worker threads (0: every core)")->capture_default_str();
+  cmd->add_option("--jobs,-j", args->jobs, "Worker threads (0: every core)")
+      ->check(integer_in(0, 4096))
+      ->capture_default_str();
   cmd->add_flag("--resume", args->resume,
                 "Continue the experiment in DIR: keep finished runs, run the missing ones");
   cmd->add_option("--shard", args->shard,
@@ -129,8 +138,8 @@ void add_experiment_command(CLI::App& app, CommandAction& action) {
                   "Run only these algorithms of the config (labels, comma-separated)")
       ->delimiter(',')
       ->type_name("LIST");
-  cmd->add_option("--instances", args->instances,
-                  "Override the config's instances with seeds 1..N")
+  cmd->add_option("--instances", args->instances, "Override the config's instances with seeds 1..N")
+      ->check(integer_in(1, 1'000'000))
       ->type_name("N");
   cmd->add_flag("--dry-run", args->dry_run, "Validate and count cells and runs; run nothing");
   cmd->add_flag("--list-presets", args->list_presets, "List the built-in presets and exit");

@@ -1,5 +1,7 @@
 #include "export_options.hpp"
 
+#include "number_options.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
@@ -29,6 +31,7 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
       ->type_name("LAT,LON,ALT");
   cmd.add_option("--heading", a.heading,
                  "Geo-reference: ship heading, degrees clockwise from north")
+      ->check(real_in(-360.0, 360.0))  // a custom type name hides it from require_exact_numbers()
       ->type_name("DEG");
   cmd.add_option("--geo", a.geo_file,
                  "Geo-reference from a YAML file: origin: [LAT, LON, ALT], heading: DEG")

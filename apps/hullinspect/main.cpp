@@ -3,14 +3,54 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
 std::string option_name(const std::string& parameter) { return hullinspect::option_name(parameter); }
+
+namespace {
+
+// Every message is one line: control characters from input bytes (a YAML key with a newline, a
+// CLI value) are shown escaped.
+std::string one_line(std::string_view message) {
+  std::string out;
+  for (const char ch : message) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7f) {
+      out += fmt::format("\\x{:02x}", c);
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
+// A command's result on stdout is output like any file: a failed write or flush (a full disk,
+// `> /dev/full`, a closed pipe) is an error, reported on one line with a non-zero exit.
+int finish_stdout(int status) {
+  std::cout.flush();
+  const bool ok = std::cout.good() && std::fflush(stdout) == 0 && std::ferror(stdout) == 0;
+  const int err = errno;
+  if (!ok) {
+    std::cerr << "hullinspect: cannot write to standard output: " << std::strerror(err) << "\n";
+    return status == 0 || status == 3 ? kExitFailure : status;
+  }
+  return status;
+}
+
+}  // namespace
 
 }  // namespace hullinspect::cli
 
@@ -26,8 +66,10 @@ int main(int argc, char** argv) {
   cli::add_experiment_commands(app, action);
   cli::add_view_command(app, action);
   cli::add_list_command(app, action);
+  cli::add_hull_command(app, action);
   cli::add_export_command(app, action);
   cli::add_plan_command(app, action);
+  cli::require_exact_numbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -38,7 +80,6 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
-    if (auto nl = message.find('\n'); nl != std::string::npos) message.resize(nl);
     // CLI11 says "Could not convert: --uavs,-n = abc"; name the option first like our own errors.
     const std::string prefix = "Could not convert: ";
     if (message.rfind(prefix, 0) == 0) {
@@ -48,19 +89,19 @@ int main(int argc, char** argv) {
       const std::string value = eq == std::string::npos ? "" : message.substr(eq + 3);
       message = option + ": '" + value + "' is not a valid value";
     }
-    std::cerr << "hullinspect: " << message << " (see --help)\n";
+    std::cerr << "hullinspect: " << cli::one_line(message) << " (see --help)\n";
     return cli::kExitBadInput;
   }
   try {
-    return action ? action() : 0;
+    return cli::finish_stdout(action ? action() : 0);
   } catch (const ParameterError& e) {
-    std::cerr << "hullinspect: " << user_message(e) << "\n";
+    std::cerr << "hullinspect: " << cli::one_line(user_message(e)) << "\n";
     return cli::kExitBadInput;
   } catch (const InputError& e) {
-    std::cerr << "hullinspect: " << e.what() << "\n";
+    std::cerr << "hullinspect: " << cli::one_line(e.what()) << "\n";
     return cli::kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "hullinspect: " << e.what() << "\n";
+    std::cerr << "hullinspect: " << cli::one_line(e.what()) << "\n";
     return cli::kExitFailure;
   }
 }

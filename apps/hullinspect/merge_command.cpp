@@ -8,6 +8,7 @@
 #include "experiment_commands.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/experiment/merge.hpp"
+#include "hullinspect/io/output_set.hpp"
 
 namespace hullinspect::cli {
 
@@ -20,6 +21,10 @@ struct MergeArgs {
 
 int run(const MergeArgs& a) {
   std::vector<std::filesystem::path> inputs(a.inputs.begin(), a.inputs.end());
+  io::OutputSet outputs;
+  for (const auto& dir : a.inputs) outputs.add_input(dir, "input directory");
+  outputs.add_output_dir(a.out, "out");
+  outputs.check();
   const auto summary = experiment::merge_results(inputs, a.out);
   for (const auto& note : summary.notes) std::cerr << "hullinspect: " << note << "\n";
   std::cout << fmt::format("merged {} into {}: {}",

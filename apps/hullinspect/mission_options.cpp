@@ -6,6 +6,7 @@
 #include "hullinspect/core/parameters.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/scenario.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -49,12 +50,15 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
       ->capture_default_str();
   cmd.add_option("--s2", a.s2, "Footprint side at the detection plane z = 2, cells (odd, > s1)")
       ->capture_default_str();
-  cmd.add_option("--theta", a.theta, "Camera aperture θ in degrees, in (0, 180)")->capture_default_str();
-  cmd.add_option("--start-z", a.start_z, "Plane every UAV starts on (1 or 2)")->capture_default_str();
+  cmd.add_option("--theta", a.theta, "Camera aperture θ in degrees, in (0, 180)")
+      ->capture_default_str();
+  cmd.add_option("--start-z", a.start_z, "Plane every UAV starts on (1 or 2)")
+      ->capture_default_str();
   cmd.add_option("--start", a.starts,
                  "Start cell x,y of each UAV (repeat once per UAV; default: spread along the hull)")
       ->type_name("X,Y");
-  cmd.add_option("--seed", a.seed, "Instance seed (same seed, same C and C')")->capture_default_str();
+  cmd.add_option("--seed", a.seed, "Instance seed (same seed, same C and C')")
+      ->capture_default_str();
   cmd.add_option("--scenario", a.scenario,
                  "Corrosion scenario: " + scenario_names +
                      " (--p-c/--l-c/--front-p-c/--front-l-c/--p-tp/--p-fp override its values; "
@@ -67,7 +71,8 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
   cmd.add_option("--p-tp", a.p_tp, declared_help(scenario, "p-tp"))->type_name("P");
   cmd.add_option("--p-fp", a.p_fp, declared_help(scenario, "p-fp"))->type_name("P");
   cmd.add_option("--hull", a.hull,
-                 "Hull mask: 'default', a text mask or a PGM image (see docs/formats.md)")
+                 "Hull: 'default', 'dtc', a text mask, a PGM image, a hull JSON or a mesh "
+                 "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
       ->type_name("FILE")
       ->capture_default_str();
   cmd.add_option("--time-limit", a.time_limit,
@@ -80,11 +85,11 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
       ->type_name("NAME");
   cmd.add_option("--partition-seed", a.partition_seed,
                  declared_help(part_tsp, "partition-seed", "Partitioned planners: "))
-      ->type_name("INT");
+      ->type_name("SEED");
   cmd.add_option("--tsp-solver", a.tsp_solver, declared_help(part_tsp, "tsp-solver", "Part-TSP: "))
       ->type_name("NAME");
-  cmd.add_option("--r1", a.r1, declared_help(part_tsp, "r1", "Part-TSP: "))->type_name("INT");
-  cmd.add_option("--r2", a.r2, declared_help(part_tsp, "r2", "Part-TSP: "))->type_name("INT");
+  cmd.add_option("--r1", a.r1, declared_help(part_tsp, "r1", "Part-TSP: "))->type_name("STEPS");
+  cmd.add_option("--r2", a.r2, declared_help(part_tsp, "r2", "Part-TSP: "))->type_name("STEPS");
   cmd.add_option("--alpha", a.alpha, declared_help(coop, "alpha", "Coop-Frontier: "))
       ->type_name("X");
   cmd.add_option("--beta", a.beta, declared_help(coop, "beta", "Coop-Frontier: "))->type_name("X");
@@ -92,23 +97,33 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
                  "Any planner option as key=value (repeatable; listed below, also "
                  "`hullinspect list planners`)")
       ->type_name("KEY=VALUE");
+  cmd.add_option("--fail", a.fail,
+                 "UAV k fails at the start of step T: it stops, senses nothing (repeatable; "
+                 "docs/beyond.md)")
+      ->type_name("UAV@T");
+  cmd.add_option("--fail-rate", a.fail_rate,
+                 "Probability that a working UAV fails at a step, drawn from the instance seed")
+      ->capture_default_str();
+  cmd.add_option("--fail-one-within", a.fail_one_within,
+                 "One UAV (drawn from the instance seed) fails at a random step below H (0: none)")
+      ->type_name("H")
+      ->capture_default_str();
+  cmd.add_option("--prior", a.prior,
+                 "Expected corrosion C' from FILE (text mask or PGM, marked = corroded) instead of "
+                 "the generated prior")
+      ->type_name("FILE");
+  cmd.add_option("--truth", a.truth,
+                 "Ground truth C from FILE (text mask or PGM, marked = corroded) instead of the "
+                 "generated one")
+      ->type_name("FILE");
+  add_mesh_options(cmd, a.mesh);
   cmd.footer("Planners and their options (-O KEY=VALUE):\n" + planner_help);
 }
 
-world::HullMask load_mission_hull(const MissionArgs& a) { return world::load_hull(a.hull); }
+world::HullMask load_mission_hull(const MissionArgs& a) {
+  return load_hull_argument(a.hull, a.mesh);
 
-namespace {
-grid::Cell parse_cell(const std::string& text) {
-  int x = 0;
-  int y = 0;
-  char comma = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
-    throw ParameterError("start", fmt::format("expects X,Y (got '{}')", text));
-  }
-  return {x, y};
 }
-}  // namespace
 
 planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hull) {
   planners::MissionSpec spec;
@@ -121,7 +136,8 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   p.theta_deg = a.theta;
   p.start_z = a.start_z;
   p.time_limit = a.time_limit;
-  for (const auto& s : a.starts) p.starts.push_back(parse_cell(s));
+  if (hull.geometry()) p.cell_size_m = hull.geometry()->cell_size;
+  for (const auto& s : a.starts) p.starts.push_back(parse_xy(s));
 
   OptionMap scenario_options;
   auto set = [&](const char* key, const std::optional<std::string>& v) {
@@ -141,6 +157,7 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
     if (dot == std::string::npos) throw;
     throw ParameterError(e.name().substr(dot + 1), e.problem());
   }
+  spec.maps = world::load_user_maps(a.prior, a.truth, hull);
 
   auto put = [&](const char* key, const std::optional<std::string>& v) {
     if (v) spec.planner_options[key] = *v;
@@ -152,6 +169,9 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   put("r2", a.r2);
   put("alpha", a.alpha);
   put("beta", a.beta);
+  for (const auto& f : a.fail) spec.failures.at.push_back(world::parse_uav_failure(f));
+  spec.failures.rate = a.fail_rate;
+  spec.failures.one_within = a.fail_one_within;
   for (const auto& kv : a.planner_options) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) {

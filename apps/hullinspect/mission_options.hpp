@@ -9,6 +9,7 @@
 
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "mesh_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -28,14 +29,16 @@ struct MissionArgs {
   int time_limit = world::MissionParams{}.time_limit;
   std::optional<std::string> partitioner, partition_seed, tsp_solver, r1, r2, alpha, beta;
   std::vector<std::string> planner_options;  // key=value
+  std::vector<std::string> fail;             // UAV@STEP
+  double fail_rate = 0;
+  int fail_one_within = 0;
+  MeshArgs mesh;                             // how a mesh --hull is imported
+  std::string prior, truth;                  // the user's C′ and C (any hull-mask format)
 };
 
 void add_mission_options(CLI::App& cmd, MissionArgs& args);
 world::HullMask load_mission_hull(const MissionArgs& args);
 /// Turns the arguments into a spec; throws ParameterError naming the option.
 planners::MissionSpec build_spec(const MissionArgs& args, const world::HullMask& hull);
-
-/// Writes the HTML replay viewer for a trace (implemented with the view command).
-void write_viewer_html(const nlohmann::json& trace, const std::string& path);
 
 }  // namespace hullinspect::cli

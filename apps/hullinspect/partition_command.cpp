@@ -8,12 +8,14 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -32,18 +34,8 @@ struct PartitionArgs {
   std::vector<std::string> options;  // key=value
   bool json = false;
   std::string out_path;
+  MeshArgs mesh;  // how a mesh --hull is imported
 };
-
-grid::Cell parse_start(const std::string& text) {
-  int x = 0;
-  int y = 0;
-  char comma = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
-    throw ParameterError("start", fmt::format("expects X,Y (got '{}')", text));
-  }
-  return {x, y};
-}
 
 // Explicit starts that snap onto one hull cell: name the cells as the user gave them.
 void reject_shared_starts(const std::vector<grid::Cell>& given,
@@ -154,10 +146,14 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
 }
 
 int run_partition(const PartitionArgs& args) {
-  const world::HullMask hull = world::load_hull(args.hull);
+  io::OutputSet outputs;
+  if (args.hull != "default") outputs.add_input(args.hull, "hull");
+  outputs.add_output(args.out_path, "out");
+  outputs.check();
+  const world::HullMask hull = load_hull_argument(args.hull, args.mesh);
   world::MissionParams params;
   params.uavs = args.uavs;
-  for (const auto& s : args.starts) params.starts.push_back(parse_start(s));
+  for (const auto& s : args.starts) params.starts.push_back(parse_xy(s));
   try {
     world::validate(params, hull);
   } catch (const ParameterError& e) {
@@ -185,7 +181,10 @@ int run_partition(const PartitionArgs& args) {
   reject_shared_starts(params.starts, request.starts);
   const partition::Partition result = partitioner->partition(request);
   const auto connected = connected_regions(hull, result, args.uavs);
-  if (!args.out_path.empty()) io::write_file_atomic(args.out_path, region_mask(hull, result, args));
+  if (!args.out_path.empty()) {
+    outputs.write(args.out_path, region_mask(hull, result, args));
+    outputs.commit();
+  }
   if (args.json) {
     std::cout << summary_json(args, hull, request.starts, result, connected).dump() << "\n";
   } else {
@@ -215,9 +214,11 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
       "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
   cmd->add_option("--uavs,-n", args->uavs, "Fleet size n (1 … number of hull cells)")->required();
   cmd->add_option("--hull", args->hull,
-                  "Hull mask: 'default', a text mask or a PGM image (see docs/formats.md)")
+                  "Hull: 'default', 'dtc', a text mask, a PGM image, a hull JSON or a mesh "
+                  "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
       ->type_name("FILE")
       ->capture_default_str();
+  add_mesh_options(*cmd, args->mesh);
   cmd->add_option("--start", args->starts,
                   "Start cell x,y of each UAV (repeat once per UAV; default: spread along the "
                   "hull); cells off the hull are snapped to the nearest hull cell")

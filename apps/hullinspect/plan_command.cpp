@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "export_options.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
@@ -27,12 +28,17 @@ struct PlanArgs {
 };
 
 int plan(const PlanArgs& args) {
+  io::OutputSet outputs;
+  if (args.mission.hull != "default") outputs.add_input(args.mission.hull, "hull");
+  outputs.add_output(args.trace_path, "trace");
+  outputs.check();
   const auto export_request = resolve_export(args.output, "--export");
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
   auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
-  instance.truth = instance.prior;  // the world as known before take-off
+  world::apply(spec.maps, instance);  // the user's --prior, if given
+  instance.truth = instance.prior;    // the world as known before take-off
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   io::TraceRecorder recorder(instance, io::spec_json(spec, hull.source()));
   planners::MissionOptions options;
@@ -40,9 +46,10 @@ int plan(const PlanArgs& args) {
   const sim::MissionResult result =
       planners::run_mission(hull, instance, spec.params, *planner, options);
   const auto trace = recorder.finish(result);
-  if (!args.trace_path.empty()) io::write_file_atomic(args.trace_path, trace.dump() + "\n");
+  if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   std::vector<std::string> written;
   if (export_request) written = write_export(trace, *export_request, {args.mission.hull});
+  outputs.commit();
   if (args.json) {
     auto j = io::result_json(spec, result);
     j["planned_on"] = "prior";

@@ -1,6 +1,7 @@
 // hullinspect report: tables (Markdown, CSV) and figures (PNG, PDF) from an experiment's results.
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 
 #include "experiment_commands.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/experiment/build_data.hpp"
 #include "hullinspect/experiment/manifest.hpp"
@@ -16,6 +18,8 @@
 #include "hullinspect/experiment/results_dir.hpp"
 #include "hullinspect/experiment/summary.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "subprocess.hpp"
 
 namespace hullinspect::cli {
@@ -92,9 +96,9 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
   const auto& config = m.at("config");
   std::string md = fmt::format("# Experiment report: {}\n\n", config.value("name", "?"));
   if (!config.value("description", "").empty()) md += config.value("description", "") + "\n\n";
-  md += fmt::format("- Results: `{}` — status {}, {} of {} runs, {} instances per cell\n", a.results,
-                    m.value("status", "?"), m.value("runs_done", 0), m.value("runs_total", 0),
-                    config.at("seeds").size());
+  md += fmt::format("- Results: `{}` — status {}, {} of {} runs, {} instances per cell\n",
+                    a.results, m.value("status", "?"), m.value("runs_done", 0),
+                    m.value("runs_total", 0), config.at("seeds").size());
   md += fmt::format("- Config: `{}` (fingerprint {}); hullinspect {} (git {})\n",
                     m.value("config_source", "?"), m.value("fingerprint", "?"),
                     m.value("version", "?"), m.value("git_revision", "unknown"));
@@ -139,9 +143,35 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
   return md;
 }
 
+// The Python that draws the figures must exist before anything is written.
+void check_python(const std::string& python) {
+  const bool has_slash = python.find('/') != std::string::npos;
+  if (has_slash) {
+    if (::access(python.c_str(), X_OK) == 0 && !fs::is_directory(python)) return;
+  } else if (const char* path = std::getenv("PATH"); path != nullptr) {
+    std::string dirs = path;
+    std::size_t start = 0;
+    while (start <= dirs.size()) {
+      const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+      const fs::path candidate = fs::path(dirs.substr(start, end - start)) / python;
+      if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return;
+      start = end + 1;
+    }
+  }
+  throw ParameterError("python", fmt::format("'{}' is not an executable program (install "
+                                             "python3-matplotlib with scripts/setup, or pass "
+                                             "--no-figures)",
+                                             escape_for_message(python, 200)));
+}
+
 int run(const ReportArgs& a) {
   const fs::path results(a.results);
   const fs::path out(a.out);
+  io::OutputSet outputs;
+  outputs.add_input(results / experiment::kRunsFile, "results");
+  outputs.add_output_dir(out, "out");
+  outputs.check();
+  if (!a.no_figures) check_python(a.python);
   const auto manifest = experiment::read_manifest(results);
   for (const char* file : {experiment::kRunsFile, experiment::kCurvesFile}) {
     if (!fs::exists(results / file)) {
@@ -151,7 +181,7 @@ int run(const ReportArgs& a) {
     }
   }
   const auto runs_path = (results / experiment::kRunsFile).string();
-  const auto runs = experiment::parse_csv(io::read_file(runs_path), runs_path);
+  const auto runs = experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
   const auto rows = experiment::summarize_runs(runs, runs_path);
   experiment::PairedOptions paired_options;
   paired_options.algorithms = a.planners;
@@ -169,13 +199,15 @@ int run(const ReportArgs& a) {
   }
   const auto claims = experiment::check_paper_claims(analysis);
   if (manifest.value("shard", "1/1") != "1/1") {
-    std::cerr << fmt::format("hullinspect: {} holds shard {} only: merge the shards for the whole "
-                             "experiment\n",
-                             a.results, manifest.value("shard", "?"));
+    std::cerr << fmt::format(
+        "hullinspect: {} holds shard {} only: merge the shards for the whole "
+        "experiment\n",
+        a.results, manifest.value("shard", "?"));
   }
   if (manifest.value("status", "") != "complete") {
-    std::cerr << fmt::format("hullinspect: {} has status '{}': the report covers the {} runs found\n",
-                             a.results, manifest.value("status", "?"), runs.rows.size());
+    std::cerr << fmt::format(
+        "hullinspect: {} has status '{}': the report covers the {} runs found\n", a.results,
+        manifest.value("status", "?"), runs.rows.size());
   }
   fs::create_directories(out);
   const std::string tables = experiment::summary_markdown(rows);

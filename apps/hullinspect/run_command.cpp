@@ -8,10 +8,11 @@
 #include "commands.hpp"
 #include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/core/plural.hpp"
-#include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
+#include "hullinspect/io/viewer_html.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/scenario.hpp"
 #include "mission_options.hpp"
@@ -31,8 +32,20 @@ struct RunArgs {
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
   std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
-                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2,
-                           spec.seed, r.complete ? "complete" : "INCOMPLETE (time limit reached)");
+                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2, spec.seed,
+                           r.complete         ? "complete"
+                           : r.stopped_idle   ? "INCOMPLETE (no working UAV has work left)"
+                           : r.failed_uavs == spec.params.uavs ? "INCOMPLETE (every UAV failed)"
+                                                               : "INCOMPLETE (time limit reached)");
+  if (r.failed_uavs > 0) {
+    std::string which;
+    for (std::size_t k = 0; k < r.uavs.size(); ++k) {
+      if (r.uavs[k].failed_at >= 0) {
+        which += fmt::format("{}UAV {} at t = {}", which.empty() ? "" : ", ", k, r.uavs[k].failed_at);
+      }
+    }
+    std::cout << fmt::format("  failed: {}\n", which);
+  }
   auto time = [](const std::optional<int>& t) {
     return t ? fmt::format("{} s", *t) : std::string("—");
   };
@@ -51,11 +64,17 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
 }
 
 int run(const RunArgs& args) {
+  io::OutputSet outputs;
+  if (args.mission.hull != "default") outputs.add_input(args.mission.hull, "hull");
+  outputs.add_output(args.trace_path, "trace");
+  outputs.add_output(args.html_path, "html");
+  outputs.check();
   const auto export_request = resolve_export(args.output, "--export");
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
-  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;
@@ -64,13 +83,16 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
+  options.failures = spec.failures;
   const sim::MissionResult result =
       planners::run_mission(hull, instance, spec.params, *planner, options);
   if (tracing) {
     const auto trace = recorder->finish(result);
-    if (!args.trace_path.empty()) io::write_file_atomic(args.trace_path, trace.dump() + "\n");
-    if (!args.html_path.empty()) write_viewer_html(trace, args.html_path);
+    if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
+    if (!args.html_path.empty()) outputs.write(args.html_path, io::viewer_html(trace));
+    // The export commits its own files (all or none); the trace and HTML follow it.
     if (export_request) write_export(trace, *export_request, {args.mission.hull});
+    outputs.commit();
   }
   if (args.json) {
     std::cout << io::result_json(spec, result).dump() << "\n";

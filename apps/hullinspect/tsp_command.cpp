@@ -11,6 +11,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/tsp_json.hpp"
 #include "hullinspect/tsp/segment_tsp.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -76,6 +77,7 @@ void add_tsp_command(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   cmd->add_option("--time-limit", args->time_limit,
                   "Seconds before exact/dfj-iterative return their best tour unproven (0 = none)")
+      ->check(real_in(0, 1e9))
       ->capture_default_str();
   cmd->add_option("--option,-O", args->options,
                   "Any other solver option as key=value (repeatable; listed below)");

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/io/viewer_html.hpp"
 #include "mission_options.hpp"
@@ -22,14 +23,16 @@ struct ViewArgs {
 };
 
 int view(const ViewArgs& args) {
-  const auto trace = io::read_trace(args.trace_path);
   std::filesystem::path out = args.out_path;
   if (out.empty()) out = std::filesystem::path(args.trace_path).replace_extension(".html");
-  if (out == std::filesystem::path(args.trace_path)) {
-    throw InputError(out.string(), 0, "the output would overwrite the trace; choose --out FILE");
-  }
+  io::OutputSet outputs;
+  outputs.add_input(args.trace_path, "trace");
+  outputs.add_output(out, "out");
+  outputs.check();
+  const auto trace = io::read_trace(args.trace_path);
   const std::string html = io::viewer_html(trace);
-  io::write_file_atomic(out, html);
+  outputs.write(out, html);
+  outputs.commit();
   std::cout << fmt::format("wrote {} ({:.1f} MB, {} steps): open it in a web browser\n",
                            out.string(), static_cast<double>(html.size()) / 1e6,
                            trace["result"]["steps"].get<long>());
@@ -37,10 +40,6 @@ int view(const ViewArgs& args) {
 }
 
 }  // namespace
-
-void write_viewer_html(const nlohmann::json& trace, const std::string& path) {
-  io::write_file_atomic(path, io::viewer_html(trace));
-}
 
 void add_view_command(CLI::App& app, CommandAction& action) {
   auto args = std::make_shared<ViewArgs>();

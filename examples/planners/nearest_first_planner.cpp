@@ -35,7 +35,7 @@ class NearestFirstPlanner final : public planners::Planner {
     for (std::size_t k = 0; k < actions.size(); ++k) {
       const sim::UavState& uav = view.uavs[k];
       targets_[k] = {-1, -1};
-      if (!uav.active || uav.in_transit()) {
+      if (uav.failed || uav.in_transit()) {
         actions[k] = sim::Action::kHover;
       } else if (uav.z == 2) {
         actions[k] = sim::Action::kChangePlane;  // inspect everything from close up

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 
 namespace hullinspect {
 
@@ -17,34 +18,22 @@ int OptionReader::get_int(const std::string& key, int fallback, int min, int max
   known_.push_back(key);
   auto it = options_.find(key);
   if (it == options_.end()) return fallback;
-  int value = 0;
-  const auto& s = it->second;
-  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (ec != std::errc() || end != s.data() + s.size() || value < min || value > max) {
-    throw ParameterError(owner_ + "." + key,
-                         fmt::format("must be an integer in [{}, {}] (got '{}')", min, max, s));
+  try {
+    return parse_integer<int>(it->second, min, max);
+  } catch (const NumberError& e) {
+    throw ParameterError(owner_ + "." + key, e.what());
   }
-  return value;
 }
 
 double OptionReader::get_double(const std::string& key, double fallback, double min, double max) {
   known_.push_back(key);
   auto it = options_.find(key);
   if (it == options_.end()) return fallback;
-  const auto& s = it->second;
-  double value = 0;
-  std::size_t used = 0;
-  bool ok = true;
   try {
-    value = std::stod(s, &used);
-  } catch (const std::exception&) {
-    ok = false;
+    return parse_real(it->second, min, max);
+  } catch (const NumberError& e) {
+    throw ParameterError(owner_ + "." + key, e.what());
   }
-  if (!ok || used != s.size() || !std::isfinite(value) || value < min || value > max) {
-    throw ParameterError(owner_ + "." + key,
-                         fmt::format("must be a number in [{}, {}] (got '{}')", min, max, s));
-  }
-  return value;
 }
 
 bool OptionReader::get_bool(const std::string& key, bool fallback) {
@@ -54,7 +43,8 @@ bool OptionReader::get_bool(const std::string& key, bool fallback) {
   const auto& s = it->second;
   if (s == "true" || s == "1" || s == "on" || s == "yes") return true;
   if (s == "false" || s == "0" || s == "off" || s == "no") return false;
-  throw ParameterError(owner_ + "." + key, fmt::format("must be true or false (got '{}')", s));
+  throw ParameterError(owner_ + "." + key,
+                       fmt::format("must be true or false (got '{}')", escape_for_message(s)));
 }
 
 std::string OptionReader::get_string(const std::string& key, const std::string& fallback) {

@@ -1,5 +1,7 @@
 #include "hullinspect/core/parameters.hpp"
 
+#include "hullinspect/core/numbers.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -39,33 +41,30 @@ std::string describe_params(const std::vector<ParamSpec>& specs, std::string_vie
   return out;
 }
 
+// Both go through the shared number parser (core/numbers.hpp): exact integers, finite reals.
 long long parse_int_param(const std::string& owner_key, const std::string& text, long long min,
                           long long max) {
-  long long value = 0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || value < min || value > max) {
-    throw ParameterError(owner_key,
-                         fmt::format("must be an integer in [{}, {}] (got '{}')", min, max, text));
+  try {
+    return parse_integer<long long>(text, min, max);
+  } catch (const NumberError& e) {
+    throw ParameterError(owner_key, e.what());
   }
-  return value;
 }
 
 double parse_double_param(const std::string& owner_key, const std::string& text, double min,
                           double max) {
-  double value = 0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
-      value < min || value > max) {
-    throw ParameterError(owner_key,
-                         fmt::format("must be a number in [{}, {}] (got '{}')", min, max, text));
+  try {
+    return parse_real(text, min, max);
+  } catch (const NumberError& e) {
+    throw ParameterError(owner_key, e.what());
   }
-  return value;
 }
 
 bool parse_bool_param(const std::string& owner_key, const std::string& text) {
   if (text == "true" || text == "1" || text == "on" || text == "yes") return true;
   if (text == "false" || text == "0" || text == "off" || text == "no") return false;
-  throw ParameterError(owner_key, fmt::format("must be true or false (got '{}')", text));
+  throw ParameterError(owner_key,
+                       fmt::format("must be true or false (got '{}')", escape_for_message(text)));
 }
 
 std::string param_text(double value) {

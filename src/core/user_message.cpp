@@ -10,6 +10,8 @@ std::string option_name(const std::string& parameter) {
   for (char& c : name) {
     if (c == '_') c = '-';
   }
+  // The library checks a list of start cells ("starts"); each is one --start on the command line.
+  if (name == "starts") return "--start";
   return "--" + name;
 }
 

@@ -10,6 +10,8 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
 
 namespace hullinspect::experiment {
@@ -29,6 +31,80 @@ std::shared_ptr<const world::HullMask> rectangle(int width, int height) {
                                                  fmt::format("rectangle {}x{}", width, height));
 }
 
+std::filesystem::path resolved(const std::string& path, const std::filesystem::path& base_dir) {
+  std::filesystem::path p(path);
+  return p.is_relative() ? base_dir / p : p;
+}
+
+/// `hull: {mesh: FILE, side: …, cell-size: …, scale: …, axes: …, waterline: …, min-coverage: …,
+/// keep-largest: …}` (docs/hulls.md): the mesh imported with those options.
+void read_mesh_hull(const YamlFields& f, const YAML::Node& h, const std::filesystem::path& base_dir,
+                    ExperimentConfig& c) {
+  f.expect_map(
+      h, "hull",
+      {"mesh", "side", "cell-size", "scale", "axes", "waterline", "min-coverage", "keep-largest"});
+  if (!h["mesh"]) f.fail(h, "hull", "a hull map needs 'mesh' (a mesh file or dtc)");
+  const std::string mesh = f.as_string(h["mesh"], "hull.mesh");
+  const bool named = world::is_named_mesh_hull(mesh);
+  if (!named && !world::is_mesh_path(mesh)) {
+    f.fail(h["mesh"], "hull.mesh",
+           "expected a mesh file (.stl, .obj, .ply, optionally .gz) or dtc");
+  }
+  // A named hull starts from its own options; the keys given override them.
+  world::MeshImportOptions o = named ? world::dtc_options() : world::MeshImportOptions{};
+  try {
+    if (h["side"]) o.side = world::parse_hull_side(f.as_string(h["side"], "hull.side"));
+    if (h["axes"]) o.axes = world::AxisMap::parse(f.as_string(h["axes"], "hull.axes"));
+  } catch (const ParameterError& e) {
+    f.fail(h[e.name()], "hull." + e.name(), e.problem());
+  }
+  if (h["cell-size"]) o.cell_size = f.as_number(h["cell-size"], "hull.cell-size", 1e-6, 1e6);
+  if (h["scale"]) o.scale = f.as_number(h["scale"], "hull.scale", 1e-12, 1e12);
+  if (h["waterline"]) o.waterline = f.as_number(h["waterline"], "hull.waterline", -1e9, 1e9);
+  if (h["min-coverage"]) {
+    o.min_coverage = f.as_number(h["min-coverage"], "hull.min-coverage", 1e-9, 1);
+  }
+  if (h["keep-largest"]) {
+    const std::string v = f.as_string(h["keep-largest"], "hull.keep-largest");
+    if (v != "true" && v != "false") {
+      f.fail(h["keep-largest"], "hull.keep-largest", "expected true or false");
+    }
+    o.keep_largest = v == "true";
+  }
+  c.hull_spec = fmt::format(
+      "mesh:{} side={} cell-size={} scale={} axes={} waterline={} min-coverage={} "
+      "keep-largest={}",
+      mesh, world::to_string(o.side), o.cell_size, o.scale, o.axes.to_string(),
+      o.waterline ? fmt::format("{}", *o.waterline) : std::string("none"), o.min_coverage,
+      o.keep_largest);
+  try {
+    c.hull = std::make_shared<const world::HullMask>(
+        named ? world::import_named_mesh_hull(mesh, o).hull
+              : world::import_mesh_file(resolved(mesh, base_dir), o).hull);
+  } catch (const InputError& e) {
+    f.fail(h["mesh"], "hull.mesh", e.what());
+  }
+}
+
+void read_user_maps(const YamlFields& f, const YAML::Node& root,
+                    const std::filesystem::path& base_dir, ExperimentConfig& c) {
+  const auto path = [&](const char* key) {
+    return root[key] ? resolved(f.as_string(root[key], key), base_dir).string() : std::string();
+  };
+  c.prior_path = path("prior");
+  c.truth_path = path("truth");
+  try {
+    c.maps.prior = world::load_user_maps(c.prior_path, "", *c.hull).prior;
+  } catch (const InputError& e) {
+    f.fail(root["prior"], "prior", e.what());
+  }
+  try {
+    c.maps.truth = world::load_user_maps("", c.truth_path, *c.hull).truth;
+  } catch (const InputError& e) {
+    f.fail(root["truth"], "truth", e.what());
+  }
+}
+
 void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
                ExperimentConfig& c) {
   int width = 0;
@@ -42,9 +118,15 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
     c.lines["grid.height"] = g["height"] ? YamlFields::line(g["height"]) : YamlFields::line(g);
   }
   const YAML::Node h = root["hull"];
-  if (h) c.hull_spec = f.as_string(h, "hull");
   const int hull_line = h ? YamlFields::line(h) : 0;
-  if (c.hull_spec == "rectangle") {
+  if (h && h.IsMap()) {
+    read_mesh_hull(f, h, base_dir, c);
+  } else if (h) {
+    c.hull_spec = f.as_string(h, "hull");
+  }
+  if (c.hull) {
+    // A mesh hull map, loaded above.
+  } else if (c.hull_spec == "rectangle") {
     if (width == 0 || height == 0) {
       f.fail_at(hull_line, "hull", "'rectangle' needs grid.width and grid.height");
     }
@@ -70,7 +152,10 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
                 fmt::format("is {} but the hull mask is {} high", height, c.hull->height()));
     }
   }
-  c.hull_hash = stable_id(world::to_text_mask(*c.hull));
+  // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
+  c.hull_hash =
+      stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
+  if (c.hull->geometry()) c.cell_size = c.hull->geometry()->cell_size;
   c.hull_width = c.hull->width();
   c.hull_height = c.hull->height();
   c.hull_cells = c.hull->cell_count();
@@ -120,8 +205,9 @@ std::vector<AlgorithmSpec> read_algorithms(const YamlFields& f, const YAML::Node
     if (spec.label.empty()) spec.label = spec.planner;
     for (const auto& other : out) {
       if (other.label == spec.label) {
-        f.fail(a, key, fmt::format("label '{}' is used twice (give each entry its own 'label')",
-                                   spec.label));
+        f.fail(
+            a, key,
+            fmt::format("label '{}' is used twice (give each entry its own 'label')", spec.label));
       }
     }
     out.push_back(std::move(spec));
@@ -137,7 +223,8 @@ void read_instances(const YamlFields& f, const YAML::Node& root, ExperimentConfi
     std::set<std::uint64_t> seen;
     for (std::size_t i = 0; i < n.size(); ++i) {
       const std::uint64_t seed = f.as_seed(n[i], "instances");
-      if (!seen.insert(seed).second) f.fail(n[i], "instances", fmt::format("lists seed {} twice", seed));
+      if (!seen.insert(seed).second)
+        f.fail(n[i], "instances", fmt::format("lists seed {} twice", seed));
       c.seeds.push_back(seed);
     }
     if (c.seeds.empty()) f.fail(n, "instances", "must not be an empty list");
@@ -184,13 +271,15 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   f.expect_map(root, "",
                {"name", "description", "hull", "grid", "scenarios", "sweeps", "s1", "s2", "theta",
-                "uavs", "start_z", "algorithms", "instances", "first_seed", "time_limit", "curve"});
+                "uavs", "start_z", "algorithms", "instances", "first_seed", "time_limit", "curve",
+                "prior", "truth"});
   for (const char* key : {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull"}) {
     remember_line(c, root, key);
   }
   if (root["name"]) c.name = f.as_label(root["name"], "name");
   if (root["description"]) c.description = f.as_string(root["description"], "description");
   read_hull(f, root, base_dir, c);
+  read_user_maps(f, root, base_dir, c);
   c.scenarios = detail::parse_scenarios(f, root["scenarios"], root["sweeps"], c.hull->width());
   if (root["s1"]) c.s1 = f.as_int(root["s1"], "s1", 1, kMaxSide);
   if (root["s2"]) c.s2 = int_list(f, root["s2"], "s2", 1, kMaxSide, c);
@@ -209,15 +298,19 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
     if (curve["step"]) c.curve.step = f.as_int(curve["step"], "curve.step", 1, 1000000000);
     if (curve["end"]) c.curve.end = f.as_int(curve["end"], "curve.end", 0, 1000000000);
     if (c.curve.end / c.curve.step + 1 > kMaxCurvePoints) {
-      f.fail(curve, "curve", fmt::format("gives {} sample times; at most {} are accepted",
-                                         c.curve.end / c.curve.step + 1, kMaxCurvePoints));
+      f.fail(curve, "curve",
+             fmt::format("gives {} sample times; at most {} are accepted",
+                         c.curve.end / c.curve.step + 1, kMaxCurvePoints));
     }
   }
   return c;
 }
 
+// An experiment config larger than this is refused before it is read whole.
+constexpr std::size_t kMaxConfigBytes = std::size_t{16} << 20;
+
 ExperimentConfig load_config(const std::filesystem::path& path) {
-  const std::string text = io::read_file(path);
+  const std::string text = io::read_file(path, kMaxConfigBytes);
   return parse_config(text, path.string(), path.parent_path());
 }
 
@@ -258,18 +351,27 @@ nlohmann::json config_json(const ExperimentConfig& c) {
                {"cells", c.hull_cells},
                {"hash", c.hull_hash}};
   j["cell_size"] = c.cell_size;
+  // Only when given, so configs without user maps keep their fingerprints.
+  if (!c.prior_path.empty()) j["prior"] = c.prior_path;
+  if (!c.truth_path.empty()) j["truth"] = c.truth_path;
   json scenarios = json::array();
   for (const auto& s : c.scenarios) {
     json zones = json::array();
     for (const auto& z : s.corrosion.zones) {
       zones.push_back({{"x_begin", z.x_begin}, {"x_end", z.x_end}, {"p_c", z.p_c}, {"l_c", z.l_c}});
     }
-    scenarios.push_back({{"name", s.name},
-                         {"sweep", s.sweep},
-                         {"sweep_value", s.sweep_value},
-                         {"zones", zones},
-                         {"p_tp", s.corrosion.p_tp},
-                         {"p_fp", s.corrosion.p_fp}});
+    json scenario = {{"name", s.name},
+                     {"sweep", s.sweep},
+                     {"sweep_value", s.sweep_value},
+                     {"zones", zones},
+                     {"p_tp", s.corrosion.p_tp},
+                     {"p_fp", s.corrosion.p_fp}};
+    if (!s.failures.empty()) {
+      json at = json::array();
+      for (const auto& f : s.failures.at) at.push_back({f.uav, f.time});
+      scenario["failures"] = {{"at", at}, {"rate", s.failures.rate}, {"one_within", s.failures.one_within}};
+    }
+    scenarios.push_back(std::move(scenario));
   }
   j["scenarios"] = scenarios;
   j["s1"] = c.s1;
@@ -301,6 +403,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     c.hull_cells = h.at("cells").get<int>();
     c.hull_hash = h.at("hash").get<std::string>();
     c.cell_size = j.at("cell_size").get<double>();
+    if (j.contains("prior")) c.prior_path = j.at("prior").get<std::string>();
+    if (j.contains("truth")) c.truth_path = j.at("truth").get<std::string>();
     for (const auto& s : j.at("scenarios")) {
       ScenarioSpec spec;
       spec.name = s.at("name").get<std::string>();
@@ -312,6 +416,12 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       }
       spec.corrosion.p_tp = s.at("p_tp").get<double>();
       spec.corrosion.p_fp = s.at("p_fp").get<double>();
+      if (s.contains("failures")) {
+        const auto& f = s.at("failures");
+        for (const auto& a : f.at("at")) spec.failures.at.push_back({a.at(0).get<int>(), a.at(1).get<int>()});
+        spec.failures.rate = f.at("rate").get<double>();
+        spec.failures.one_within = f.at("one_within").get<int>();
+      }
       c.scenarios.push_back(std::move(spec));
     }
     c.s1 = j.at("s1").get<int>();

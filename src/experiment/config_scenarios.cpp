@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "hullinspect/core/errors.hpp"
 #include "hullinspect/world/scenario.hpp"
 
 namespace hullinspect::experiment::detail {
@@ -56,12 +57,12 @@ class ScenarioParser {
     if (node.IsScalar()) {
       const std::string name = f_.as_label(node, key);
       Draft d = builtin(node, key, name);
-      add(node, key, ScenarioSpec{name, "", "", d.corrosion, YamlFields::line(node)}, d);
+      add(node, key, ScenarioSpec{name, "", "", d.corrosion, {}, YamlFields::line(node)}, d);
       return;
     }
     f_.expect_map(node, key,
                   {"name", "base", "zones", "p_c", "l_c", "back_p_c", "back_l_c", "front_p_c",
-                   "front_l_c", "p_tp", "p_fp"});
+                   "front_l_c", "p_tp", "p_fp", "failures"});
     if (!node["name"]) f_.fail(node, key, "a custom scenario needs a 'name'");
     const std::string name = f_.as_label(node["name"], key + ".name");
     Draft d = node["base"] ? base(node["base"], key + ".base") : builtin(node, key, "perfect");
@@ -90,7 +91,9 @@ class ScenarioParser {
     if (node["p_tp"]) d.corrosion.p_tp = f_.as_number(node["p_tp"], key + ".p_tp", 0, 1);
     if (node["p_fp"]) d.corrosion.p_fp = f_.as_number(node["p_fp"], key + ".p_fp", 0, 1);
     d.normalise();
-    add(node, key, ScenarioSpec{name, "", "", d.corrosion, YamlFields::line(node)}, d);
+    ScenarioSpec spec{name, "", "", d.corrosion, {}, YamlFields::line(node)};
+    if (node["failures"]) spec.failures = failures(node["failures"], key + ".failures");
+    add(node, key, std::move(spec), d);
   }
 
   void sweep(const YAML::Node& node, const std::string& key) {
@@ -147,7 +150,7 @@ class ScenarioParser {
       d.normalise();
       const std::string scenario_name = fmt::format("{}={}", name, text);
       if (auto problem = label_problem(scenario_name); !problem.empty()) f_.fail(v, path, problem);
-      add(v, path, ScenarioSpec{scenario_name, name, text, d.corrosion, YamlFields::line(v)}, d);
+      add(v, path, ScenarioSpec{scenario_name, name, text, d.corrosion, {}, YamlFields::line(v)}, d);
     }
   }
 
@@ -186,6 +189,28 @@ class ScenarioParser {
     for (auto& z : d.corrosion.zones) {
       if (z.x_begin >= from && z.x_end <= to) z.l_c = l;
     }
+  }
+
+  /// failures: {at: [UAV@STEP, …], rate: P, one_within: H} (docs/beyond.md).
+  world::FailurePlan failures(const YAML::Node& node, const std::string& key) const {
+    f_.expect_map(node, key, {"at", "rate", "one_within"});
+    world::FailurePlan plan;
+    if (node["at"]) {
+      const auto items = f_.as_list(node["at"], key + ".at");
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        const std::string path = fmt::format("{}.at[{}]", key, i);
+        try {
+          plan.at.push_back(world::parse_uav_failure(f_.as_string(items[i], path)));
+        } catch (const ParameterError& e) {
+          f_.fail(items[i], path, e.problem());
+        }
+      }
+    }
+    if (node["rate"]) plan.rate = f_.as_number(node["rate"], key + ".rate", 0, 1);
+    if (node["one_within"]) {
+      plan.one_within = f_.as_int(node["one_within"], key + ".one_within", 0, 1 << 30);
+    }
+    return plan;
   }
 
   int odd(const YAML::Node& v, const std::string& key) const {
@@ -259,7 +284,7 @@ std::vector<ScenarioSpec> parse_scenarios(const YamlFields& fields, const YAML::
   }
   auto specs = parser.take();
   if (specs.empty()) {
-    specs.push_back(ScenarioSpec{"perfect", "", "", world::scenario("perfect").corrosion(grid_width), 0});
+    specs.push_back(ScenarioSpec{"perfect", "", "", world::scenario("perfect").corrosion(grid_width), {}, 0});
   }
   return specs;
 }

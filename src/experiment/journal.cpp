@@ -10,14 +10,21 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 
 namespace hullinspect::experiment {
+
+namespace {
+constexpr std::size_t kMaxJournalBytes = std::size_t{16} << 30;
+}  // namespace
 
 JournalRows read_journal(const std::filesystem::path& path, const std::vector<std::string>& header) {
   JournalRows rows;
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return rows;
-  const std::string text = io::read_file(path);
+  // Result journals are hullinspect's own files and grow with the experiment: a generous limit
+  // that only stops a device or a runaway file.
+  const std::string text = io::read_file(path, kMaxJournalBytes);
   const std::string source = path.string();
   std::size_t start = 0;
   int line_number = 0;

@@ -10,6 +10,8 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/build_data.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/io/json_document.hpp"
 #include "hullinspect/version.hpp"
 
 namespace hullinspect::experiment {
@@ -23,7 +25,9 @@ std::string utc_now() {
   return text;
 }
 
-int host_cores() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+int host_cores() {
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
 
 std::string host_name() {
   char name[256] = {};
@@ -51,11 +55,8 @@ nlohmann::json read_manifest(const std::filesystem::path& dir) {
   if (!std::filesystem::exists(path, ec)) {
     throw InputError(path.string(), 0, "not found (is this a hullinspect experiment directory?)");
   }
-  try {
-    return nlohmann::json::parse(io::read_file(path));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path.string(), 0, fmt::format("is not valid JSON: {}", e.what()));
-  }
+  return io::parse_json_document(io::read_file(path, std::size_t{64} << 20), path.string(),
+                                 "a JSON manifest");
 }
 
 void write_manifest(const std::filesystem::path& dir, const nlohmann::json& manifest) {

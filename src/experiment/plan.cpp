@@ -17,16 +17,20 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
   const auto& a = c.algorithms[static_cast<std::size_t>(cell.algorithm)];
   std::string zones;
   for (const auto& z : s.corrosion.zones) {
-    zones += fmt::format("{}{}:{}:{}:{}", zones.empty() ? "" : ";", z.x_begin, z.x_end, z.p_c, z.l_c);
+    zones +=
+        fmt::format("{}{}:{}:{}:{}", zones.empty() ? "" : ";", z.x_begin, z.x_end, z.p_c, z.l_c);
   }
   std::string options;
-  for (const auto& [k, v] : a.options) options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
+  for (const auto& [k, v] : a.options)
+    options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
   return fmt::format(
       "hullinspect-run/1|hull={}|cell_size={}|scenario={}|zones={}|p_tp={}|p_fp={}|s1={}|s2={}|"
       "theta={}|uavs={}|start_z={}|time_limit={}|algorithm={}|planner={}|options={}",
       c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp, c.s1,
       c.s2[static_cast<std::size_t>(cell.s2)], c.theta, c.uavs[static_cast<std::size_t>(cell.uavs)],
-      c.start_z, c.time_limit, a.label, a.planner, options);
+      c.start_z, c.time_limit, a.label, a.planner, options) +
+         // Only scenarios with failures say so, so that every other run keeps its id.
+         (s.failures.empty() ? std::string() : "|failures=" + s.failures.text());
 }
 
 }  // namespace
@@ -61,7 +65,8 @@ ExperimentPlan::ExperimentPlan(ExperimentConfig config) : config_(std::move(conf
     for (int si = 0; si < static_cast<int>(c.seeds.size()); ++si) {
       const std::uint64_t seed = c.seeds[static_cast<std::size_t>(si)];
       RunKey run{ci, si, seed,
-                 stable_id(fmt::format("{}|seed={}", cells_[static_cast<std::size_t>(ci)].canonical, seed))};
+                 stable_id(fmt::format("{}|seed={}", cells_[static_cast<std::size_t>(ci)].canonical,
+                                       seed))};
       if (!position_.emplace(run.id, static_cast<int>(runs_.size())).second) {
         throw LogicError(fmt::format("run id {} is not unique (hash collision)", run.id));
       }
@@ -93,7 +98,9 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.start_z = c.start_z;
   spec.params.time_limit = c.time_limit;
   spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
+  spec.failures = c.scenarios[static_cast<std::size_t>(cell.scenario)].failures;
   spec.seed = seed;
+  spec.maps = c.maps;
   return spec;
 }
 
@@ -112,7 +119,8 @@ void ExperimentPlan::validate_cell(const Cell& cell) const {
     } else if (name == "p_c" || name == "l_c" || name == "p_tp" || name == "p_fp" ||
                name == "zones") {
       line = config_.scenarios[static_cast<std::size_t>(cell.scenario)].line;
-    } else if (name == "algorithm" || name.find('.') != std::string::npos) {
+    } else if (name == "algorithm" || name == "partitioner" ||
+               name.find('.') != std::string::npos) {
       line = config_.algorithms[static_cast<std::size_t>(cell.algorithm)].line;
     } else {
       line = config_.line_of(name);

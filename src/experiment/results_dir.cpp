@@ -7,6 +7,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/journal.hpp"
+#include "hullinspect/experiment/run_row_check.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 
 namespace hullinspect::experiment {
@@ -15,7 +16,8 @@ namespace {
 
 std::unordered_map<std::string, std::string> by_id(const std::filesystem::path& file,
                                                    const JournalRows& rows,
-                                                   const ExperimentPlan& plan) {
+                                                   const ExperimentPlan& plan,
+                                                   bool check_runs_rows = false) {
   std::unordered_map<std::string, std::string> out;
   int line = 1;
   for (const auto& l : rows.lines) {
@@ -26,6 +28,12 @@ std::unordered_map<std::string, std::string> by_id(const std::filesystem::path& 
                        fmt::format("run {} is not part of this experiment (the directory holds "
                                    "another experiment's results)",
                                    id));
+    }
+    if (check_runs_rows) {
+      const int position = plan.run_position(id);
+      const auto problem =
+          run_row_problem(plan, plan.runs()[static_cast<std::size_t>(position)], l);
+      if (!problem.empty()) throw InputError(file.string(), line, problem);
     }
     auto [it, inserted] = out.emplace(id, l);
     if (!inserted && it->second != l) {
@@ -52,7 +60,7 @@ StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPl
       stored.notes.push_back(fmt::format("{}: dropped a torn last line", name.string()));
     }
   }
-  const auto run_lines = by_id(runs_path, runs, plan);
+  const auto run_lines = by_id(runs_path, runs, plan, true);
   auto sample_lines = by_id(samples_path, samples, plan);
   auto timing_lines = by_id(timings_path, timings, plan);
   int unfinished = 0;
@@ -73,9 +81,8 @@ StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPl
     if (!run_lines.contains(entry.first)) ++unfinished;
   }
   if (unfinished > 0) {
-    stored.notes.push_back(
-        fmt::format("{}: ignored {} row(s) of runs that had not finished writing", dir.string(),
-                    unfinished));
+    stored.notes.push_back(fmt::format(
+        "{}: ignored {} row(s) of runs that had not finished writing", dir.string(), unfinished));
   }
   return stored;
 }
@@ -83,7 +90,8 @@ StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPl
 OrderedLines canonical_lines(const ExperimentPlan& plan, const StoredRuns& stored) {
   std::vector<std::pair<int, const RunRecord*>> order;
   order.reserve(stored.records.size());
-  for (const auto& [id, record] : stored.records) order.emplace_back(plan.run_position(id), &record);
+  for (const auto& [id, record] : stored.records)
+    order.emplace_back(plan.run_position(id), &record);
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   OrderedLines lines;

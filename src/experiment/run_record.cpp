@@ -2,13 +2,17 @@
 
 #include <fmt/format.h>
 
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/experiment/csv.hpp"
+#include "hullinspect/experiment/run_row_check.hpp"
 
 namespace hullinspect::experiment {
 
 namespace {
 
-std::string optional_time(const std::optional<int>& t) { return t ? std::to_string(*t) : ""; }
+std::string optional_time(const std::optional<int>& t) {
+  return t ? std::to_string(*t) : "";
+}
 
 template <class T>
 std::string joined(const std::vector<world::CorrosionZone>& zones, T field) {
@@ -40,7 +44,9 @@ std::vector<std::string> runs_header() {
           "steps_z1",     "steps_z2",
           "steps_transit", "tsp_solves",
           "tsp_unproven", "tsp_fallbacks",
-          "replans",      "assignments"};
+          "replans",      "assignments",
+          "failures",     "failed_uavs",
+          "bound_T_c",    "bound_T_m"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -61,38 +67,102 @@ int value_at(const std::vector<int>& series, int t) {
   return series[i];
 }
 
-RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::MissionResult& r,
-                      double wall_seconds) {
+std::vector<std::string> run_parameter_fields(const ExperimentPlan& plan, const RunKey& run) {
   const auto& c = plan.config();
   const Cell& cell = plan.cells()[static_cast<std::size_t>(run.cell)];
   const auto& s = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   const auto& a = c.algorithms[static_cast<std::size_t>(cell.algorithm)];
   const auto& zones = s.corrosion.zones;
   std::string options;
-  for (const auto& [k, v] : a.options) options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
+  for (const auto& [k, v] : a.options)
+    options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
   std::string bounds = zones.empty() ? "" : std::to_string(zones.front().x_begin);
   for (const auto& z : zones) bounds += fmt::format("/{}", z.x_end);
+  return {run.id,
+          cell.id,
+          s.name,
+          s.sweep,
+          s.sweep_value,
+          a.label,
+          a.planner,
+          options,
+          c.hull_spec,
+          fmt::format("{}", c.cell_size),
+          std::to_string(c.s1),
+          std::to_string(c.s2[static_cast<std::size_t>(cell.s2)]),
+          fmt::format("{}", c.theta),
+          std::to_string(c.uavs[static_cast<std::size_t>(cell.uavs)]),
+          std::to_string(c.start_z),
+          std::to_string(c.time_limit),
+          joined(zones, [](const world::CorrosionZone& z) { return fmt::format("{}", z.p_c); }),
+          joined(zones, [](const world::CorrosionZone& z) { return std::to_string(z.l_c); }),
+          bounds,
+          fmt::format("{}", s.corrosion.p_tp),
+          fmt::format("{}", s.corrosion.p_fp),
+          std::to_string(run.seed)};
+}
+
+static std::string failures_field(const ExperimentPlan& plan, const RunKey& run) {
+  const auto& c = plan.config();
+  const Cell& cell = plan.cells()[static_cast<std::size_t>(run.cell)];
+  return c.scenarios[static_cast<std::size_t>(cell.scenario)].failures.text();
+}
+
+std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::string_view line) {
+  const auto fields = split_csv_line(line);
+  const auto header = runs_header();
+  if (!fields || fields->size() != header.size()) return "malformed row";
+  const auto expected = run_parameter_fields(plan, run);
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    if ((*fields)[k] != expected[k]) {
+      return fmt::format("{} is '{}' but run {} of this experiment has '{}'", header[k],
+                         escape_for_message((*fields)[k]), run.id, escape_for_message(expected[k]));
+    }
+  }
+  for (std::size_t k = expected.size(); k < header.size(); ++k) {
+    const std::string& v = (*fields)[k];
+    if (header[k] == "failures") {
+      // A parameter, though it comes after the results: the scenario's failure model.
+      const auto expected_failures = failures_field(plan, run);
+      if (v != expected_failures) {
+        return fmt::format("failures is '{}' but run {} of this experiment has '{}'",
+                           escape_for_message(v), run.id, escape_for_message(expected_failures));
+      }
+      continue;
+    }
+    const bool optional = header[k] == "T_c" || header[k] == "T_m";
+    if (optional && v.empty()) continue;
+    try {
+      (void)parse_integer<long long>(v, 0, header[k] == "complete" ? 1 : kMaxStoredCount);
+    } catch (const NumberError& e) {
+      return fmt::format("{} {}", header[k], e.what());
+    }
+  }
+  return {};
+}
+
+RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::MissionResult& r,
+                      double wall_seconds) {
+  const auto& c = plan.config();
   const auto total = r.totals();
 
   RunRecord record;
-  record.runs = csv_line({
-      run.id, cell.id, s.name, s.sweep, s.sweep_value, a.label, a.planner, options, c.hull_spec,
-      fmt::format("{}", c.cell_size), std::to_string(c.s1),
-      std::to_string(c.s2[static_cast<std::size_t>(cell.s2)]), fmt::format("{}", c.theta),
-      std::to_string(c.uavs[static_cast<std::size_t>(cell.uavs)]), std::to_string(c.start_z),
-      std::to_string(c.time_limit),
-      joined(zones, [](const world::CorrosionZone& z) { return fmt::format("{}", z.p_c); }),
-      joined(zones, [](const world::CorrosionZone& z) { return std::to_string(z.l_c); }), bounds,
-      fmt::format("{}", s.corrosion.p_tp), fmt::format("{}", s.corrosion.p_fp),
-      std::to_string(run.seed), r.complete ? "1" : "0", optional_time(r.t_c), optional_time(r.t_m),
-      std::to_string(r.steps), std::to_string(r.hull_cells), std::to_string(r.corroded_cells),
-      std::to_string(r.detections), std::to_string(r.observations),
-      std::to_string(r.redundant_observations), std::to_string(total.moves),
-      std::to_string(total.hovers), std::to_string(total.plane_changes),
-      std::to_string(total.steps_z1), std::to_string(total.steps_z2),
-      std::to_string(total.steps_transit), std::to_string(r.planner.tsp_solves),
-      std::to_string(r.planner.tsp_unproven), std::to_string(r.planner.tsp_fallbacks),
-      std::to_string(r.planner.replans), std::to_string(r.planner.assignments)});
+  auto fields = run_parameter_fields(plan, run);
+  for (std::string value :
+       {std::string(r.complete ? "1" : "0"), optional_time(r.t_c), optional_time(r.t_m),
+        std::to_string(r.steps), std::to_string(r.hull_cells), std::to_string(r.corroded_cells),
+        std::to_string(r.detections), std::to_string(r.observations),
+        std::to_string(r.redundant_observations), std::to_string(total.moves),
+        std::to_string(total.hovers), std::to_string(total.plane_changes),
+        std::to_string(total.steps_z1), std::to_string(total.steps_z2),
+        std::to_string(total.steps_transit), std::to_string(r.planner.tsp_solves),
+        std::to_string(r.planner.tsp_unproven), std::to_string(r.planner.tsp_fallbacks),
+        std::to_string(r.planner.replans), std::to_string(r.planner.assignments),
+        failures_field(plan, run), std::to_string(r.failed_uavs), std::to_string(r.bound_t_c),
+        std::to_string(r.bound_t_m)}) {
+    fields.push_back(std::move(value));
+  }
+  record.runs = csv_line(fields);
 
   const auto times = c.curve.times();
   std::string samples = run.id;

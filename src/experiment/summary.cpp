@@ -92,9 +92,11 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
   const int c_complete = runs.column("complete", source);
   const int c_tc = runs.column("T_c", source);
   const int c_tm = runs.column("T_m", source);
+  const int c_btc = runs.find_column("bound_T_c");
+  const int c_btm = runs.find_column("bound_T_m");
 
   std::vector<SummaryRow> rows;
-  std::vector<std::vector<double>> tc, tm;
+  std::vector<std::vector<double>> tc, tm, btc, btm;
   std::map<std::tuple<std::string, int, int, std::string>, std::size_t> index;
   int line = 1;
   for (const auto& r : runs.rows) {
@@ -115,16 +117,22 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
       rows.push_back(row);
       tc.emplace_back();
       tm.emplace_back();
+      btc.emplace_back();
+      btm.emplace_back();
     }
     SummaryRow& row = rows[it->second];
     ++row.runs;
     if (at(c_complete) != "1") ++row.incomplete;
     if (!at(c_tc).empty()) tc[it->second].push_back(parse_int(at(c_tc), source, line));
     if (!at(c_tm).empty()) tm[it->second].push_back(parse_int(at(c_tm), source, line));
+    if (c_btc >= 0 && !at(c_btc).empty()) btc[it->second].push_back(parse_int(at(c_btc), source, line));
+    if (c_btm >= 0 && !at(c_btm).empty()) btm[it->second].push_back(parse_int(at(c_btm), source, line));
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     rows[i].t_c = stats(tc[i]);
     rows[i].t_m = stats(tm[i]);
+    rows[i].bound_t_c = stats(btc[i]);
+    rows[i].bound_t_m = stats(btm[i]);
   }
   return rows;
 }
@@ -132,7 +140,7 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
 std::string summary_csv(const std::vector<SummaryRow>& rows) {
   std::string out = csv_line({"scenario", "sweep", "sweep_value", "s2", "uavs", "algorithm", "runs",
                               "incomplete", "T_c_count", "T_c_mean", "T_c_std", "T_m_count",
-                              "T_m_mean", "T_m_std"}) +
+                              "T_m_mean", "T_m_std", "bound_T_c_mean", "bound_T_m_mean"}) +
                     "\n";
   auto number = [](const TimeStats& t, double v) {
     return t.count == 0 ? std::string() : fmt::format("{:.3f}", v);
@@ -143,7 +151,8 @@ std::string summary_csv(const std::vector<SummaryRow>& rows) {
                      std::to_string(r.incomplete), std::to_string(r.t_c.count),
                      number(r.t_c, r.t_c.mean), number(r.t_c, r.t_c.std),
                      std::to_string(r.t_m.count), number(r.t_m, r.t_m.mean),
-                     number(r.t_m, r.t_m.std)}) +
+                     number(r.t_m, r.t_m.std), number(r.bound_t_c, r.bound_t_c.mean),
+                     number(r.bound_t_m, r.bound_t_m.mean)}) +
            "\n";
   }
   return out;
@@ -184,6 +193,9 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
       if (is_sweep) header.push_back(group);
       header.insert(header.end(), {"s2", "n"});
       header.insert(header.end(), algorithms.begin(), algorithms.end());
+      bool any_bound = false;
+      for (const auto& [key, r] : cell) any_bound = any_bound || r->bound_t_c.count > 0;
+      if (any_bound) header.push_back("lower bound");
       t.push_back(header);
       for (const auto& p : params) {
         std::vector<std::string> line;
@@ -199,6 +211,18 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
           const SummaryRow& r = *it->second;
           std::string text = mean_std(mission ? r.t_m : r.t_c);
           if (r.incomplete > 0) text += fmt::format(" [{} incomplete]", r.incomplete);
+          line.push_back(text);
+        }
+        if (any_bound) {
+          // The bound depends on the instance only: every algorithm's rows hold the same seeds.
+          std::string text;
+          for (const auto& a : algorithms) {
+            auto it = cell.find({p, a});
+            if (it == cell.end()) continue;
+            const TimeStats& b = mission ? it->second->bound_t_m : it->second->bound_t_c;
+            if (b.count > 0) text = fmt::format("{:.1f}", b.mean);
+            break;
+          }
           line.push_back(text);
         }
         t.push_back(line);

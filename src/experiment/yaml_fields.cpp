@@ -4,9 +4,11 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 
 namespace hullinspect::experiment::detail {
 
@@ -19,7 +21,7 @@ std::string join(std::initializer_list<std::string_view> names) {
 }
 
 std::string shown(const YAML::Node& node) {
-  if (node.IsScalar()) return fmt::format("'{}'", node.Scalar());
+  if (node.IsScalar()) return fmt::format("'{}'", escape_for_message(node.Scalar()));
   if (node.IsSequence()) return "a list";
   if (node.IsMap()) return "a map";
   return "nothing";
@@ -32,7 +34,8 @@ int YamlFields::line(const YAML::Node& node) {
   return mark.line >= 0 ? mark.line + 1 : 0;
 }
 
-void YamlFields::fail(const YAML::Node& node, std::string_view key, std::string_view problem) const {
+void YamlFields::fail(const YAML::Node& node, std::string_view key,
+                      std::string_view problem) const {
   fail_at(line(node), key, problem);
 }
 
@@ -48,7 +51,7 @@ void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
   std::set<std::string> seen;
   for (const auto& entry : node) {
     const YAML::Node& k = entry.first;
-    const std::string name = k.IsScalar() ? k.Scalar() : std::string("?");
+    const std::string name = k.IsScalar() ? escape_for_message(k.Scalar()) : std::string("?");
     const std::string path = key.empty() ? name : fmt::format("{}.{}", key, name);
     bool ok = false;
     for (auto n : known) ok = ok || n == name;
@@ -59,13 +62,12 @@ void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
 
 int YamlFields::as_int(const YAML::Node& node, std::string_view key, int min, int max) const {
   long long value = 0;
-  bool ok = node.IsScalar();
-  if (ok) {
-    const std::string& s = node.Scalar();
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-    ok = ec == std::errc() && end == s.data() + s.size();
+  try {
+    if (!node.IsScalar()) throw NumberError("not a scalar");
+    value = parse_integer<long long>(node.Scalar());
+  } catch (const NumberError&) {
+    fail(node, key, fmt::format("must be an integer (got {})", shown(node)));
   }
-  if (!ok) fail(node, key, fmt::format("must be an integer (got {})", shown(node)));
   if (value < min || value > max) {
     fail(node, key, fmt::format("must be an integer in [{}, {}] (got {})", min, max, value));
   }
@@ -73,31 +75,28 @@ int YamlFields::as_int(const YAML::Node& node, std::string_view key, int min, in
 }
 
 std::uint64_t YamlFields::as_seed(const YAML::Node& node, std::string_view key) const {
-  std::uint64_t value = 0;
-  bool ok = node.IsScalar() && !node.Scalar().empty() && node.Scalar()[0] != '-';
-  if (ok) {
-    const std::string& s = node.Scalar();
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-    ok = ec == std::errc() && end == s.data() + s.size();
+  try {
+    if (!node.IsScalar()) throw NumberError("not a scalar");
+    return parse_integer<std::uint64_t>(node.Scalar());
+  } catch (const NumberError&) {
+    fail(node, key,
+         fmt::format("must be a non-negative integer seed below 2^64 (got {})", shown(node)));
   }
-  if (!ok) {
-    fail(node, key, fmt::format("must be a non-negative integer seed below 2^64 (got {})", shown(node)));
-  }
-  return value;
 }
 
 double YamlFields::as_number(const YAML::Node& node, std::string_view key, double min,
                              double max) const {
   double value = 0;
-  bool ok = node.IsScalar();
-  if (ok) {
-    const std::string& s = node.Scalar();
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-    ok = ec == std::errc() && end == s.data() + s.size() && std::isfinite(value);
+  try {
+    if (!node.IsScalar()) throw NumberError("not a scalar");
+    value = parse_real(node.Scalar(), -std::numeric_limits<double>::max(),
+                       std::numeric_limits<double>::max());
+  } catch (const NumberError&) {
+    fail(node, key, fmt::format("must be a number (got {})", shown(node)));
   }
-  if (!ok) fail(node, key, fmt::format("must be a number (got {})", shown(node)));
   if (value < min || value > max) {
-    fail(node, key, fmt::format("must be a number in [{}, {}] (got {})", min, max, node.Scalar()));
+    fail(node, key, fmt::format("must be a number in [{}, {}] (got {})", min, max,
+                                escape_for_message(node.Scalar())));
   }
   return value;
 }
@@ -130,9 +129,10 @@ std::string label_problem(std::string_view label) {
   if (label.empty()) return "must not be empty";
   for (char c : label) {
     if (c == ',' || c == '"' || c == '\n' || c == '\r') {
-      return fmt::format("'{}' must not contain commas, quotes or line breaks (it names a CSV "
-                         "value)",
-                         label);
+      return fmt::format(
+          "'{}' must not contain commas, quotes or line breaks (it names a CSV "
+          "value)",
+          escape_for_message(label));
     }
   }
   return {};

@@ -1,31 +1,50 @@
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "hullinspect/core/errors.hpp"
 
 namespace hullinspect::io {
 
+namespace {
+
+// Writes all of `content` to `fd`, retrying short writes; false on any error (errno set).
+bool write_all(int fd, std::string_view content) {
+  while (!content.empty()) {
+    const ssize_t n = ::write(fd, content.data(), content.size());
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    content.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+}  // namespace
+
 void write_file_atomic(const std::filesystem::path& path, std::string_view content) {
   const std::filesystem::path tmp =
       path.string() + fmt::format(".tmp-{}", static_cast<long>(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path.string(), 0, fmt::format("cannot write: {}", std::strerror(errno)));
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(tmp, ignored);
-      throw InputError(path.string(), 0, "write failed (disk full?)");
-    }
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0)
+    throw InputError(path.string(), 0, fmt::format("cannot write: {}", std::strerror(errno)));
+  const bool written = write_all(fd, content);
+  const int write_errno = errno;
+  const bool closed = ::close(fd) == 0;
+  if (!written || !closed) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw InputError(path.string(), 0,
+                     fmt::format("write failed: {}", std::strerror(written ? errno : write_errno)));
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
@@ -36,12 +55,47 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   }
 }
 
+std::string read_file(const std::filesystem::path& path, std::size_t limit, const char* what) {
+  const std::string name = path.string();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    if (errno == ENOENT) throw InputError(name, 0, fmt::format("cannot open {}", what));
+    throw InputError(name, 0, fmt::format("cannot open {}: {}", what, std::strerror(errno)));
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
+    ::close(fd);
+    throw InputError(name, 0, "is a directory, expected a file");
+  }
+  std::string bytes;
+  if (S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) > limit) {
+    ::close(fd);
+    throw InputError(name, 0,
+                     fmt::format("is larger than the {} MiB limit for this input", limit >> 20));
+  }
+  char buffer[65536];
+  while (true) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      ::close(fd);
+      throw InputError(name, 0, fmt::format("cannot read: {}", std::strerror(err)));
+    }
+    if (n == 0) break;
+    if (bytes.size() + static_cast<std::size_t>(n) > limit) {
+      ::close(fd);
+      throw InputError(name, 0,
+                       fmt::format("is larger than the {} MiB limit for this input", limit >> 20));
+    }
+    bytes.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return bytes;
+}
+
 std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), 0, "cannot open the file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  return read_file(path, kDefaultInputLimit);
 }
 
 }  // namespace hullinspect::io

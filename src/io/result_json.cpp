@@ -31,6 +31,10 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   j["tsp_fallbacks"] = r.planner.tsp_fallbacks;
   j["replans"] = r.planner.replans;
   j["assignments"] = r.planner.assignments;
+  j["failed_uavs"] = r.failed_uavs;
+  json failed_at = json::array();
+  for (const auto& u : r.uavs) failed_at.push_back(u.failed_at >= 0 ? json(u.failed_at) : json(nullptr));
+  j["failed_at"] = std::move(failed_at);
   return j;
 }
 
@@ -53,6 +57,10 @@ json spec_json(const planners::MissionSpec& spec, const std::string& hull_source
   j["zones"] = std::move(zones);
   j["p_tp"] = spec.corrosion.p_tp;
   j["p_fp"] = spec.corrosion.p_fp;
+  if (!spec.failures.empty()) j["failures"] = spec.failures.text();
+  // The user's maps, when they replaced the generated ones (the trace's prior/truth are theirs).
+  if (spec.maps.prior) j["prior_file"] = spec.maps.prior->source;
+  if (spec.maps.truth) j["truth_file"] = spec.maps.truth->source;
   return j;
 }
 

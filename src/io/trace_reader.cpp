@@ -12,6 +12,8 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/io/json_document.hpp"
 
 namespace hullinspect::io {
 
@@ -39,6 +41,11 @@ class TraceChecker {
   std::int64_t integer(const json& v, const std::string& where, std::int64_t lo,
                        std::int64_t hi) const {
     if (!v.is_number_integer()) fail(where, "expected an integer");
+    if (v.is_number_unsigned() &&
+        v.get<std::uint64_t>() >
+            static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+      fail(where, fmt::format("{} is outside [{}, {}]", v.dump(), lo, hi));
+    }
     const auto i = v.get<std::int64_t>();
     if (i < lo || i > hi) fail(where, fmt::format("{} is outside [{}, {}]", i, lo, hi));
     return i;
@@ -177,12 +184,6 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
 // "[json.exception.parse_error.101] parse error at line 3, column 1: syntax error …" → the part
 // after the location, on one line.
-std::string parse_problem(const json::parse_error& e) {
-  std::string what = e.what();
-  if (auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
-  std::replace(what.begin(), what.end(), '\n', ' ');
-  return what;
-}
 
 }  // namespace
 
@@ -278,17 +279,12 @@ void validate_trace(const json& trace, const std::string& source) {
   }
 }
 
+// A trace file larger than this is refused before it is read whole.
+constexpr std::size_t kMaxTraceBytes = std::size_t{1} << 30;
+
 json read_trace(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
-  json trace;
-  try {
-    trace = json::parse(text);
-  } catch (const json::parse_error& e) {
-    const auto end = std::min(static_cast<std::size_t>(e.byte), text.size());
-    const int line = 1 + static_cast<int>(std::count(
-                             text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
-    throw InputError(path.string(), line, "not a JSON trace: " + parse_problem(e));
-  }
+  const std::string text = read_file(path, kMaxTraceBytes);
+  const json trace = parse_json_document(text, path.string(), "a JSON trace");
   validate_trace(trace, path.string());
   return trace;
 }

@@ -36,7 +36,7 @@ json uav_states(const sim::Simulator& sim) {
     u.push_back(s.pos.y);
     u.push_back(s.z);
     u.push_back(s.transit_left);
-    u.push_back(s.active ? 1 : 0);
+    u.push_back(s.failed ? 0 : 1);
   }
   return u;
 }

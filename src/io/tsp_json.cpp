@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/io/json_document.hpp"
 
 namespace hullinspect::io {
 
@@ -38,25 +41,15 @@ grid::Cell parse_cell(const json& value, const std::string& where, const std::st
 }  // namespace
 
 tsp::SegmentTsp parse_tsp_instance(std::string_view text, const std::string& source) {
-  json document;
-  try {
-    document = json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::string message = e.what();
-    // Drop nlohmann's "[json.exception.parse_error.101] " prefix; keep its line and column.
-    if (auto close = message.find("] ");
-        message.starts_with("[json.exception") && close != std::string::npos) {
-      message = message.substr(close + 2);
-    }
-    throw InputError(source, 0, "not valid JSON: " + message);
-  }
+  const json document = parse_json_document(text, source, "valid JSON");
   if (!document.is_object()) {
     throw InputError(source, 0, R"(expected a JSON object {"start": [x, y], "segments": [...]})");
   }
   for (const auto& [key, value] : document.items()) {
     if (key != "start" && key != "segments") {
       throw InputError(source, 0,
-                       fmt::format(R"(unknown key "{}" (expected "start" and "segments"))", key));
+                       fmt::format(R"(unknown key "{}" (expected "start" and "segments"))",
+                                   escape_for_message(key)));
     }
   }
   if (!document.contains("start")) throw InputError(source, 0, R"(missing "start": [x, y])");
@@ -82,8 +75,11 @@ tsp::SegmentTsp parse_tsp_instance(std::string_view text, const std::string& sou
   return problem;
 }
 
+// An instance file larger than this is refused before it is read whole.
+constexpr std::size_t kMaxTspInstanceBytes = std::size_t{64} << 20;
+
 tsp::SegmentTsp read_tsp_instance(const std::filesystem::path& path) {
-  return parse_tsp_instance(read_file(path), path.string());
+  return parse_tsp_instance(read_file(path, kMaxTspInstanceBytes), path.string());
 }
 
 nlohmann::ordered_json tsp_instance_json(const tsp::SegmentTsp& problem) {

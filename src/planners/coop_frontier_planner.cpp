@@ -158,7 +158,7 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
     const sim::UavState& u = view.uavs[k];
     UavPlan& plan = uavs_[k];
     const int id = static_cast<int>(k);
-    if (!u.active) {
+    if (u.failed) {
       if (plan.mode != Mode::kFailed) claims_.release_all(id);
       plan = {Mode::kFailed, {-1, -1}, false};
       continue;
@@ -212,7 +212,7 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
   for (std::size_t k = 0; k < view.uavs.size(); ++k) {
     const sim::UavState& u = view.uavs[k];
     const UavPlan& plan = uavs_[k];
-    if (plan.mode == Mode::kExplore && plan.has_target() && u.active && !u.in_transit() &&
+    if (plan.mode == Mode::kExplore && plan.has_target() && !u.failed && !u.in_transit() &&
         u.z == 2) {
       actions[k] = sim::step_towards(u.pos, plan.target);
     }

@@ -51,9 +51,18 @@ void LawnmowerPlanner::decide(const sim::PlannerView& view, std::span<sim::Actio
   last_.assign(view.uavs.begin(), view.uavs.end());
   for (std::size_t k = 0; k < view.uavs.size(); ++k) {
     const sim::UavState& u = view.uavs[k];
-    if (!u.active || u.in_transit()) continue;
+    if (u.failed || u.in_transit()) continue;
     actions[k] = u.z == 2 ? sim::Action::kChangePlane : followers_[k].next_action(u.pos);
   }
+}
+
+bool LawnmowerPlanner::idle(const sim::PlannerView& view) const {
+  for (std::size_t k = 0; k < view.uavs.size(); ++k) {
+    const sim::UavState& u = view.uavs[k];
+    if (u.failed) continue;
+    if (u.in_transit() || u.z != 1 || !followers_[k].finished(u.pos)) return false;
+  }
+  return true;
 }
 
 void LawnmowerPlanner::annotate(AnnotationSink& sink) const {

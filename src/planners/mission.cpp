@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "hullinspect/sim/lower_bound.hpp"
+
 namespace hullinspect::planners {
 
 namespace {
@@ -22,18 +24,27 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
                                const MissionOptions& options) {
   world::validate(params, hull);
   sim::Simulator sim(hull, instance, params);
-  for (const auto& f : options.failures) sim.fail_uav_at(f.uav, f.time);
+  world::validate(options.failures, params.uavs);
+  if (!options.failures.empty()) {
+    const auto times =
+        world::failure_times(options.failures, params.uavs, instance.seed, params.time_limit);
+    for (int k = 0; k < params.uavs; ++k) {
+      if (times[static_cast<std::size_t>(k)] >= 0) sim.fail_uav_at(k, times[static_cast<std::size_t>(k)]);
+    }
+  }
 
   DirectPartitionSource direct;
   const auto starts = world::start_cells(params, hull);
   PlannerContext context{hull, params, instance.prior, starts,
                          options.partitions ? *options.partitions : direct};
+  if (planner.sees_truth()) context.truth = &instance.truth;
   double planner_seconds = 0;
   auto t0 = Clock::now();
   planner.start(context);
   planner_seconds += seconds_since(t0);
   for (auto* o : options.observers) o->on_start(sim, planner);
 
+  bool stopped_idle = false;
   std::vector<sim::Action> actions(static_cast<std::size_t>(params.uavs), sim::Action::kHover);
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
@@ -42,8 +53,18 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
     planner_seconds += seconds_since(t0);
     sim.step(actions);
     for (auto* o : options.observers) o->on_step(sim, planner);
+    // A planner whose working UAVs have nothing left to do will only hover: when the hull is not
+    // complete (e.g. a failed UAV's region under Part-TSP), the mission cannot complete.
+    if (!sim.finished() && planner.idle(sim.view())) {
+      stopped_idle = true;
+      break;
+    }
   }
   sim::MissionResult result = sim.result();
+  result.stopped_idle = stopped_idle;
+  const sim::LowerBound bound = sim::lower_bound(hull, instance.truth, params);
+  result.bound_t_c = bound.t_c;
+  result.bound_t_m = bound.t_m;
   result.planner_seconds = planner_seconds;
   result.planner = planner.stats();
   return result;

@@ -1,19 +1,44 @@
 #include "hullinspect/planners/mission_spec.hpp"
 
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/partition/partitioner.hpp"
+#include "hullinspect/world/mission_params.hpp"
+
 namespace hullinspect::planners {
 
 void validate(const MissionSpec& spec, const world::HullMask& hull) {
   world::validate(spec.params, hull);
   world::validate(spec.corrosion, hull);
+  world::validate(spec.failures, spec.params.uavs);
   make_planner(spec.algorithm, spec.planner_options);
+  // A stripes partition is not 4-connected on some non-convex hulls. It depends only on the hull,
+  // the starts and n, so find that out here (before an experiment's first mission), not mid-run.
+  if (auto it = spec.planner_options.find("partitioner");
+      it != spec.planner_options.end() && it->second == "stripes") {
+    partition::PartitionRequest request;
+    request.hull = &hull;
+    request.starts = world::start_cells(spec.params, hull);
+    try {
+      (void)partition::make_partitioner("stripes")->partition(request);
+    } catch (const ParameterError&) {
+      throw;
+    } catch (const LogicError&) {
+      throw;
+    } catch (const Error& e) {
+      throw ParameterError("partitioner", e.what());
+    }
+  }
 }
 
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const MissionOptions& options) {
   validate(spec, hull);
-  const auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
   auto planner = make_planner(spec.algorithm, spec.planner_options);
-  return run_mission(hull, instance, spec.params, *planner, options);
+  MissionOptions with_failures = options;
+  if (with_failures.failures.empty()) with_failures.failures = spec.failures;
+  return run_mission(hull, instance, spec.params, *planner, with_failures);
 }
 
 }  // namespace hullinspect::planners

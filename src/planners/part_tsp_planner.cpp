@@ -38,7 +38,9 @@ void PartTspPlanner::start(const PlannerContext& context) {
   request.seed = options_.partition_seed;
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
-  maps_ = std::make_unique<LocalMaps>(partition_->owner, context.prior, options_.use_prior, n,
+  if (options_.oracle && !context.truth) throw LogicError("oracle-part-tsp started without the truth");
+  const auto& prior = options_.oracle ? *context.truth : context.prior;
+  maps_ = std::make_unique<LocalMaps>(partition_->owner, prior, options_.use_prior || options_.oracle, n,
                                       context.params.s1, context.params.s2);
   uavs_.assign(static_cast<std::size_t>(n), UavState{});
   stats_ = {};
@@ -58,7 +60,7 @@ void PartTspPlanner::decide(const sim::PlannerView& view, std::span<sim::Action>
 
 sim::Action PartTspPlanner::decide_uav(int k, const sim::UavState& u, int time) {
   UavState& p = uavs_[static_cast<std::size_t>(k)];
-  if (!u.active) {
+  if (u.failed) {
     p.mode = kModeFailed;
     p.path.clear();
     return sim::Action::kHover;
@@ -140,6 +142,13 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   }
   p.path.assign(segments_, ends_, order_);
   p.path.advance(pos);
+}
+
+bool PartTspPlanner::idle(const sim::PlannerView& view) const {
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    if (!view.uavs[k].failed && uavs_[k].mode != part_tsp::kModeDone) return false;
+  }
+  return true;
 }
 
 void PartTspPlanner::annotate(AnnotationSink& sink) const {

@@ -5,6 +5,7 @@
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/lawnmower_planner.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
+#include "hullinspect/planners/sweep_inspect_planner.hpp"
 #include "hullinspect/planners/planner.hpp"
 
 namespace hullinspect::planners {
@@ -34,10 +35,12 @@ Params<LawnmowerOptions> lawnmower_params() {
   return p;
 }
 
-Params<PartTspOptions> part_tsp_params(bool use_prior) {
+Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
   PartTspOptions defaults;
   defaults.use_prior = use_prior;
-  Params<PartTspOptions> p(use_prior ? "part-tsp" : "part-tsp0", defaults);
+  defaults.oracle = oracle;
+  Params<PartTspOptions> p(oracle ? "oracle-part-tsp" : use_prior ? "part-tsp" : "part-tsp0",
+                           defaults);
   p.integer("r1", &PartTspOptions::r1, 0, 1 << 20,
             "steps since the last detection before descending")
       .integer("r2", &PartTspOptions::r2, 0, 1 << 20,
@@ -61,6 +64,30 @@ Params<PartTspOptions> part_tsp_params(bool use_prior) {
       .nested(
           "partitioner", &PartTspOptions::partitioner_options,
           [](const PartTspOptions& o, const OptionMap& m) {
+            return partition::resolve_partitioner_options(o.partitioner, m);
+          },
+          "option <key> of the partitioner (e.g. partitioner.iteration-limit=4000 for darp)");
+  return p;}
+
+Params<SweepInspectOptions> sweep_inspect_params() {
+  Params<SweepInspectOptions> p("sweep-inspect");
+  p.choice("partitioner", &SweepInspectOptions::partitioner, partitioner_names,
+           "partitioner by name")
+      .integer("partition-seed", &SweepInspectOptions::partition_seed, 0, kMaxPartitionSeed,
+               "seed of the partitioner")
+      .flag("help", &SweepInspectOptions::help,
+            "after its sweep a UAV takes work anywhere (false: only its own region's)")
+      .flag("inspect-on-the-way", &SweepInspectOptions::inspect_on_the_way,
+            "descend when a detection is abreast (false: inspect only after the sweep)")
+      .number("radius-factor", &SweepInspectOptions::radius_factor, 0.0, 1e3,
+              "inspect detections within radius-factor * s2 of the descent point")
+      .flag("prior-weights", &SweepInspectOptions::prior_weights,
+            "DARP weighted by the expected work per cell (prior-aware)")
+      .flag("prior-first", &SweepInspectOptions::prior_first,
+            "first inspect the prior's cells of the region at z = 1, then sweep")
+      .nested(
+          "partitioner", &SweepInspectOptions::partitioner_options,
+          [](const SweepInspectOptions& o, const OptionMap& m) {
             return partition::resolve_partitioner_options(o.partitioner, m);
           },
           "option <key> of the partitioner (e.g. partitioner.iteration-limit=4000 for darp)");
@@ -104,6 +131,19 @@ void add_builtins(PlannerRegistry& r) {
       "close-up inspection of detections (docs/coop-frontier.md)",
       coop_frontier_params(),
       [](const CoopFrontierOptions& o) { return std::make_unique<CoopFrontierPlanner>(o); }));
+  r.add_builtin(make_entry<Planner, SweepInspectOptions>(
+      "sweep-inspect",
+      "beyond the paper: sweep the region at z = 2 in strips of s2 rows, inspect detections as "
+      "they come abreast, then help with the nearest unclaimed work anywhere (docs/beyond.md)",
+      sweep_inspect_params(),
+      [](const SweepInspectOptions& o) { return std::make_unique<SweepInspectPlanner>(o); }));
+  r.add_builtin(make_entry<Planner, PartTspOptions>(
+      "oracle-part-tsp",
+      "BOUND, not a planner: Part-TSP whose local maps start from the ground truth C instead of "
+      "the prior (sees the truth; docs/beyond.md)",
+      part_tsp_params(true, true),
+      [](const PartTspOptions& o) { return std::make_unique<PartTspPlanner>(o); },
+      /*sees_truth=*/true));
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
   const auto starts = world::start_cells(params, hull);
   uavs_.resize(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) {
-    uavs_[static_cast<std::size_t>(k)] = UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, true};
+    uavs_[static_cast<std::size_t>(k)] = UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, false};
   }
   fail_time_.assign(static_cast<std::size_t>(n), -1);
   applied_.assign(static_cast<std::size_t>(n), Action::kHover);
@@ -45,8 +45,10 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
 }
 
 void Simulator::fail_uav_at(int uav, int from_time) {
-  fail_time_.at(static_cast<std::size_t>(uav)) = from_time;
-  if (from_time <= time_) uavs_[static_cast<std::size_t>(uav)].active = false;
+  if (uav < 0 || uav >= static_cast<int>(uavs_.size())) {
+    throw LogicError(fmt::format("fail_uav_at: no UAV {} in a fleet of {}", uav, uavs_.size()));
+  }
+  fail_time_[static_cast<std::size_t>(uav)] = from_time;
 }
 
 void Simulator::step(std::span<const Action> actions) {
@@ -57,9 +59,13 @@ void Simulator::step(std::span<const Action> actions) {
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     UavState& u = uavs_[k];
     UavCounters& count = result_.uavs[k];
-    if (fail_time_[k] >= 0 && time_ >= fail_time_[k]) u.active = false;
+    if (!u.failed && fail_time_[k] >= 0 && time_ >= fail_time_[k]) {
+      u.failed = true;
+      result_.uavs[k].failed_at = time_;
+      ++failed_;
+    }
     applied_[k] = Action::kHover;
-    if (!u.active) continue;
+    if (u.failed) continue;
     if (u.in_transit()) {
       ++count.steps_transit;
       if (--u.transit_left == 0) u.z = 3 - u.z;
@@ -102,7 +108,7 @@ void Simulator::sense_all() {
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     log_.begin_[k] = static_cast<int>(log_.readings_.size());
     const UavState& u = uavs_[k];
-    if (u.active && !u.in_transit()) sense(static_cast<int>(k));
+    if (!u.failed && !u.in_transit()) sense(static_cast<int>(k));
   }
   log_.begin_[uavs_.size()] = static_cast<int>(log_.readings_.size());
 }
@@ -175,6 +181,7 @@ MissionResult Simulator::result() const {
   MissionResult r = result_;
   r.steps = time_;
   r.complete = complete();
+  r.failed_uavs = failed_;
   return r;
 }
 

@@ -7,13 +7,23 @@
 #include <sstream>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/world/cell_map.hpp"
+#include "hullinspect/world/mesh_hull.hpp"
 
 namespace hullinspect::world {
 
 namespace detail {
 extern const std::string_view kDefaultHullText;
 }
+
+namespace {
+// A hull file larger than this is refused before it is read whole (a 4096 × 4096 P5 image with
+// 16-bit pixels is 32 MiB; a text mask 16 MiB plus comments).
+constexpr std::size_t kMaxHullFileBytes = std::size_t{64} << 20;
+}  // namespace
 
 HullMask::HullMask(grid::Grid<std::uint8_t> is_hull, std::string source)
     : mask_(std::move(is_hull)), source_(std::move(source)) {
@@ -43,13 +53,13 @@ HullMask::HullMask(grid::Grid<std::uint8_t> is_hull, std::string source)
     }
     std::string parts;
     for (std::size_t k = 0; k < sizes.size() && k < 5; ++k) {
-      parts += fmt::format("{}{} cells from ({}, {})", k ? "; " : "", sizes[k], first[k].x,
-                           first[k].y);
+      parts +=
+          fmt::format("{}{} cells from ({}, {})", k ? "; " : "", sizes[k], first[k].x, first[k].y);
     }
     if (sizes.size() > 5) parts += "; …";
-    throw InputError(source_, 0,
-                     fmt::format("the hull is not 4-connected: {} components ({})", components,
-                                 parts));
+    throw InputError(
+        source_, 0,
+        fmt::format("the hull is not 4-connected: {} components ({})", components, parts));
   }
 }
 
@@ -67,7 +77,7 @@ grid::Cell HullMask::snap(grid::Cell c) const {
   return best;
 }
 
-HullMask parse_text_mask(std::string_view text, const std::string& source) {
+grid::Grid<std::uint8_t> parse_text_cells(std::string_view text, const std::string& source) {
   std::vector<std::string> rows;
   std::vector<int> row_lines;
   int line_no = 0;
@@ -89,7 +99,7 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
         throw InputError(source, line_no,
                          fmt::format("unexpected character '{}' in column {}; a text mask uses 'X' "
                                      "or '#' (hull) and '.' (not hull)",
-                                     ch, col + 1));
+                                     escape_for_message(std::string_view(&line[col], 1)), col + 1));
       }
     }
     if (!rows.empty() && line.size() != rows.front().size()) {
@@ -98,9 +108,9 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
                                    rows.front().size()));
     }
     if (line.size() > static_cast<std::size_t>(kMaxGridSide)) {
-      throw InputError(source, line_no,
-                       fmt::format("row has {} cells; at most {} are accepted", line.size(),
-                                   kMaxGridSide));
+      throw InputError(
+          source, line_no,
+          fmt::format("row has {} cells; at most {} are accepted", line.size(), kMaxGridSide));
     }
     rows.push_back(std::move(line));
     row_lines.push_back(line_no);
@@ -117,7 +127,11 @@ HullMask parse_text_mask(std::string_view text, const std::string& source) {
     const int y = height - 1 - r;  // first text row is the top of the hull
     for (int x = 0; x < width; ++x) mask(x, y) = rows[static_cast<std::size_t>(r)][x] != '.';
   }
-  return HullMask(std::move(mask), source);
+  return mask;
+}
+
+HullMask parse_text_mask(std::string_view text, const std::string& source) {
+  return HullMask(parse_text_cells(text, source), source);
 }
 
 namespace {
@@ -173,9 +187,11 @@ class PgmHeaderReader {
 
 }  // namespace
 
-HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
+grid::Grid<std::uint8_t> parse_pgm_cells(std::string_view bytes, const std::string& source) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '5')) {
-    throw InputError(source, 1, "not a PGM image (expected magic 'P2' or 'P5')");
+    throw InputError(source, 1,
+                     fmt::format("not a greyscale PGM image (magic '{}'; expected 'P2' or 'P5')",
+                                 escape_for_message(bytes.substr(0, 2))));
   }
   const bool binary = bytes[1] == '5';
   PgmHeaderReader reader(bytes, source);
@@ -220,7 +236,25 @@ HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
       mask(x, y) = 2 * v > maxval;
     }
   }
-  return HullMask(std::move(mask), source);
+  return mask;
+}
+
+HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
+  return HullMask(parse_pgm_cells(bytes, source), source);
+}
+
+grid::Grid<std::uint8_t> load_cell_map(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name, 0, "cannot open the file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  const std::string bytes = buffer.str();
+  if (bytes.size() > 64u * 1024 * 1024) throw InputError(name, 0, "file is larger than 64 MiB");
+  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
+    return parse_pgm_cells(bytes, name);
+  }
+  return parse_text_cells(bytes, name);
 }
 
 const HullMask& default_hull() {
@@ -231,15 +265,12 @@ const HullMask& default_hull() {
 HullMask load_hull(const std::filesystem::path& path) {
   if (path == "default" || path == "builtin:default") return default_hull();
   const std::string name = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(name, 0, "cannot open the hull file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string bytes = buffer.str();
-  if (bytes.size() > 64u * 1024 * 1024) throw InputError(name, 0, "file is larger than 64 MiB");
-  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
+  if (is_named_mesh_hull(name) || is_mesh_path(path)) return load_any_hull(path);
+  const std::string bytes = io::read_file(path, kMaxHullFileBytes, "the hull file");
+  if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '0' && bytes[1] <= '9') {
     return parse_pgm_mask(bytes, name);
   }
+  if (path.extension() == ".json") return parse_hull_json(bytes, name);
   return parse_text_mask(bytes, name);
 }
 

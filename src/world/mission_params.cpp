@@ -2,12 +2,20 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/grid/distance.hpp"
 
 namespace hullinspect::world {
+
+namespace {
+// The longest plane change (steps between z = 1 and z = 2) validate() accepts.
+constexpr int kMaxPlaneChangeSteps = 1000;
+}  // namespace
 
 double MissionParams::delta_zeta_cells() const {
   return (s2 - s1) / (2.0 * std::tan(theta_deg * std::numbers::pi / 360.0));
@@ -15,8 +23,11 @@ double MissionParams::delta_zeta_cells() const {
 
 int MissionParams::plane_change_steps() const {
   // tan(45°) is not exactly 1 in floating point; without the tolerance Δζ = 1 would need 2 steps.
-  const double steps = delta_zeta_cells() / plane_speed_cells;
-  return std::max(1, static_cast<int>(std::ceil(steps - 1e-9)));
+  // validate() refuses parameters whose plane change exceeds kMaxPlaneChangeSteps before this is
+  // used; the clamp keeps the conversion defined even for θ = 1e-300 (Δζ ≈ 1e300 cells).
+  const double steps = std::ceil(delta_zeta_cells() / plane_speed_cells - 1e-9);
+  if (!(steps < kMaxPlaneChangeSteps + 1.0)) return kMaxPlaneChangeSteps + 1;
+  return std::max(1, static_cast<int>(steps));
 }
 
 void validate(const MissionParams& p, const HullMask& hull) {
@@ -29,43 +40,75 @@ void validate(const MissionParams& p, const HullMask& hull) {
     throw ParameterError("s1", fmt::format("must be a positive odd integer (got {})", p.s1));
   }
   if (p.s2 <= p.s1 || p.s2 % 2 == 0) {
-    throw ParameterError("s2",
-                         fmt::format("must be an odd integer greater than s1 = {} (got {})", p.s1,
-                                     p.s2));
+    throw ParameterError(
+        "s2", fmt::format("must be an odd integer greater than s1 = {} (got {})", p.s1, p.s2));
   }
   if (p.s2 > 2 * kMaxGridSide + 1) {
-    throw ParameterError("s2", fmt::format("must be at most {} (got {})", 2 * kMaxGridSide + 1, p.s2));
+    throw ParameterError("s2",
+                         fmt::format("must be at most {} (got {})", 2 * kMaxGridSide + 1, p.s2));
   }
   if (!(p.theta_deg > 0.0 && p.theta_deg < 180.0)) {
-    throw ParameterError("theta",
-                         fmt::format("must be in (0, 180) degrees, exclusive (got {})", p.theta_deg));
+    throw ParameterError(
+        "theta", fmt::format("must be in (0, 180) degrees, exclusive (got {})", p.theta_deg));
   }
-  if (!(p.cell_size_m > 0.0)) {
-    throw ParameterError("cell_size", fmt::format("must be positive (got {})", p.cell_size_m));
+  if (!(p.cell_size_m > 0.0 && p.cell_size_m <= 1e6)) {
+    throw ParameterError("cell_size",
+                         fmt::format("must be in (0, 1e6] metres (got {})", p.cell_size_m));
   }
-  if (!(p.plane_speed_cells > 0.0)) {
-    throw ParameterError("plane_speed",
-                         fmt::format("must be positive cells per step (got {})", p.plane_speed_cells));
+  if (!(p.plane_speed_cells > 0.0 && p.plane_speed_cells <= 1e6)) {
+    throw ParameterError("plane_speed", fmt::format("must be in (0, 1e6] cells per step (got {})",
+                                                    p.plane_speed_cells));
   }
   if (p.start_z != 1 && p.start_z != 2) {
     throw ParameterError("start_z", fmt::format("must be 1 or 2 (got {})", p.start_z));
   }
   if (p.time_limit < 1) {
-    throw ParameterError("time_limit", fmt::format("must be at least 1 step (got {})", p.time_limit));
+    throw ParameterError("time_limit",
+                         fmt::format("must be at least 1 step (got {})", p.time_limit));
   }
-  if (p.plane_change_steps() > 1000) {
-    throw ParameterError("theta", fmt::format("gives a plane change of {} steps; at most 1000 are "
-                                              "accepted (raise theta or plane_speed)",
-                                              p.plane_change_steps()));
+  if (p.plane_change_steps() > kMaxPlaneChangeSteps) {
+    // Blame s2 when even the default aperture (90°) cannot make the change short enough.
+    MissionParams at_90 = p;
+    at_90.theta_deg = 90.0;
+    const double cells = p.delta_zeta_cells();
+    if (at_90.plane_change_steps() > kMaxPlaneChangeSteps) {
+      throw ParameterError(
+          "s2",
+          fmt::format("with s1 = {} and theta = {}° puts the planes {:.3g} cells apart, a plane "
+                      "change of more than {} steps (lower s2)",
+                      p.s1, p.theta_deg, cells, kMaxPlaneChangeSteps));
+    }
+    throw ParameterError(
+        "theta", fmt::format("{}° with s1 = {} and s2 = {} puts the planes {:.3g} cells apart, a "
+                             "plane change of more than {} steps (widen theta)",
+                             p.theta_deg, p.s1, p.s2, cells, kMaxPlaneChangeSteps));
   }
   if (!p.starts.empty() && static_cast<int>(p.starts.size()) != p.uavs) {
-    throw ParameterError("starts", fmt::format("gives {} start cells for {} UAVs",
-                                               p.starts.size(), p.uavs));
+    throw ParameterError("starts",
+                         fmt::format("gives {} start cells for {} UAVs", p.starts.size(), p.uavs));
   }
   for (const auto& c : p.starts) {
     if (!hull.mask().contains(c)) {
       throw ParameterError("starts", fmt::format("start cell ({}, {}) is outside the {} × {} grid",
                                                  c.x, c.y, hull.width(), hull.height()));
+    }
+  }
+  // Explicit starts that snap onto one hull cell: refused here, before any planning starts.
+  if (!p.starts.empty()) {
+    const auto snapped = start_cells(p, hull);
+    grid::Grid<int> first(hull.width(), hull.height(), -1);
+    for (std::size_t k = 0; k < snapped.size(); ++k) {
+      int& owner = first(snapped[k].x, snapped[k].y);
+      if (owner >= 0) {
+        const auto other = static_cast<std::size_t>(owner);
+        throw ParameterError(
+            "starts", fmt::format("UAVs {} and {} both start on cell ({}, {}) (given ({}, {}) and "
+                                  "({}, {}); cells off the hull snap to the nearest hull cell); "
+                                  "every UAV needs its own start cell",
+                                  other, k, snapped[k].x, snapped[k].y, p.starts[other].x,
+                                  p.starts[other].y, p.starts[k].x, p.starts[k].y));
+      }
+      owner = static_cast<int>(k);
     }
   }
 }
@@ -77,12 +120,40 @@ std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull
     for (const auto& c : p.starts) cells.push_back(hull.snap(c));
     return cells;
   }
-  const int a = hull.width();
-  const int b = hull.height();
+  // Spread along the hull's own extent (its bounding box, not the grid's): UAV k aims at
+  // x = x0 + floor((k + 0.5)·w/n) on the box's middle row and takes the nearest hull cell that no
+  // earlier UAV took (Manhattan distance, ties to the lowest (y, x)), so the n starts are distinct
+  // for every n up to the number of hull cells.
+  int x0 = hull.width();
+  int x1 = -1;
+  int y0 = hull.height();
+  int y1 = -1;
+  for (const int i : hull.cells()) {
+    const grid::Cell c = hull.mask().cell(i);
+    x0 = std::min(x0, c.x);
+    x1 = std::max(x1, c.x);
+    y0 = std::min(y0, c.y);
+    y1 = std::max(y1, c.y);
+  }
+  const long long w = x1 - x0 + 1;
+  grid::Grid<std::uint8_t> taken(hull.width(), hull.height(), 0);
   for (int k = 0; k < p.uavs; ++k) {
-    // floor((k + 0.5)·a/n) in integers: (2k + 1)·a / (2n)
-    const int x = static_cast<int>((2LL * k + 1) * a / (2LL * p.uavs));
-    cells.push_back(hull.snap({x, b / 2}));
+    const grid::Cell aim{x0 + static_cast<int>((2LL * k + 1) * w / (2LL * p.uavs)),
+                         y0 + (y1 - y0 + 1) / 2};
+    grid::Cell best = hull.snap(aim);
+    if (taken(best.x, best.y)) {
+      int best_d = std::numeric_limits<int>::max();
+      for (const int i : hull.cells()) {  // (y, x) order: the first strict minimum wins ties
+        const grid::Cell h = hull.mask().cell(i);
+        const int d = grid::manhattan(h, aim);
+        if (!taken[i] && d < best_d) {
+          best_d = d;
+          best = h;
+        }
+      }
+    }
+    taken(best.x, best.y) = 1;
+    cells.push_back(best);
   }
   return cells;
 }

@@ -1,9 +1,13 @@
 #include "hullinspect/world/random.hpp"
 
+#include "hullinspect/world/xoshiro.hpp"
+
 namespace hullinspect::world {
 
 namespace {
-constexpr std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+constexpr std::uint64_t rotl(std::uint64_t x, int k) {
+  return (x << k) | (x >> (64 - k));
+}
 }  // namespace
 
 std::uint64_t splitmix64(std::uint64_t& state) {
@@ -20,17 +24,19 @@ RandomStream::RandomStream(std::uint64_t seed, std::uint64_t stream) {
   for (auto& word : s_) word = splitmix64(state);
 }
 
-std::uint64_t RandomStream::next() {
-  const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
-  const std::uint64_t t = s_[1] << 17;
-  s_[2] ^= s_[0];
-  s_[3] ^= s_[1];
-  s_[1] ^= s_[2];
-  s_[0] ^= s_[3];
-  s_[2] ^= t;
-  s_[3] = rotl(s_[3], 45);
+std::uint64_t xoshiro256starstar(std::uint64_t (&s)[4]) {
+  const std::uint64_t result = rotl(s[1] * 5, 7) * 9;
+  const std::uint64_t t = s[1] << 17;
+  s[2] ^= s[0];
+  s[3] ^= s[1];
+  s[1] ^= s[2];
+  s[0] ^= s[3];
+  s[2] ^= t;
+  s[3] = rotl(s[3], 45);
   return result;
 }
+
+std::uint64_t RandomStream::next() { return xoshiro256starstar(s_); }
 
 double RandomStream::uniform01() {
   return static_cast<double>(next() >> 11) * 0x1.0p-53;

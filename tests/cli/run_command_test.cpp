@@ -61,10 +61,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--algorithm", "lawnmower", "--alpha", "0.3"},
                  "hullinspect: --alpha: unknown option (known: partitioner, partition-seed, "
                  "partitioner.<key>)"},
-        BadInput{{"--seed", "x1"}, "hullinspect: --seed: 'x1' is not a valid value (see --help)"},
+        BadInput{{"--seed", "x1"},
+                 "hullinspect: --seed: must be an integer in [0, 18446744073709551615] (got 'x1') "
+                 "(see --help)"},
         BadInput{{"--start", "3;4"}, "hullinspect: --start: expects X,Y (got '3;4')"},
         BadInput{{"--uavs", "abc"},
-                 "hullinspect: --uavs: 'abc' is not a valid value (see --help)"}));
+                 "hullinspect: --uavs: must be an integer in [-2147483648, 2147483647] (got 'abc') "
+                 "(see --help)"}));
 
 TEST(RunCommand, SummaryCountsOneUavInTheSingular) {
   const auto one = run_cli({"run", "--uavs", "1", "--seed", "2"});

@@ -167,7 +167,7 @@ TEST(Parameters, UnknownNamesSuggestTheClosest) {
   } catch (const ParameterError& e) {
     EXPECT_EQ(std::string(e.what()),
               "algorithm: unknown algorithm 'part_tsp' (did you mean part-tsp?) (known: "
-              "lawnmower, part-tsp, part-tsp0, coop-frontier)");
+              "lawnmower, part-tsp, part-tsp0, coop-frontier, sweep-inspect, oracle-part-tsp)");
   }
 }
 

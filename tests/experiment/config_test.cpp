@@ -121,7 +121,7 @@ TEST(ExperimentConfig, SweepsExpandIntoNamedScenarios) {
 }
 
 TEST(ExperimentConfig, PresetsMatchSpecSection6) {
-  EXPECT_EQ(preset_names(), (std::vector<std::string>{"fig8", "paper", "paper-quick"}));
+  EXPECT_EQ(preset_names(), (std::vector<std::string>{"beyond", "fig8", "paper", "paper-quick"}));
   const auto paper = load_preset("paper");
   ASSERT_EQ(paper.scenarios.size(), 4u);
   EXPECT_EQ(paper.scenarios[1].name, "imperfect");
@@ -197,7 +197,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
   const std::vector<BadConfig> cases = {
       {"s1: 5\ngrdi: {}\n",
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, s1, "
-       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve)"},
+       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, truth)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
@@ -235,7 +235,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       {"scenarios:\n  - {p_c: 0.1}\n", "bad.yaml:2: scenarios[0]: a custom scenario needs a 'name'"},
       {"scenarios:\n  - {name: x, colour: red}\n",
        "bad.yaml:2: scenarios[0].colour: unknown key (known: name, base, zones, p_c, l_c, back_p_c, "
-       "back_l_c, front_p_c, front_l_c, p_tp, p_fp)"},
+       "back_l_c, front_p_c, front_l_c, p_tp, p_fp, failures)"},
       {"scenarios:\n  - name: x\n    zones: [{x_begin: 0, x_end: 100, p_c: 0.1, l_c: 3}]\n",
        "bad.yaml:3: scenarios[0].zones: must cover the grid's columns 0 to 230 (they end at 100)"},
       {"scenarios:\n  - name: x\n    p_c: 0.1\n    zones: [{x_begin: 0, x_end: 230, p_c: 0.1, "
@@ -283,7 +283,7 @@ TEST(ExperimentConfig, UnknownPresetListsTheKnownOnes) {
     FAIL() << "expected an error";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.name(), "preset");
-    EXPECT_EQ(e.problem(), "unknown preset 'papr' (known: fig8, paper, paper-quick)");
+    EXPECT_EQ(e.problem(), "unknown preset 'papr' (known: beyond, fig8, paper, paper-quick)");
   }
 }
 

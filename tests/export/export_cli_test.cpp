@@ -70,7 +70,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "hullinspect: --origin: expects LAT,LON,ALT with LAT in [-90, 90] and LON in "
                   "[-180, 180] (got 95,9.9,0)"},
         BadExport{{"--origin", "1,2,3", "--heading", "x"},
-                  "hullinspect: --heading: 'x' is not a valid value (see --help)"},
+                  "hullinspect: --heading: must be a number in [-360, 360] (got 'x') (see --help)"},
         BadExport{{"--geo", "/nonexistent/geo.yaml"},
                   "hullinspect: /nonexistent/geo.yaml: cannot open the geo-reference file"},
         BadExport{

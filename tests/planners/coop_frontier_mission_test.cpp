@@ -76,7 +76,7 @@ class FailureWatcher final : public MissionObserver {
   void on_step(const sim::Simulator& sim, const Planner& planner) override {
     const auto& cf = dynamic_cast<const CoopFrontierPlanner&>(planner);
     for (int k : failed_) {
-      if (sim.uavs()[static_cast<std::size_t>(k)].active) continue;
+      if (!sim.uavs()[static_cast<std::size_t>(k)].failed) continue;
       // The planner learns of the failure at its next decision, i.e. one step later.
       if (seen_inactive_.count(k) && cf.mode(k) != Mode::kFailed) bad_ = true;
       if (seen_inactive_.count(k) && (!cf.claims().claims(k).empty() || cf.target(k))) bad_ = true;
@@ -109,7 +109,7 @@ TEST(CoopFrontierMission, OthersCompleteWhenUavsFailMidMission) {
         FailureWatcher watcher(failed);
         MissionOptions options;
         options.observers = {&checker, &watcher};
-        options.failures = failures;
+        options.failures.at = failures;
         const auto r = run_mission(hull, instance, params, planner, options);
         SCOPED_TRACE(::testing::Message() << name << " seed " << seed << " first failure UAV "
                                           << failures[0].uav << " at " << failures[0].time);
@@ -140,7 +140,7 @@ TEST(CoopFrontierMission, FailureWhileInspectingReleasesTheClaims) {
   testing::MissionChecker checker;
   MissionOptions options;
   options.observers = {&checker};
-  options.failures = {{0, 1}};
+  options.failures.at = {{0, 1}};
   const auto r = run_mission(hull, instance, params, planner, options);
   ASSERT_TRUE(r.complete);
   EXPECT_TRUE(checker.ok());

@@ -15,7 +15,6 @@
 #include "part_tsp_recorder.hpp"
 #include "part_tsp_test_support.hpp"
 #include "support/mission_checker.hpp"
-#include "support/truth_blindness.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -177,60 +176,6 @@ TEST(PartTspBehaviour, PartTsp0IgnoresThePrior) {
   const auto c = run(with_prior, small_params({{2, 5}}), o);
   const auto d = run(without_prior, small_params({{2, 5}}), o);
   EXPECT_NE(c->result.t_c, d->result.t_c);
-}
-
-TEST(PartTspBehaviour, CannotReadTheGroundTruth) {
-  // Same prior, two truths: in the second, cluster B is a false positive and an unknown cluster
-  // sits mid-grid. The planners must act identically until some reading differs.
-  const auto prior = rows(30, 10, two_clusters);
-  const auto truth_2 = rows(30, 10, [](int x, int y) {
-    return in_box(x, y, 20, 22, 1, 2) || in_box(x, y, 16, 17, 5, 6);
-  });
-  const auto first = hand_instance(prior, prior);
-  const auto second = hand_instance(truth_2, prior);
-  for (bool use_prior : {true, false}) {
-    PartTspOptions o;
-    o.use_prior = use_prior;
-    const auto params = small_params({{2, 5}, {25, 5}});
-    const auto a = run(first, params, o);
-    const auto b = run(second, params, o);
-    const auto& fa = a->recorder.frames;
-    const auto& fb = b->recorder.frames;
-    std::size_t differ = 0;  // first time whose readings differ
-    auto same_readings = [&](std::size_t t) {
-      for (std::size_t k = 0; k < 2; ++k) {
-        const auto& ra = fa[t].readings[k];
-        const auto& rb = fb[t].readings[k];
-        if (ra.size() != rb.size()) return false;
-        for (std::size_t i = 0; i < ra.size(); ++i) {
-          if (ra[i].index != rb[i].index || ra[i].value != rb[i].value) return false;
-        }
-      }
-      return true;
-    };
-    while (differ < std::min(fa.size(), fb.size()) && same_readings(differ)) ++differ;
-    ASSERT_GT(differ, 0u);
-    ASSERT_LT(differ, std::min(fa.size(), fb.size()));
-    for (std::size_t t = 1; t <= differ; ++t) {  // frame t holds the actions decided at t − 1
-      EXPECT_EQ(fa[t].actions, fb[t].actions) << "decided at t = " << t - 1;
-    }
-    bool diverged = false;
-    for (std::size_t t = differ + 1; t < std::min(fa.size(), fb.size()); ++t) {
-      diverged = diverged || fa[t].actions != fb[t].actions;
-    }
-    EXPECT_TRUE(diverged) << "the different truth never mattered: the test proves nothing";
-  }
-}
-
-TEST(PartTspBehaviour, CannotReachTheGroundTruthOnTheDefaultHull) {
-  // The shared check: extra corrosion out of sight at t = 0, identical prior.
-  world::MissionParams params;
-  params.uavs = 4;
-  for (const char* name : {"part-tsp", "part-tsp0"}) {
-    TruthBlindnessReport report;
-    EXPECT_TRUE(planner_is_truth_blind(name, {}, params, 3, &report)) << name;
-    EXPECT_GE(report.first_differing_reading, 1) << name;
-  }
 }
 
 TEST(PartTspBehaviour, SameInputsGiveIdenticalResultsAndTraces) {

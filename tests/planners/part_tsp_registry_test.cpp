@@ -93,7 +93,11 @@ TEST(PartTspRegistry, ForwardsTspPrefixedOptionsToTheSolver) {
   const auto& o = dynamic_cast<const PartTspPlanner&>(*p).options();
   // The solver's effective options: the one given plus its defaults.
   EXPECT_EQ(o.tsp_solver_options,
-            (OptionMap{{"dp-max-segments", "12"}, {"kicks", "10"}, {"time-limit", "0"}}));
+            (OptionMap{{"dp-max-segments", "12"},
+                       {"kicks", "10"},
+                       {"max-segments", "120"},
+                       {"time-limit", "0"},
+                       {"work-budget", "50"}}));
 }
 
 }  // namespace

@@ -176,7 +176,7 @@ TEST(Failure, AFailedUavNeitherMovesNorSenses) {
   EXPECT_EQ(sim.uavs()[0].pos, (Cell{2, 0}));
   sim.step(one(Action::kEast));
   EXPECT_EQ(sim.uavs()[0].pos, (Cell{2, 0}));
-  EXPECT_FALSE(sim.uavs()[0].active);
+  EXPECT_TRUE(sim.uavs()[0].failed);
   EXPECT_TRUE(sim.view().sensed.readings(0).empty());
 }
 

@@ -58,7 +58,7 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
   planners::run_mission(hull, a, params, *pa, oa);
   planners::run_mission(hull, b, params, *pb, ob);
 
-  // Decision t is made from readings 0..t; it must match while those are identical.
+  // Decision t is made from readings 0..t, so decisions before the first differing reading must match.
   std::size_t t = 0;
   while (t < ra.readings.size() && t < rb.readings.size() && same(ra.readings[t], rb.readings[t])) ++t;
   const std::size_t first_diff = t;
@@ -66,9 +66,9 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
     report->first_differing_reading = first_diff < std::min(ra.readings.size(), rb.readings.size())
                                           ? static_cast<int>(first_diff)
                                           : -1;
-    report->steps_compared = static_cast<int>(std::min(first_diff + 1, ra.actions.size()));
+    report->steps_compared = static_cast<int>(std::min(first_diff, ra.actions.size()));
   }
-  for (std::size_t s = 0; s <= first_diff && s < ra.actions.size() && s < rb.actions.size(); ++s) {
+  for (std::size_t s = 0; s < first_diff && s < ra.actions.size() && s < rb.actions.size(); ++s) {
     if (ra.actions[s] != rb.actions[s]) {
       return ::testing::AssertionFailure()
              << fmt::format("{}: decision at t = {} differs although readings were identical up to t = {}",

@@ -127,7 +127,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "heuristic)"},
         BadInput{{"--time-limit", "-1", "FILE"},
                  "",
-                 "hullinspect: --time-limit: must be >= 0 seconds (got -1)"},
+                 "hullinspect: --time-limit: must be a number in [0, 1e+09] (got '-1') (see --help)"},
         BadInput{
             {"-O", "kicks", "FILE"}, "", "hullinspect: --option: expects KEY=VALUE (got 'kicks')"},
         BadInput{{"--solver", "heuristic", "-O", "kicks=many", "FILE"},

@@ -74,7 +74,7 @@ TEST(PgmMask, ReadsAsciiAndBinary) {
 
 TEST(PgmMask, RejectsMalformedImages) {
   EXPECT_EQ(error_of([] { parse_pgm_mask("P3\n", "x.pgm"); }),
-            "x.pgm:1: not a PGM image (expected magic 'P2' or 'P5')");
+            "x.pgm:1: not a greyscale PGM image (magic 'P3'; expected 'P2' or 'P5')");
   EXPECT_EQ(error_of([] { parse_pgm_mask("P2\n3 x\n", "x.pgm"); }),
             "x.pgm:2: expected the image height (a non-negative integer)");
   EXPECT_EQ(error_of([] { parse_pgm_mask("P2\n2 1\n255\n255 300\n", "x.pgm"); }),

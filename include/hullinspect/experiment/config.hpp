@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/world/failures.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/user_maps.hpp"
 
 namespace hullinspect::experiment {
 
@@ -25,6 +27,7 @@ struct ScenarioSpec {
   std::string sweep;        ///< the sweep it belongs to; empty for plain scenarios
   std::string sweep_value;  ///< the swept value as text ("0.8", "0.01/0.0025" for front/back)
   world::CorrosionParams corrosion;
+  world::FailurePlan failures;  ///< UAV failures of every mission of the scenario (paired by seed)
   int line = 0;             ///< config line that declared it (for error messages)
 };
 
@@ -47,13 +50,17 @@ struct ExperimentConfig {
   std::string source;  ///< names the config in messages: a path or "presets/<name>.yaml"
   std::string name;
   std::string description;
-  std::string hull_spec = "default";  ///< as written: "default", "rectangle" or a mask path
+  /// As written: "default", "rectangle", "dtc", a mask/hull JSON/mesh path, or for a `hull: {mesh:
+  /// …}` map "mesh:FILE" followed by its options.
+  std::string hull_spec = "default";
   std::shared_ptr<const world::HullMask> hull;  ///< null in a config read back from a manifest
   std::string hull_hash;                        ///< stable id of the mask's contents
   int hull_width = 0;
   int hull_height = 0;
   int hull_cells = 0;
   double cell_size = 0.5;
+  std::string prior_path, truth_path;  ///< the user's C′ and C ("prior:", "truth:"), resolved
+  world::UserMaps maps;                ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
   int s1 = 5;
   std::vector<int> s2 = {7};

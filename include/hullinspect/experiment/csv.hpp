@@ -24,6 +24,8 @@ struct CsvTable {
   std::vector<std::vector<std::string>> rows;
   /// Index of a column; throws InputError naming `source` when it is missing.
   int column(const std::string& name, const std::string& source) const;
+  /// Index of a column, or −1 when it is missing (optional columns of newer versions).
+  int find_column(const std::string& name) const;
 };
 
 /// Parses a complete CSV file (every line ends with a line break). Throws InputError naming

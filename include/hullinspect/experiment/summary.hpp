@@ -22,6 +22,8 @@ struct SummaryRow {
   int runs = 0;
   int incomplete = 0;  ///< missions that hit the time limit
   TimeStats t_c, t_m;
+  /// Mean analytic lower bounds over the runs (docs/beyond.md); count 0 when runs.csv has none.
+  TimeStats bound_t_c, bound_t_m;
 };
 
 /// One row per (scenario, s2, uavs, algorithm), in the order they first appear in runs.csv.
@@ -29,7 +31,7 @@ struct SummaryRow {
 std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& source);
 
 /// summary.csv: scenario, sweep, sweep_value, s2, uavs, algorithm, runs, incomplete, T_c_count,
-/// T_c_mean, T_c_std, T_m_count, T_m_mean, T_m_std.
+/// T_c_mean, T_c_std, T_m_count, T_m_mean, T_m_std, bound_T_c_mean, bound_T_m_mean.
 std::string summary_csv(const std::vector<SummaryRow>& rows);
 
 /// Markdown: per scenario, a T_c table and a T_m table with one row per (s2, n) and one column per

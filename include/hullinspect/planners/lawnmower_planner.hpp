@@ -24,6 +24,8 @@ class LawnmowerPlanner final : public Planner {
   void start(const PlannerContext& context) override;
   void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override;
   const partition::Partition* partition() const override { return partition_.get(); }
+  /// Every working UAV has flown its whole sweep.
+  bool idle(const sim::PlannerView& view) const override;
   void annotate(AnnotationSink& sink) const override;
 
   /// The sweep of one region: the waypoints (strip ends) from `from`.

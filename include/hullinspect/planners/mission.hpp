@@ -6,6 +6,7 @@
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/sim/mission_result.hpp"
 #include "hullinspect/sim/simulator.hpp"
+#include "hullinspect/world/failures.hpp"
 #include "hullinspect/world/instance.hpp"
 
 namespace hullinspect::planners {
@@ -20,14 +21,12 @@ class MissionObserver {
   virtual void on_step(const sim::Simulator& sim, const Planner& planner) = 0;
 };
 
-struct UavFailure {
-  int uav = 0;
-  int time = 0;  ///< from this step on the UAV neither moves nor senses
-};
+using world::UavFailure;
 
 struct MissionOptions {
   std::vector<MissionObserver*> observers;
-  std::vector<UavFailure> failures;  ///< test hook for robustness experiments
+  /// UAV failures; random ones are drawn from the instance seed (the same for every planner).
+  world::FailurePlan failures;
   PartitionSource* partitions = nullptr;  ///< nullptr: compute partitions directly
 };
 

@@ -8,6 +8,7 @@
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/world/instance.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "hullinspect/world/user_maps.hpp"
 
 namespace hullinspect::planners {
 
@@ -17,13 +18,15 @@ struct MissionSpec {
   world::MissionParams params;
   world::CorrosionParams corrosion;  ///< zones empty = one default zone
   std::uint64_t seed = 1;
+  world::FailurePlan failures;  ///< UAV failures (docs/model.md, "Failures")
+  world::UserMaps maps;  ///< the user's prior and/or truth, replacing the generated ones
 };
 
 /// Validates `spec` against `hull` (ParameterError naming the field) — params, corrosion, the
 /// algorithm name and its options — without running anything.
 void validate(const MissionSpec& spec, const world::HullMask& hull);
 
-/// Draws the instance, builds the planner and runs the mission.
+/// Draws the instance (then applies spec.maps), builds the planner and runs the mission.
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const MissionOptions& options = {});
 

@@ -23,6 +23,8 @@ namespace hullinspect::planners {
 
 struct PartTspOptions {
   bool use_prior = true;  ///< false: Part-TSP₀ (local maps start without the prior's 2s)
+  bool oracle = false;    ///< oracle-part-tsp: the local maps start from the truth C, not C'
+
   int r1 = 2;             ///< steps since the last detection before descending
   int r2 = 0;  ///< steps since the last inspection (or arrival at z = 1) before ascending
   std::string tsp_solver{tsp::kDefaultTspSolver};  ///< segment-TSP solver by name ("exact")
@@ -43,7 +45,11 @@ class PartTspPlanner final : public Planner {
   void start(const PlannerContext& context) override;
   void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override;
   sim::PlannerStats stats() const override { return stats_; }
+  bool sees_truth() const override { return options_.oracle; }
   const partition::Partition* partition() const override { return partition_.get(); }
+  /// Every working UAV is done (nothing left in its local map): without communication nobody takes
+  /// over a failed UAV's region, so the mission ends there (docs/beyond.md).
+  bool idle(const sim::PlannerView& view) const override;
   /// Per UAV: mode (cover-z2, inspect-z1, cover-z1, descending, ascending, done, failed), the next
   /// waypoint and the waypoints still ahead.
   void annotate(AnnotationSink& sink) const override;

@@ -43,6 +43,8 @@ struct PlannerContext {
   const grid::Grid<std::int8_t>& prior;  ///< C' (−1 not hull, 0, 1)
   std::span<const grid::Cell> starts;    ///< the UAVs' start cells
   PartitionSource& partitions;
+  /// The ground truth C — only for planners whose sees_truth() is true (oracle bounds); else null.
+  const grid::Grid<std::int8_t>* truth = nullptr;
 };
 
 /// Receives what a planner wants shown in traces and the viewer; only called when tracing.
@@ -63,6 +65,11 @@ class Planner {
   virtual void start(const PlannerContext& context) = 0;
   /// The main hook: fills one action per UAV from the view at time t.
   virtual void decide(const sim::PlannerView& view, std::span<sim::Action> actions) = 0;
+  /// True only for oracle planners (name "oracle-…"): run_mission then hands them the truth C.
+  virtual bool sees_truth() const { return false; }
+  /// True when every UAV that has not failed will only hover from now on, whatever it senses: the
+  /// mission then ends (incomplete if the hull is not done). Called after each step.
+  virtual bool idle(const sim::PlannerView& /*view*/) const { return false; }
   /// Counters for the mission result.
   virtual sim::PlannerStats stats() const { return {}; }
   /// The partition used, for partitioned planners (traces and viewer).

@@ -13,6 +13,7 @@ struct UavCounters {
   int steps_z1 = 0;       ///< steps ending on plane 1 (not in transit)
   int steps_z2 = 0;
   int steps_transit = 0;  ///< steps spent changing plane
+  int failed_at = -1;     ///< step at whose start the UAV failed; −1 never
 };
 
 /// Counters that planners report (zeros where a planner has no such thing).
@@ -31,6 +32,10 @@ struct MissionResult {
   std::optional<int> t_c;  ///< first t with c(t) = 100; empty if never reached
   std::optional<int> t_m;  ///< first t with m(t) = 100; empty when incomplete
   int steps = 0;           ///< last simulated t
+  int failed_uavs = 0;     ///< UAVs that failed during the mission
+  bool stopped_idle = false;  ///< ended incomplete because no working UAV had anything left to do
+  int bound_t_c = 0;  ///< analytic lower bound on T_c for this instance (docs/beyond.md)
+  int bound_t_m = 0;  ///< analytic lower bound on T_m
   int hull_cells = 0;
   int corroded_cells = 0;  ///< #{C = 1}
   /// Per t = 0..steps: corroded cells inspected and hull cells known (M ∈ {1, 3}).

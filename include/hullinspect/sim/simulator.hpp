@@ -26,12 +26,18 @@ class Simulator {
   /// Throws LogicError if an action would leave the grid or the mission is already finished.
   void step(std::span<const Action> actions);
 
-  /// Test hook: from step `from_time` on, UAV `uav` fails (stays put, never senses).
+  /// UAV `uav` fails at the start of step `from_time` (t → t+1): from then on its actions are
+  /// ignored, it stays put (a UAV in transit stays in transit) and senses nothing. The UAV reads
+  /// `failed` in the view from t+1 on. Call before the step; the latest call for a UAV wins.
   void fail_uav_at(int uav, int from_time);
 
   int time() const { return time_; }
   bool complete() const { return known_ == hull_cells_; }
-  bool finished() const { return complete() || time_ >= params_.time_limit; }
+  /// Complete, at the time limit, or no UAV left that can act (every UAV failed).
+  bool finished() const {
+    return complete() || time_ >= params_.time_limit || failed_ == static_cast<int>(uavs_.size());
+  }
+  int failed_uavs() const { return failed_; }
   const world::MissionParams& params() const { return params_; }
   const world::HullMask& hull() const { return hull_; }
   int plane_change_steps() const { return uz_; }
@@ -76,6 +82,7 @@ class Simulator {
   int corroded_ = 0;
   int inspected_ = 0;
   int known_ = 0;
+  int failed_ = 0;
   MissionResult result_;  // series and counters, filled as the mission runs
 };
 

@@ -40,7 +40,10 @@ struct UavState {
   grid::Cell pos;
   int z = 2;             ///< plane: 1 close-up, 2 detection (the departure plane during a change)
   int transit_left = 0;  ///< steps left in a plane change; 0 = on a plane
-  bool active = true;    ///< false once the UAV failed (a frozen UAV neither moves nor senses)
+  /// Set from the start of the UAV's failure step on (docs/model.md, "Failures"): its actions are
+  /// ignored, it stays where it is (in transit forever if it failed while changing plane) and
+  /// senses nothing. Planners use it only as far as their communication model allows.
+  bool failed = false;
   bool in_transit() const { return transit_left > 0; }
 };
 

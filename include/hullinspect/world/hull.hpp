@@ -3,11 +3,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "hullinspect/grid/grid.hpp"
+#include "hullinspect/world/hull_geometry.hpp"
 
 namespace hullinspect::world {
 
@@ -34,19 +36,26 @@ class HullMask {
   const std::string& source() const { return source_; }
   /// The nearest hull cell to c by Manhattan distance; ties: lowest y, then lowest x.
   grid::Cell snap(grid::Cell c) const;
+  /// The ship-frame geometry of a hull imported from a mesh; nullptr for a plain mask.
+  const HullGeometry* geometry() const { return geometry_.get(); }
+  /// Attaches geometry (validated against this mask; throws InputError naming `source`).
+  void attach_geometry(HullGeometry geometry);
 
  private:
   grid::Grid<std::uint8_t> mask_;
   std::vector<int> cells_;
   int cell_count_ = 0;
   std::string source_;
+  std::shared_ptr<const HullGeometry> geometry_;  // shared: masks are copied freely
 };
 
 /// The built-in 230 × 30 ship side profile (data/hulls/default.txt, compiled in).
 const HullMask& default_hull();
 
 /// Loads a hull by file name: "default" (or "builtin:default"), a text mask (see docs/formats.md),
-/// or an ASCII (P2) / binary (P5) PGM image. Throws InputError naming the file and line.
+/// an ASCII (P2) / binary (P5) PGM image, or a hull JSON with geometry (`*.json`, see
+/// hull_geometry.hpp). Throws InputError naming the file and line. Meshes and named mesh hulls
+/// ("dtc") are loaded by mesh::load_any_hull, which falls back to this.
 HullMask load_hull(const std::filesystem::path& path);
 
 /// Parses a text mask: rows top (y = b-1) first, 'X' or '#' hull, '.' non-hull, lines starting

@@ -17,6 +17,7 @@ enum class Stream : std::uint64_t {
   kPriorFp = 3,      ///< false-positive prior centres and their rectangles
   kPartition = 4,    ///< partitioner noise
   kPlanner = 5,      ///< planner randomness, if any
+  kFailures = 6,     ///< random UAV failures (docs/model.md, "Failures")
 };
 
 /// xoshiro256** generator for one (seed, stream) pair.

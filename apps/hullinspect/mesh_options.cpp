@@ -1,0 +1,60 @@
+#include "mesh_options.hpp"
+
+#include <iostream>
+
+namespace hullinspect::cli {
+
+void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
+  const char* group = "Mesh hulls (see docs/hulls.md)";
+  cmd.add_option("--side", a.side, "Side inspected: port or starboard (default starboard)")
+      ->group(group);
+  cmd.add_option("--cell-size", a.cell_size, "Cell side in metres (default 0.5)")->group(group);
+  cmd.add_option("--scale", a.scale, "Uniform scale applied to the file's coordinates (default 1)")
+      ->group(group);
+  cmd.add_option("--axes", a.axes,
+                 "Ship x,y,z (stern→bow, to port, up) as signed file axes, e.g. x,-z,y (default "
+                 "x,y,z)")
+      ->group(group);
+  cmd.add_option("--waterline", a.waterline,
+                 "Ship-frame Z in metres below which cells are not hull (default: none)")
+      ->group(group)
+      ->type_name("Z");
+  cmd.add_option("--min-coverage", a.min_coverage,
+                 "Fraction of a cell that must be surface for it to be hull, in (0, 1] (default "
+                 "0.5)")
+      ->group(group);
+  cmd.add_flag("--keep-largest", a.keep_largest,
+               "Keep the largest 4-connected part of the projection (else an error)")
+      ->group(group);
+}
+
+world::MeshImportOptions mesh_import_options(const MeshArgs& a, world::MeshImportOptions o) {
+  if (a.side) o.side = world::parse_hull_side(*a.side);
+  if (a.cell_size) o.cell_size = *a.cell_size;
+  if (a.scale) o.scale = *a.scale;
+  if (a.axes) o.axes = world::AxisMap::parse(*a.axes);
+  if (a.waterline) o.waterline = a.waterline;
+  if (a.min_coverage) o.min_coverage = *a.min_coverage;
+  if (a.keep_largest) o.keep_largest = true;
+  o.validate();
+  return o;
+}
+
+world::MeshImport import_mesh_argument(const std::string& mesh, const MeshArgs& args) {
+  world::MeshImport r =
+      world::is_named_mesh_hull(mesh)
+          ? world::import_named_mesh_hull(mesh, mesh_import_options(args, world::dtc_options()))
+          : world::import_mesh_file(mesh, mesh_import_options(args));
+  for (const std::string& w : r.warnings) std::cerr << "hullinspect: warning: " << w << "\n";
+  return r;
+}
+
+world::HullMask load_hull_argument(const std::string& hull, const MeshArgs& args) {
+  if (world::is_named_mesh_hull(hull) || world::is_mesh_path(hull)) {
+    return std::move(import_mesh_argument(hull, args).hull);
+  }
+  mesh_import_options(args);  // options given with a plain mask are still checked
+  return world::load_hull(hull);
+}
+
+}  // namespace hullinspect::cli

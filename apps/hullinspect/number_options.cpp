@@ -1,0 +1,74 @@
+#include "number_options.hpp"
+
+#include <fmt/format.h>
+
+#include <limits>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
+
+namespace hullinspect::cli {
+
+namespace {
+
+template <class Parse>
+CLI::Validator number_validator(Parse parse) {
+  return CLI::Validator(
+      [parse](std::string& text) -> std::string {
+        try {
+          parse(text);
+          return {};
+        } catch (const NumberError& e) {
+          return e.what();
+        }
+      },
+      "");
+}
+
+void attach(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type == "INT") {
+      option->check(number_validator([](const std::string& t) { parse_integer<int>(t); }));
+    } else if (type == "UINT") {
+      option->check(
+          number_validator([](const std::string& t) { parse_integer<std::uint64_t>(t); }));
+    } else if (type == "FLOAT") {
+      option->check(number_validator([](const std::string& t) { parse_real(t); }));
+    }
+  }
+  for (CLI::App* sub : app.get_subcommands({})) attach(*sub);
+}
+
+}  // namespace
+
+CLI::Validator integer_in(std::int64_t min, std::int64_t max) {
+  return number_validator([=](const std::string& t) { parse_integer<std::int64_t>(t, min, max); });
+}
+
+CLI::Validator real_in(double min, double max) {
+  return number_validator([=](const std::string& t) { parse_real(t, min, max); });
+}
+
+void require_exact_numbers(CLI::App& app) {
+  attach(app);
+}
+
+grid::Cell parse_xy(const std::string& text, const std::string& option) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+    throw ParameterError(option, fmt::format("expects X,Y (got '{}')", escape_for_message(text)));
+  }
+  try {
+    const int x = parse_integer<int>(std::string_view(text).substr(0, comma));
+    const int y = parse_integer<int>(std::string_view(text).substr(comma + 1));
+    return {x, y};
+  } catch (const NumberError&) {
+    throw ParameterError(
+        option, fmt::format("expects X,Y with integers X and Y in [{}, {}] (got '{}')",
+                            std::numeric_limits<int>::min(), std::numeric_limits<int>::max(),
+                            escape_for_message(text)));
+  }
+}
+
+}  // namespace hullinspect::cli

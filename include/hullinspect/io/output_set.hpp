@@ -1,0 +1,57 @@
+#pragma once
+// Every file a command writes goes through one OutputSet, so that a command either writes all its
+// outputs or none and never destroys anything:
+//   1. the command declares its inputs (add_input) and outputs (add_output / add_output_dir) and
+//      calls check() BEFORE doing any work: an output that is a device, FIFO, socket or directory
+//      (or, for add_output_dir, a non-directory), whose directory does not exist or is not
+//      writable, or that is the same file (same st_dev/st_ino, or the same path once resolved) as
+//      an input or another output, is refused with a ParameterError naming its option (exit 2);
+//   2. write() puts each output's content into a temporary beside it;
+//   3. commit() renames all temporaries into place together at the end; if the command fails
+//      before commit(), the destructor removes the temporaries and nothing was touched.
+// Standard output is checked by main() (a failed write or flush is an error, e.g. > /dev/full).
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hullinspect::io {
+
+class OutputSet {
+ public:
+  OutputSet() = default;
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+  ~OutputSet();
+
+  /// A file or directory the command reads; `option` names it in messages ("hull", "trace").
+  void add_input(const std::filesystem::path& path, std::string option);
+  /// A file the command writes (created or replaced).
+  void add_output(const std::filesystem::path& path, std::string option);
+  /// A directory the command creates or writes into (it may exist; then it must be a directory).
+  void add_output_dir(const std::filesystem::path& path, std::string option);
+  /// Runs every check described above; throws ParameterError(option, …) on the first problem.
+  void check() const;
+
+  /// Writes the content of the declared output `path` to its temporary (checked write + close).
+  void write(const std::filesystem::path& path, std::string_view content);
+  /// Renames every written temporary over its output, in declaration order.
+  void commit();
+
+ private:
+  struct Entry {
+    std::filesystem::path path;
+    std::string option;
+    bool directory = false;
+    std::filesystem::path temporary;  // empty until written
+  };
+  std::vector<Entry> inputs_;
+  std::vector<Entry> outputs_;
+};
+
+/// True if `a` and `b` name the same existing file (same device and inode), or, when either does
+/// not exist, resolve to the same absolute path.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+}  // namespace hullinspect::io

@@ -1,0 +1,70 @@
+#pragma once
+// Sweep-Inspect (docs/beyond.md): a planner of this project, beyond the paper. Each UAV sweeps its
+// DARP region at the detection plane z = 2 in strips of s2 rows (so it observes at the rate bound's
+// s2 new cells per step), descends as soon as a detected corroded cell of the shared map lies
+// abreast of it, inspects the detected cells near that point at z = 1 (nearest first), climbs back
+// and resumes its sweep where it left it. A UAV whose sweep is done helps: it takes the nearest
+// unclaimed work anywhere (a detected, uninspected cell at z = 1, else an unknown cell at z = 2),
+// which also finishes the region of a failed UAV. Communication: the shared map M and the failed
+// flags (as Coop-Frontier), plus each helper's current target (its claim).
+
+#include <memory>
+#include <vector>
+
+#include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/waypoint_follower.hpp"
+
+namespace hullinspect::planners {
+
+struct SweepInspectOptions {
+  std::string partitioner{partition::kDefaultPartitioner};
+  OptionMap partitioner_options;
+  std::uint64_t partition_seed = 0;
+  bool help = true;  ///< after its sweep a UAV takes work anywhere (false: only its own region's)
+  bool inspect_on_the_way = true;  ///< descend when a detection is abreast (false: only at the end)
+  double radius_factor = 1.0;  ///< inspect detected cells within radius_factor·s2 of the descent
+  bool prior_weights = false;  ///< DARP weighted by the expected work per cell (prior-aware)
+  bool prior_first = true;     ///< first inspect the prior's cells of the region at z = 1
+};
+
+class SweepInspectPlanner final : public Planner {
+ public:
+  explicit SweepInspectPlanner(SweepInspectOptions options) : options_(std::move(options)) {}
+  void start(const PlannerContext& context) override;
+  void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override;
+  bool idle(const sim::PlannerView& view) const override;
+  const partition::Partition* partition() const override { return partition_.get(); }
+  void annotate(AnnotationSink& sink) const override;
+
+ private:
+  enum class Mode { kPrior, kSweep, kInspect, kReturn, kHelp, kDone, kFailed };
+  struct Uav {
+    Mode mode = Mode::kPrior;
+    WaypointFollower sweep;
+    grid::Cell resume{-1, -1};  // where the sweep was left for an inspection
+    grid::Cell target{-1, -1};  // the position it flies to (inspect / help)
+    int target_cell = -1;       // the cell that target serves (help claims it)
+  };
+  sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
+  /// radius when radius < 0), not claimed by another UAV; −1 if none.
+  int nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
+                      const sim::PlannerView& view) const;
+  /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
+  int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
+  bool claimed_by_other(int k, int cell) const;
+  /// Nearest position whose footprint of half-width h holds `c`.
+  static grid::Cell reach_position(grid::Cell pos, grid::Cell c, int h);
+
+  SweepInspectOptions options_;
+  std::shared_ptr<const partition::Partition> partition_;
+  std::vector<Uav> uavs_;
+  std::vector<int> pending_;  // detected (seen at z = 2), not yet inspected cells, flat indices
+  std::vector<int> hull_cells_;
+  std::vector<std::vector<int>> prior_;  // per UAV: the prior's cells of its region still M = 2
+  int h1_ = 2;
+  int h2_ = 3;
+  int radius_ = 7;
+};
+
+}  // namespace hullinspect::planners

@@ -1,0 +1,31 @@
+#pragma once
+// Analytic lower bounds on T_c and T_m for one instance (docs/beyond.md, "Bounds"): no planner —
+// not even one that knows C — can finish earlier. Two arguments, the larger wins:
+//  * rate: every observed cell lies in the z = 2 square around a position some UAV visited (the
+//    z = 1 footprint is inside it), and each move grows that union by at most s2 cells, so the
+//    fleet needs (hull cells − n·s2²)/s2 moves; every corroded cell must also lie in some z = 1
+//    footprint, which costs arrivals at z = 1 (s1² cells, u_z transit steps each, 2·u_z between two
+//    of one UAV) or z = 1 moves (s1 cells each).
+//  * reach: a cell is observed only from a position whose footprint holds it, and a UAV needs at
+//    least the Manhattan distance to get there (+ u_z to descend for a corroded cell).
+
+#include "hullinspect/grid/grid.hpp"
+#include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/mission_params.hpp"
+
+namespace hullinspect::sim {
+
+struct LowerBound {
+  int t_c = 0;       ///< T_c >= t_c
+  int t_m = 0;       ///< T_m >= t_m
+  int rate_t_c = 0;  ///< the rate argument alone
+  int rate_t_m = 0;
+  int reach_t_c = 0;  ///< the reach argument alone
+  int reach_t_m = 0;
+};
+
+/// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded).
+LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
+                       const world::MissionParams& params);
+
+}  // namespace hullinspect::sim

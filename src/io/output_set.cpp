@@ -1,0 +1,189 @@
+#include "hullinspect/io/output_set.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
+
+namespace hullinspect::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string shown(const fs::path& p) {
+  return escape_for_message(p.string(), 200);
+}
+
+// What kind of non-regular file `st` describes, for messages.
+const char* kind(const struct stat& st) {
+  if (S_ISDIR(st.st_mode)) return "a directory";
+  if (S_ISCHR(st.st_mode)) return "a character device";
+  if (S_ISBLK(st.st_mode)) return "a block device";
+  if (S_ISFIFO(st.st_mode)) return "a FIFO";
+  if (S_ISSOCK(st.st_mode)) return "a socket";
+  if (S_ISREG(st.st_mode)) return "a regular file";
+  return "not a regular file";
+}
+
+fs::path resolved(const fs::path& p) {
+  std::error_code ec;
+  fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+  return ec ? fs::absolute(p) : r;
+}
+
+// The directory an output is created in ("." for a bare file name).
+fs::path parent_of(const fs::path& p) {
+  const fs::path parent = fs::absolute(p).parent_path();
+  return parent.empty() ? fs::path(".") : parent;
+}
+
+// An output directory is created with its missing parents (like mkdir -p, as `--out results/x`
+// always did), so for one the nearest existing ancestor is checked instead.
+void check_parent(const fs::path& path, const std::string& option, bool create_parents) {
+  fs::path parent = parent_of(path);
+  struct stat st {};
+  if (create_parents) {
+    while (::stat(parent.c_str(), &st) != 0 && parent.has_relative_path()) {
+      parent = parent.parent_path();
+    }
+  }
+  if (::stat(parent.c_str(), &st) != 0) {
+    throw ParameterError(option, fmt::format("cannot write '{}': directory '{}' does not exist",
+                                             shown(path), shown(parent)));
+  }
+  if (!S_ISDIR(st.st_mode)) {
+    throw ParameterError(option, fmt::format("cannot write '{}': '{}' is not a directory",
+                                             shown(path), shown(parent)));
+  }
+  if (::access(parent.c_str(), W_OK | X_OK) != 0) {
+    throw ParameterError(option, fmt::format("cannot write '{}': directory '{}': {}", shown(path),
+                                             shown(parent), std::strerror(errno)));
+  }
+}
+
+std::atomic<int> temporary_counter{0};
+
+}  // namespace
+
+bool same_file(const fs::path& a, const fs::path& b) {
+  struct stat sa {};
+  struct stat sb {};
+  if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0) {
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  }
+  return resolved(a) == resolved(b);
+}
+
+OutputSet::~OutputSet() {
+  for (const auto& out : outputs_) {
+    if (!out.temporary.empty()) ::unlink(out.temporary.c_str());
+  }
+}
+
+void OutputSet::add_input(const fs::path& path, std::string option) {
+  if (!path.empty()) inputs_.push_back({path, std::move(option), false, {}});
+}
+
+void OutputSet::add_output(const fs::path& path, std::string option) {
+  if (!path.empty()) outputs_.push_back({path, std::move(option), false, {}});
+}
+
+void OutputSet::add_output_dir(const fs::path& path, std::string option) {
+  if (!path.empty()) outputs_.push_back({path, std::move(option), true, {}});
+}
+
+void OutputSet::check() const {
+  for (std::size_t k = 0; k < outputs_.size(); ++k) {
+    const Entry& out = outputs_[k];
+    struct stat st {};
+    if (::stat(out.path.c_str(), &st) == 0) {
+      if (out.directory && !S_ISDIR(st.st_mode)) {
+        throw ParameterError(
+            out.option, fmt::format("'{}' is {}, expected a directory", shown(out.path), kind(st)));
+      }
+      if (!out.directory && !S_ISREG(st.st_mode)) {
+        throw ParameterError(out.option,
+                             fmt::format("'{}' is {}; an output must be a regular file or a new "
+                                         "path",
+                                         shown(out.path), kind(st)));
+      }
+      if (out.directory && ::access(out.path.c_str(), W_OK | X_OK) != 0) {
+        throw ParameterError(out.option, fmt::format("cannot write into '{}': {}", shown(out.path),
+                                                     std::strerror(errno)));
+      }
+    } else if (errno != ENOENT) {
+      throw ParameterError(
+          out.option, fmt::format("cannot use '{}': {}", shown(out.path), std::strerror(errno)));
+    }
+    if (!out.directory || ::stat(out.path.c_str(), &st) != 0) check_parent(out.path, out.option, out.directory);
+    for (const Entry& in : inputs_) {
+      if (same_file(out.path, in.path)) {
+        throw ParameterError(out.option,
+                             fmt::format("'{}' is the same file as the {} '{}'; it would be "
+                                         "overwritten",
+                                         shown(out.path), in.option, shown(in.path)));
+      }
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (same_file(out.path, outputs_[j].path)) {
+        throw ParameterError(
+            out.option, fmt::format("'{}' is the same file as the output of --{} '{}'",
+                                    shown(out.path), outputs_[j].option, shown(outputs_[j].path)));
+      }
+    }
+  }
+}
+
+void OutputSet::write(const fs::path& path, std::string_view content) {
+  Entry* entry = nullptr;
+  for (auto& out : outputs_) {
+    if (!out.directory && out.path == path) entry = &out;
+  }
+  if (entry == nullptr)
+    throw LogicError(fmt::format("output '{}' was not declared", path.string()));
+  if (entry->temporary.empty()) {
+    entry->temporary =
+        parent_of(path) / fmt::format(".{}.tmp-{}-{}", path.filename().string(),
+                                      static_cast<long>(::getpid()), temporary_counter++);
+  }
+  const int fd = ::open(entry->temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    const int err = errno;
+    entry->temporary.clear();
+    throw InputError(path.string(), 0, fmt::format("cannot write: {}", std::strerror(err)));
+  }
+  bool ok = true;
+  while (ok && !content.empty()) {
+    const ssize_t n = ::write(fd, content.data(), content.size());
+    if (n < 0 && errno == EINTR) continue;
+    ok = n >= 0;
+    if (ok) content.remove_prefix(static_cast<std::size_t>(n));
+  }
+  int err = ok ? 0 : errno;
+  if (::close(fd) != 0 && ok) {
+    ok = false;
+    err = errno;
+  }
+  if (!ok) throw InputError(path.string(), 0, fmt::format("write failed: {}", std::strerror(err)));
+}
+
+void OutputSet::commit() {
+  for (auto& out : outputs_) {
+    if (out.temporary.empty()) continue;
+    if (::rename(out.temporary.c_str(), out.path.c_str()) != 0) {
+      throw InputError(out.path.string(), 0,
+                       fmt::format("cannot rename into place: {}", std::strerror(errno)));
+    }
+    out.temporary.clear();
+  }
+}
+
+}  // namespace hullinspect::io

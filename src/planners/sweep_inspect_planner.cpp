@@ -1,0 +1,241 @@
+#include "hullinspect/planners/sweep_inspect_planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "hullinspect/planners/lawnmower_planner.hpp"
+
+namespace hullinspect::planners {
+
+namespace {
+int chebyshev(grid::Cell a, grid::Cell b) {
+  return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y));
+}
+}  // namespace
+
+grid::Cell SweepInspectPlanner::reach_position(grid::Cell pos, grid::Cell c, int h) {
+  return {std::clamp(pos.x, c.x - h, c.x + h), std::clamp(pos.y, c.y - h, c.y + h)};
+}
+
+void SweepInspectPlanner::start(const PlannerContext& context) {
+  const auto& p = context.params;
+  h1_ = (p.s1 - 1) / 2;
+  h2_ = (p.s2 - 1) / 2;
+  radius_ = std::max(h1_, static_cast<int>(std::lround(options_.radius_factor * p.s2)));
+  partition::PartitionRequest request;
+  request.hull = &context.hull;
+  request.starts.assign(context.starts.begin(), context.starts.end());
+  request.seed = options_.partition_seed;
+  if (options_.prior_weights) {
+    // Expected work of a cell: sweeping it at z = 2 costs 1/s2 of a step; a prior cell adds an
+    // expected inspection detour (its probability of being real times ~ one z = 1 pass of s1).
+    request.weights = grid::Grid<double>(context.hull.width(), context.hull.height(), 0.0);
+    for (int i : context.hull.cells()) {
+      request.weights[i] = 1.0 + (context.prior[i] == 1 ? static_cast<double>(p.s2) / p.s1 : 0.0);
+    }
+  }
+  partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
+  const int n = p.uavs;
+  uavs_.assign(static_cast<std::size_t>(n), Uav{});
+  for (int k = 0; k < n; ++k) {
+    uavs_[static_cast<std::size_t>(k)].sweep.assign(LawnmowerPlanner::sweep(
+        partition_->owner, k, p.s2, context.starts[static_cast<std::size_t>(k)]));
+  }
+  prior_.assign(static_cast<std::size_t>(n), {});
+  if (options_.prior_first) {
+    for (int i : context.hull.cells()) {
+      if (context.prior[i] == 1)
+        prior_[static_cast<std::size_t>(partition_->owner[i])].push_back(i);
+    }
+  }
+  pending_.clear();
+  pending_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
+  hull_cells_ = context.hull.cells();
+}
+
+bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
+  for (std::size_t j = 0; j < uavs_.size(); ++j) {
+    if (static_cast<int>(j) != k && uavs_[j].target_cell == cell) return true;
+  }
+  return false;
+}
+
+int SweepInspectPlanner::nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
+                                         const sim::PlannerView& view) const {
+  int best = -1;
+  int best_d = std::numeric_limits<int>::max();
+  for (int i : pending_) {
+    const grid::Cell c = view.map.cell(i);
+    if (radius >= 0 && chebyshev(c, around) > radius) continue;
+    if (!options_.help && partition_->owner[i] != k) continue;
+    if (claimed_by_other(k, i)) continue;
+    const int d = grid::manhattan(pos, reach_position(pos, c, h1_));
+    if (d < best_d) {
+      best_d = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
+                                         const sim::PlannerView& view) const {
+  int best = -1;
+  int best_d = std::numeric_limits<int>::max();
+  for (int i : hull_cells_) {
+    if (view.map[i] != sim::kUnknown &&
+        !(view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0)) {
+      continue;
+    }
+    if (!options_.help && partition_->owner[i] != k) continue;
+    if (claimed_by_other(k, i)) continue;
+    const grid::Cell c = view.map.cell(i);
+    const int d = grid::manhattan(pos, reach_position(pos, c, h2_));
+    if (d < best_d) {
+      best_d = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+void SweepInspectPlanner::decide(const sim::PlannerView& view, std::span<sim::Action> actions) {
+  // New detections join the pending list; inspected cells leave it.
+  for (int k = 0; k < view.sensed.uav_count(); ++k) {
+    for (const sim::Reading& r : view.sensed.readings(k)) {
+      if ((r.events & sim::kEventDetection) != 0 && view.map[r.index] == sim::kCorrosionSeen) {
+        pending_.push_back(r.index);
+      }
+    }
+  }
+  std::erase_if(pending_, [&](int i) { return view.map[i] != sim::kCorrosionSeen; });
+  for (auto& cells : prior_) {
+    std::erase_if(cells, [&](int i) { return view.map[i] != sim::kCorrosionSeen; });
+  }
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    actions[k] = decide_uav(static_cast<int>(k), view.uavs[k], view);
+  }
+}
+
+sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
+                                            const sim::PlannerView& view) {
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  if (u.failed) {
+    p = Uav{};
+    p.mode = Mode::kFailed;
+    return sim::Action::kHover;
+  }
+  if (u.in_transit()) return sim::Action::kHover;
+
+  if (p.mode == Mode::kPrior) {
+    // Inspect the prior's cells of the region first, nearest first, then sweep.
+    auto& cells = prior_[static_cast<std::size_t>(k)];
+    if (cells.empty()) {
+      if (u.z == 1) return sim::Action::kChangePlane;
+      p.mode = Mode::kSweep;
+    } else {
+      if (u.z == 2) return sim::Action::kChangePlane;
+      int best = -1;
+      int best_d = std::numeric_limits<int>::max();
+      for (int i : cells) {
+        const int d = grid::manhattan(u.pos, reach_position(u.pos, view.map.cell(i), h1_));
+        if (d < best_d) {
+          best_d = d;
+          best = i;
+        }
+      }
+      p.target = reach_position(u.pos, view.map.cell(best), h1_);
+      return sim::step_towards(u.pos, p.target);
+    }
+  }
+
+  if (p.mode == Mode::kSweep || p.mode == Mode::kReturn) {
+    if (u.z == 1) {  // arrived below for an inspection
+      p.mode = Mode::kInspect;
+    } else {
+      if (p.mode == Mode::kReturn && u.pos == p.resume) p.mode = Mode::kSweep;
+      if (p.mode == Mode::kSweep && options_.inspect_on_the_way) {
+        // Descend when a detected cell is abreast: its column within reach of the z = 1 footprint.
+        for (int i : pending_) {
+          const grid::Cell c = view.map.cell(i);
+          if (std::abs(c.x - u.pos.x) <= h1_ && std::abs(c.y - u.pos.y) <= h2_ &&
+              !claimed_by_other(k, i)) {
+            p.resume = u.pos;
+            return sim::Action::kChangePlane;
+          }
+        }
+      }
+      if (p.mode == Mode::kReturn) return sim::step_towards(u.pos, p.resume);
+      const sim::Action a = p.sweep.next_action(u.pos);
+      if (a != sim::Action::kHover) return a;
+      p.mode = Mode::kHelp;
+    }
+  }
+  if (p.mode == Mode::kDone)
+    p.mode = Mode::kHelp;  // work may have appeared (a failure, a claim freed)
+
+  if (p.mode == Mode::kInspect) {
+    if (u.z == 2) {  // climbed back: resume the sweep
+      p.mode = Mode::kReturn;
+      p.target_cell = -1;
+      return u.pos == p.resume ? decide_uav(k, u, view) : sim::step_towards(u.pos, p.resume);
+    }
+    const int cell = nearest_pending(k, u.pos, p.resume, radius_, view);
+    p.target_cell = cell;
+    if (cell < 0) return sim::Action::kChangePlane;
+    p.target = reach_position(u.pos, view.map.cell(cell), h1_);
+    return sim::step_towards(u.pos, p.target);
+  }
+
+  if (p.mode == Mode::kHelp) {
+    // Keep a target while it is still work; else take the nearest unclaimed work anywhere:
+    // detected cells first (inspected from z = 1), then unknown cells (covered from z = 2).
+    const bool target_done =
+        p.target_cell < 0 || (view.map[p.target_cell] != sim::kUnknown &&
+                              !(view.map[p.target_cell] == sim::kCorrosionSeen));
+    if (target_done) {
+      p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
+      if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
+      if (p.target_cell < 0) {
+        p.mode = Mode::kDone;
+        return sim::Action::kHover;
+      }
+    }
+    const grid::Cell c = view.map.cell(p.target_cell);
+    // A detected cell (seen at z = 2, M = 2) needs z = 1; anything else is covered from z = 2.
+    const bool inspect = view.map[p.target_cell] == sim::kCorrosionSeen &&
+                         (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0;
+    const int want_z = inspect ? 1 : 2;
+    p.target = reach_position(u.pos, c, inspect ? h1_ : h2_);
+    if (u.z != want_z) {
+      // Change plane where the work is: go there first at z = 2, climb at once from z = 1.
+      if (u.z == 2 && u.pos != p.target) return sim::step_towards(u.pos, p.target);
+      return sim::Action::kChangePlane;
+    }
+    return sim::step_towards(u.pos, p.target);
+  }
+  return sim::Action::kHover;  // kDone
+}
+
+bool SweepInspectPlanner::idle(const sim::PlannerView& view) const {
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    if (!view.uavs[k].failed && uavs_[k].mode != Mode::kDone) return false;
+  }
+  return true;
+}
+
+void SweepInspectPlanner::annotate(AnnotationSink& sink) const {
+  static constexpr const char* kNames[] = {"prior", "sweep", "inspect", "return",
+                                           "help",  "done",  "failed"};
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    const Uav& p = uavs_[k];
+    const bool sweeping = p.mode == Mode::kSweep;
+    sink.uav(static_cast<int>(k), kNames[static_cast<int>(p.mode)],
+             sweeping ? p.sweep.target() : p.target,
+             sweeping ? p.sweep.remaining() : std::span<const grid::Cell>());
+  }
+}
+
+}  // namespace hullinspect::planners

@@ -1,0 +1,91 @@
+#include "hullinspect/sim/lower_bound.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+namespace hullinspect::sim {
+
+namespace {
+
+long long ceil_div(long long a, long long b) {
+  return a <= 0 ? 0 : (a + b - 1) / b;
+}
+
+/// Fewest steps from `s` to a position whose footprint of half-width h holds `c`.
+int reach(grid::Cell s, grid::Cell c, int h) {
+  return std::max(0, std::abs(s.x - c.x) - h) + std::max(0, std::abs(s.y - c.y) - h);
+}
+
+/// Transit steps of the fleet for D arrivals at z = 1 in total: a UAV that starts at z = 2 pays u_z
+/// per descent and u_z per ascent between two of its descents, so the fleet pays at least
+/// u_z·max(D, 2·D − n). A UAV starting at z = 1 has its first arrival free and pays 2·u_z for each
+/// further one.
+long long transit_steps(long long d, int n, int uz, int start_z) {
+  if (start_z == 1) return d <= n ? 0 : 2LL * uz * (d - n);
+  return static_cast<long long>(uz) * std::max(d, 2 * d - n);
+}
+
+}  // namespace
+
+LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
+                       const world::MissionParams& params) {
+  const auto starts = world::start_cells(params, hull);
+  const int n = params.uavs;
+  const int s1 = params.s1;
+  const int s2 = params.s2;
+  const int uz = params.plane_change_steps();
+  const int h1 = (s1 - 1) / 2;
+  const int h2 = (s2 - 1) / 2;
+
+  long long hull_cells = 0;
+  long long corroded = 0;
+  int reach_c = 0;
+  int reach_m = 0;
+  for (int i : hull.cells()) {
+    ++hull_cells;
+    const grid::Cell c = hull.mask().cell(i);
+    const bool corr = truth[i] == 1;
+    if (corr) ++corroded;
+    int best = std::numeric_limits<int>::max();
+    for (const grid::Cell s : starts) {
+      // A clean cell is known once seen from either plane; a corroded one only from z = 1, which
+      // a UAV starting at z = 2 reaches after u_z steps of transit.
+      const int d = corr ? reach(s, c, h1) + (params.start_z == 2 ? uz : 0) : reach(s, c, h2);
+      best = std::min(best, d);
+    }
+    if (corr) reach_c = std::max(reach_c, best);
+    reach_m = std::max(reach_m, best);
+  }
+
+  // Rate: the fleet's step budget n·T must pay for A moves at z = 2, C moves at z = 1 and the
+  // transit of D descents. Observation: every observed cell lies in the z = 2 square around some
+  // position a UAV visited (the z = 1 footprint is inside it), and a walk of M moves grows that
+  // union by at most s2 cells per move, so s2·(A + C) >= hull cells − n·s2². Inspection: every
+  // corroded cell lies in some z = 1 footprint, new ones only on arrival at z = 1 (s1² each) or by
+  // a z = 1 move (s1 each), so s1²·D + s1·C >= corroded cells. Minimised over D.
+  const long long unseen = std::max(0LL, hull_cells - static_cast<long long>(n) * s2 * s2);
+  const long long s1sq = static_cast<long long>(s1) * s1;
+  long long best_m = std::numeric_limits<long long>::max();
+  long long best_c = std::numeric_limits<long long>::max();
+  const long long d_min = (corroded > 0 && params.start_z == 2) ? 1 : 0;
+  const long long d_max = std::max(d_min, ceil_div(corroded, s1sq));
+  for (long long d = d_min; d <= d_max; ++d) {
+    const long long c_moves = ceil_div(corroded - s1sq * d, s1);
+    const long long a_moves = ceil_div(unseen - static_cast<long long>(s2) * c_moves, s2);
+    const long long transit = transit_steps(d, n, uz, params.start_z);
+    best_m = std::min(best_m, a_moves + c_moves + transit);
+    best_c = std::min(best_c, c_moves + transit);
+  }
+
+  LowerBound b;
+  b.rate_t_m = static_cast<int>(ceil_div(best_m, n));
+  b.rate_t_c = corroded == 0 ? 0 : static_cast<int>(ceil_div(best_c, n));
+  b.reach_t_m = reach_m;
+  b.reach_t_c = corroded == 0 ? 0 : reach_c;
+  b.t_c = std::max(b.rate_t_c, b.reach_t_c);
+  b.t_m = std::max({b.rate_t_m, b.reach_t_m, b.t_c});
+  return b;
+}
+
+}  // namespace hullinspect::sim

@@ -1,0 +1,113 @@
+// Mesh files → triangles, through Assimp (STL ASCII/binary, OBJ, PLY) and zlib (gzip in memory).
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <fmt/format.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cctype>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/world/mesh_hull.hpp"
+
+namespace hullinspect::world {
+
+namespace {
+
+bool is_gzip(std::string_view bytes) {
+  return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
+         static_cast<unsigned char>(bytes[1]) == 0x8b;
+}
+
+std::string inflate_gzip(std::string_view bytes, const std::string& source) {
+  z_stream z{};
+  if (inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) throw InputError(source, 0, "cannot start zlib");
+  std::string out;
+  out.resize(std::min<std::size_t>(kMaxMeshBytes, std::max<std::size_t>(bytes.size() * 4, 4096)));
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = static_cast<uInt>(bytes.size());
+  std::size_t produced = 0;
+  int status = Z_OK;
+  while (status != Z_STREAM_END) {
+    if (produced == out.size()) {
+      if (out.size() >= kMaxMeshBytes) {
+        inflateEnd(&z);
+        throw InputError(
+            source, 0, fmt::format("decompressed mesh is larger than {} MiB", kMaxMeshBytes >> 20));
+      }
+      out.resize(std::min(kMaxMeshBytes, out.size() * 2));
+    }
+    z.next_out = reinterpret_cast<Bytef*>(out.data() + produced);
+    z.avail_out = static_cast<uInt>(out.size() - produced);
+    status = inflate(&z, Z_NO_FLUSH);
+    produced = out.size() - z.avail_out;
+    if (status != Z_OK && status != Z_STREAM_END) {
+      inflateEnd(&z);
+      throw InputError(source, 0, "corrupt gzip data");
+    }
+    if (status == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
+      inflateEnd(&z);
+      throw InputError(source, 0, "truncated gzip data");
+    }
+  }
+  inflateEnd(&z);
+  out.resize(produced);
+  return out;
+}
+
+}  // namespace
+
+std::vector<MeshTriangle> read_mesh(std::string_view bytes, std::string_view hint,
+                                    const std::string& source) {
+  std::string inflated;
+  if (is_gzip(bytes)) {
+    inflated = inflate_gzip(bytes, source);
+    bytes = inflated;
+  }
+  if (bytes.size() > kMaxMeshBytes) {
+    throw InputError(source, 0, fmt::format("mesh is larger than {} MiB", kMaxMeshBytes >> 20));
+  }
+  if (bytes.empty()) throw InputError(source, 0, "the mesh file is empty");
+  std::string format(hint);
+  std::transform(format.begin(), format.end(), format.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (format != "stl" && format != "obj" && format != "ply") {
+    throw InputError(source, 0,
+                     fmt::format("unknown mesh format '{}'; expected stl, obj or ply", format));
+  }
+  Assimp::Importer importer;
+  // Only the geometry matters: no normals, materials or vertex joining (speed).
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = importer.ReadFileFromMemory(
+      bytes.data(), bytes.size(),
+      aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType,
+      format.c_str());
+  if (scene == nullptr) {
+    std::string why = importer.GetErrorString();
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    throw InputError(source, 0, fmt::format("not a readable {} mesh ({})", format, why));
+  }
+  std::vector<MeshTriangle> triangles;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      MeshTriangle t;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const unsigned index = face.mIndices[k];
+        if (index >= mesh->mNumVertices)
+          throw InputError(source, 0, "a face index is out of range");
+        const aiVector3D& p = mesh->mVertices[index];
+        t.v[k] = {static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(p.z)};
+      }
+      triangles.push_back(t);
+    }
+  }
+  if (triangles.empty()) throw InputError(source, 0, "the mesh has no triangles");
+  return triangles;
+}
+
+}  // namespace hullinspect::world

@@ -1,0 +1,143 @@
+// OutputSet: outputs never destroy an input, never replace a device or directory, and a command
+// that fails before commit() leaves nothing behind.
+
+#include "hullinspect/io/output_set.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/bounded_read.hpp"
+#include "support/cli_runner.hpp"
+
+namespace hullinspect::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+void put(const fs::path& p, const std::string& s) {
+  std::ofstream(p) << s;
+}
+
+std::string problem(const OutputSet& set) {
+  try {
+    set.check();
+  } catch (const ParameterError& e) {
+    return e.name() + ": " + e.problem();
+  }
+  return "ok";
+}
+
+TEST(OutputSet, RefusesAnOutputThatIsAnInputUnderAnotherName) {
+  const fs::path dir = testing::make_temp_dir("output_set_same");
+  put(dir / "t.json", "{}");
+  fs::create_symlink(dir / "t.json", dir / "link.json");
+  fs::create_hard_link(dir / "t.json", dir / "hard.json");
+  for (const fs::path& out : {dir / "." / "t.json", dir / "link.json", dir / "hard.json",
+                              dir / "sub" / ".." / "t.json"}) {
+    fs::create_directories(dir / "sub");
+    OutputSet set;
+    set.add_input(dir / "t.json", "trace");
+    set.add_output(out, "out");
+    EXPECT_NE(problem(set).find("is the same file as the trace"), std::string::npos) << out;
+  }
+}
+
+TEST(OutputSet, RefusesTwoOutputsOnOneFile) {
+  const fs::path dir = testing::make_temp_dir("output_set_twice");
+  OutputSet set;
+  set.add_output(dir / "a.json", "trace");
+  set.add_output(dir / "x" / ".." / "a.json", "html");
+  fs::create_directories(dir / "x");
+  EXPECT_NE(problem(set).find("html: "), std::string::npos);
+  EXPECT_NE(problem(set).find("same file as the output of --trace"), std::string::npos);
+}
+
+TEST(OutputSet, RefusesDevicesFifosSocketsAndDirectories) {
+  const fs::path dir = testing::make_temp_dir("output_set_kinds");
+  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un addr{};
+  addr.sun_family = AF_UNIX;
+  const std::string sock_path = (dir / "sock").string();
+  ASSERT_LT(sock_path.size(), sizeof addr.sun_path);
+  std::copy(sock_path.begin(), sock_path.end(), addr.sun_path);
+  ASSERT_EQ(::bind(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  const std::pair<fs::path, const char*> cases[] = {{"/dev/null", "a character device"},
+                                                    {dir / "fifo", "a FIFO"},
+                                                    {dir / "sock", "a socket"},
+                                                    {dir, "a directory"}};
+  for (const auto& [path, kind] : cases) {
+    OutputSet set;
+    set.add_output(path, "trace");
+    EXPECT_EQ(problem(set), "trace: '" + path.string() + "' is " + kind +
+                                "; an output must be a regular file or a new path");
+  }
+  ::close(sock);
+  OutputSet dir_set;
+  dir_set.add_output_dir("/dev/null", "out");
+  EXPECT_EQ(problem(dir_set), "out: '/dev/null' is a character device, expected a directory");
+}
+
+TEST(OutputSet, RefusesAMissingDirectoryBeforeAnythingIsWritten) {
+  const fs::path dir = testing::make_temp_dir("output_set_parent");
+  OutputSet set;
+  set.add_output(dir / "ok.json", "trace");
+  set.add_output(dir / "nodir" / "x.html", "html");
+  EXPECT_EQ(problem(set), "html: cannot write '" + (dir / "nodir" / "x.html").string() +
+                              "': directory '" + (dir / "nodir").string() + "' does not exist");
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(OutputSet, CommitsTogetherAndLeavesNothingWhenAbandoned) {
+  const fs::path dir = testing::make_temp_dir("output_set_commit");
+  put(dir / "a.txt", "old a");
+  {
+    OutputSet set;
+    set.add_output(dir / "a.txt", "a");
+    set.add_output(dir / "b.txt", "b");
+    set.check();
+    set.write(dir / "a.txt", "new a");
+    set.write(dir / "b.txt", "new b");
+    EXPECT_EQ(read_file(dir / "a.txt"), "old a");  // nothing replaced before commit()
+    EXPECT_FALSE(fs::exists(dir / "b.txt"));
+  }  // abandoned: the temporaries are removed
+  EXPECT_EQ(read_file(dir / "a.txt"), "old a");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
+  OutputSet set;
+  set.add_output(dir / "a.txt", "a");
+  set.add_output(dir / "b.txt", "b");
+  set.check();
+  set.write(dir / "a.txt", "new a");
+  set.write(dir / "b.txt", "new b");
+  set.commit();
+  EXPECT_EQ(read_file(dir / "a.txt"), "new a");
+  EXPECT_EQ(read_file(dir / "b.txt"), "new b");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 2);
+}
+
+TEST(ReadFile, StopsAtItsLimitAndRefusesDirectories) {
+  try {
+    read_file("/dev/zero", 1 << 20);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "/dev/zero: is larger than the 1 MiB limit for this input");
+  }
+  try {
+    read_file("/", 1 << 20);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "/: is a directory, expected a file");
+  }
+}
+
+}  // namespace
+}  // namespace hullinspect::io

@@ -1,0 +1,191 @@
+// Beyond the paper (docs/beyond.md): failures seen by whole missions, the oracle against the
+// analytic lower bound, and Sweep-Inspect's completion, truth-blindness and work sharing.
+
+#include <gtest/gtest.h>
+
+#include "hullinspect/planners/mission.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/world/scenario.hpp"
+#include "hullinspect/sim/lower_bound.hpp"
+#include "support/mission_checker.hpp"
+#include "support/truth_blindness.hpp"
+
+namespace hullinspect::planners {
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kSeeds = 1;
+#else
+constexpr int kSeeds = 3;
+#endif
+
+MissionSpec spec_for(const std::string& algorithm, const std::string& scenario_name, int s2, int n,
+                     std::uint64_t seed) {
+  MissionSpec spec;
+  spec.algorithm = algorithm;
+  spec.params.uavs = n;
+  spec.params.s2 = s2;
+  spec.corrosion = world::scenario(scenario_name).corrosion(world::default_hull().width());
+  spec.seed = seed;
+  return spec;
+}
+
+TEST(Failures, PartTspLeavesAFailedUavsRegionUndoneAndReportsIncomplete) {
+  const auto& hull = world::default_hull();
+  for (const char* algorithm : {"part-tsp", "lawnmower"}) {
+    auto spec = spec_for(algorithm, "perfect", 7, 4, 3);
+    spec.failures.at = {{2, 40}};
+    testing::MissionChecker checker;
+    MissionOptions options;
+    options.observers = {&checker};
+    const auto r = run_mission(spec, hull, options);
+    SCOPED_TRACE(algorithm);
+    EXPECT_FALSE(r.complete);
+    EXPECT_FALSE(r.t_m.has_value());
+    EXPECT_TRUE(r.stopped_idle);  // ended when the working UAVs were done, not at the time limit
+    EXPECT_LT(r.steps, spec.params.time_limit);
+    EXPECT_EQ(r.failed_uavs, 1);
+    EXPECT_TRUE(checker.ok());
+  }
+}
+
+TEST(Failures, RandomFailuresArePairedAcrossPlanners) {
+  const auto& hull = world::default_hull();
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    std::vector<std::vector<int>> failed_at;
+    for (const char* algorithm : {"coop-frontier", "sweep-inspect", "lawnmower"}) {
+      auto spec = spec_for(algorithm, "imperfect", 9, 5, seed);
+      spec.failures.one_within = 150;
+      const auto r = run_mission(spec, hull);
+      std::vector<int> at;
+      for (const auto& u : r.uavs) at.push_back(u.failed_at);
+      failed_at.push_back(at);
+      if (std::string(algorithm) != "lawnmower") {
+        EXPECT_TRUE(r.complete) << algorithm;
+      }
+    }
+    EXPECT_EQ(failed_at[0], failed_at[1]);
+    // The lawnmower may end (idle) before a late failure: compare only failures that happened.
+    for (std::size_t k = 0; k < failed_at[2].size(); ++k) {
+      if (failed_at[2][k] >= 0) {
+        EXPECT_EQ(failed_at[2][k], failed_at[0][k]);
+      }
+    }
+  }
+}
+
+TEST(Failures, EveryUavFailedEndsTheMission) {
+  auto spec = spec_for("coop-frontier", "perfect", 7, 2, 1);
+  spec.failures.at = {{0, 10}, {1, 12}};
+  const auto r = run_mission(spec, world::default_hull());
+  EXPECT_FALSE(r.complete);
+  EXPECT_EQ(r.steps, 13);
+  EXPECT_FALSE(r.stopped_idle);
+}
+
+TEST(LowerBound, NoPlannerBeatsTheBoundAndTheOracleBeatsThePaperPlannersOnPerfectPriors) {
+  const auto& hull = world::default_hull();
+  for (const char* sc : {"perfect", "combined"}) {
+    for (int s2 : {7, 11}) {
+      for (int n : {4, 8}) {
+        for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(kSeeds); ++seed) {
+          const auto spec0 = spec_for("lawnmower", sc, s2, n, seed);
+          const auto instance = world::generate_instance(hull, spec0.corrosion, seed);
+          const auto bound = sim::lower_bound(hull, instance.truth, spec0.params);
+          EXPECT_GT(bound.t_m, 0);
+          EXPECT_LE(bound.t_c, bound.t_m);
+          for (const char* algorithm :
+               {"oracle-part-tsp", "lawnmower", "part-tsp", "coop-frontier", "sweep-inspect"}) {
+            const auto r = run_mission(spec_for(algorithm, sc, s2, n, seed), hull);
+            SCOPED_TRACE(::testing::Message() << algorithm << " " << sc << " s2=" << s2
+                                              << " n=" << n << " seed=" << seed);
+            ASSERT_TRUE(r.complete);
+            EXPECT_GE(*r.t_c, bound.t_c);
+            EXPECT_GE(*r.t_m, bound.t_m);
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(LowerBound, RateAndReachOnAHandInstance) {
+  // A 40 × 3 strip, one UAV at (1, 1), s2 = 3, s1 = 1 (u_z = 1), one corroded cell at (39, 1).
+  const world::HullMask hull(grid::Grid<std::uint8_t>(40, 3, 1), "test");
+  grid::Grid<std::int8_t> truth(40, 3, 0);
+  truth(39, 1) = 1;
+  world::MissionParams params;
+  params.uavs = 1;
+  params.s1 = 1;
+  params.s2 = 3;
+  params.starts = {{1, 1}};
+  const auto b = sim::lower_bound(hull, truth, params);
+  // Reach: the corroded cell needs the UAV above it at z = 1: 38 moves + 1 descent.
+  EXPECT_EQ(b.reach_t_c, 39);
+  // Rate: 120 cells, 9 seen at t = 0, 3 new per move: 37 moves; plus one descent.
+  EXPECT_EQ(b.rate_t_m, 38);
+  EXPECT_EQ(b.t_m, 39);
+  EXPECT_EQ(b.t_c, 39);
+}
+
+struct Cell {
+  std::string scenario;
+  int s2;
+};
+class SweepInspectMatrix : public ::testing::TestWithParam<Cell> {};
+
+TEST_P(SweepInspectMatrix, CompletesUnderTheCheckerWithAndWithoutFailures) {
+  const auto& hull = world::default_hull();
+  for (int n : {4, 5, 6, 7, 8}) {
+    for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(kSeeds); ++seed) {
+      for (bool failure : {false, true}) {
+        auto spec = spec_for("sweep-inspect", GetParam().scenario, GetParam().s2, n, seed);
+        if (failure) spec.failures.one_within = 200;
+        testing::MissionChecker checker;
+        MissionOptions options;
+        options.observers = {&checker};
+        const auto r = run_mission(spec, hull, options);
+        SCOPED_TRACE(::testing::Message() << GetParam().scenario << " s2=" << GetParam().s2 << " n="
+                                          << n << " seed=" << seed << " failure=" << failure);
+        ASSERT_TRUE(r.complete);  // with a failure: the others took over the failed UAV's work
+        EXPECT_TRUE(checker.ok());
+        EXPECT_EQ(r.failed_uavs, failure ? 1 : 0);
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllScenarios, SweepInspectMatrix,
+                         ::testing::Values(Cell{"perfect", 7}, Cell{"imperfect", 9},
+                                           Cell{"inhomogeneous", 11}, Cell{"combined", 7},
+                                           Cell{"combined", 11}),
+                         [](const auto& test) {
+                           return test.param.scenario + "_s2_" + std::to_string(test.param.s2);
+                         });
+
+TEST(SweepInspect, IsTruthBlind) {
+  for (int s2 : {7, 11}) {
+    world::MissionParams params;
+    params.uavs = 4;
+    params.s2 = s2;
+    for (const auto& options : {OptionMap{}, OptionMap{{"prior-weights", "true"}}}) {
+      EXPECT_TRUE(testing::planner_is_truth_blind("sweep-inspect", options, params, 5));
+    }
+  }
+}
+
+TEST(SweepInspect, WithoutHelpAFailedUavsRegionStaysUndone) {
+  auto spec = spec_for("sweep-inspect", "perfect", 7, 4, 2);
+  spec.planner_options = {{"help", "false"}};
+  spec.failures.at = {{1, 30}};
+  testing::MissionChecker checker;
+  MissionOptions options;
+  options.observers = {&checker};
+  const auto r = run_mission(spec, world::default_hull(), options);
+  EXPECT_FALSE(r.complete);
+  EXPECT_TRUE(r.stopped_idle);
+  EXPECT_TRUE(checker.ok());
+}
+
+}  // namespace
+}  // namespace hullinspect::planners

@@ -1,0 +1,63 @@
+// Whole missions of every planner on mesh hulls: a Wigley hull and the DTC (when installed), with
+// generated maps and with the user's own truth, under the shared MissionChecker.
+#include <gtest/gtest.h>
+
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/world/scenario.hpp"
+#include "hullinspect/world/mesh_hull.hpp"
+#include "support/mesh_fixtures.hpp"
+#include "support/mission_checker.hpp"
+
+namespace hullinspect::planners {
+namespace {
+
+const char* const kPlanners[] = {"lawnmower", "part-tsp", "part-tsp0", "coop-frontier"};
+
+void run_every_planner(const world::HullMask& hull, int uavs, int s2, const world::UserMaps& maps) {
+  for (const char* algorithm : kPlanners) {
+    MissionSpec spec;
+    spec.algorithm = algorithm;
+    spec.params.uavs = uavs;
+    spec.params.s2 = s2;
+    spec.params.cell_size_m = hull.geometry()->cell_size;
+    spec.seed = 5;
+    spec.corrosion = world::scenario("imperfect").corrosion(hull.width());
+    spec.maps = maps;
+    testing::MissionChecker checker;
+    MissionOptions options;
+    options.observers = {&checker};
+    const auto r = run_mission(spec, hull, options);
+    EXPECT_TRUE(r.complete) << algorithm << " on " << hull.source();
+    EXPECT_TRUE(checker.ok()) << algorithm;
+    EXPECT_EQ(r.hull_cells, hull.cell_count());
+  }
+}
+
+TEST(MeshHullMissions, EveryPlannerCompletesOnAWigleyHull) {
+  world::MeshImportOptions o;
+  o.cell_size = 1.0;  // 100 × 8 cells
+  const world::HullMask hull =
+      world::import_mesh_file(testing::wigley_stl(testing::WigleyHull{}), o).hull;
+  run_every_planner(hull, 3, 7, {});
+  // With the user's own truth: one corroded strip along the keel.
+  auto truth = std::make_shared<world::CorrosionMap>();
+  truth->source = "keel";
+  truth->cells = grid::Grid<std::int8_t>(hull.width(), hull.height(), -1);
+  for (int i : hull.cells()) truth->cells[i] = hull.mask().cell(i).y == 0 ? 1 : 0;
+  world::UserMaps maps;
+  maps.truth = truth;
+  run_every_planner(hull, 3, 7, maps);
+}
+
+TEST(MeshHullMissions, EveryPlannerCompletesOnTheDtc) {
+  std::string why;
+  const auto dtc = testing::installed_dtc(why);
+  if (!dtc) GTEST_SKIP() << why;
+  world::MeshImportOptions o = world::dtc_options();
+  o.cell_size = 4.0;  // 94 × 9 cells keeps the four missions short
+  const world::HullMask hull = world::import_mesh_file(*dtc, o).hull;
+  run_every_planner(hull, 4, 7, {});
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
