@@ -68,7 +68,7 @@ class PythonPlanner final : public planners::Planner {
     py::gil_scoped_acquire gil;
     py::list uavs;
     for (const auto& u : view.uavs) {
-      uavs.append(py::make_tuple(u.pos.x, u.pos.y, u.z, u.in_transit(), !u.active));
+      uavs.append(py::make_tuple(u.pos.x, u.pos.y, u.z, u.in_transit(), u.failed));
     }
     py::object ns = py::module_::import("types").attr("SimpleNamespace");
     py::object v = ns(py::arg("t") = view.time, py::arg("map") = grid_array(view.map),

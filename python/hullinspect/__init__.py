@@ -9,19 +9,18 @@ import json
 import os
 import shutil
 import tempfile
+import types
 
 import numpy as np
 
 from . import _core
 from ._core import Hull, Instance
 
-__all__ = ["Hull", "Instance", "MissionResult", "Planner", "make_instance", "run_mission",
-           "run_experiment", "to_dataframe", "register_planner", "catalog"]
+__all__ = ["Hull", "Instance", "MissionResult", "Planner", "Session", "make_instance",
+           "run_mission", "run_experiment", "to_dataframe", "register_planner", "catalog"]
 
-# Keyword parameters of run_mission that are mission parameters (MissionParams) or scenario
-# options; anything else is a planner option. Python spells them with '_', the CLI with '-'.
-_MISSION_KEYS = {"s1", "theta", "start-z", "time-limit"}
-_SCENARIO_KEYS = {"p-c", "l-c", "front-p-c", "front-l-c", "p-tp", "p-fp"}
+# run --json keys that describe the mission rather than count something.
+_SUMMARY_KEYS = {"algorithm", "uavs", "s1", "s2", "seed", "complete", "T_c", "T_m"}
 
 
 def _text(value):
@@ -30,19 +29,17 @@ def _text(value):
     return str(value)
 
 
-def _split_params(params, options):
-    mission, scenario, planner = {}, {}, {}
-    for key, value in (options or {}).items():
-        planner[str(key)] = _text(value)
-    for key, value in params.items():
-        name = key.replace("_", "-")
-        if name in _MISSION_KEYS:
-            mission[name] = _text(value)
-        elif name in _SCENARIO_KEYS:
-            scenario[name] = _text(value)
-        else:
-            planner[name] = _text(value)
-    return mission, scenario, planner
+def _hull_arguments(hull):
+    """(Hull object or None, path for --hull or "")."""
+    if hull is None or isinstance(hull, Hull):
+        return hull, ""
+    return None, os.fspath(hull)
+
+
+def _words(algorithm, uavs, s2, seed, scenario, hull_path, options, params):
+    """The `hullinspect run` command line for these arguments (parsed by the CLI's own parser)."""
+    return _core.mission_words(str(algorithm), uavs, s2, seed, str(scenario), hull_path,
+                               dict(options or {}), params)
 
 
 class MissionResult:
@@ -56,9 +53,7 @@ class MissionResult:
         self.T_m = summary["T_m"]
         self.c = np.asarray(raw["c"], dtype=float)
         self.m = np.asarray(raw["m"], dtype=float)
-        self.counters = {k: v for k, v in summary.items()
-                         if k not in ("algorithm", "uavs", "s1", "s2", "seed", "complete", "T_c",
-                                      "T_m")}
+        self.counters = {k: v for k, v in summary.items() if k not in _SUMMARY_KEYS}
 
     def __repr__(self):
         return (f"MissionResult({self.summary['algorithm']}, complete={self.complete}, "
@@ -69,22 +64,23 @@ def run_mission(algorithm="part-tsp", uavs=4, s2=7, seed=1, scenario="perfect", 
                 options=None, **params):
     """Simulates one mission, like `hullinspect run --json`.
 
-    params: s1, theta, start_z, time_limit (mission); p_c, l_c, front_p_c, front_l_c, p_tp, p_fp
-    (scenario overrides); anything else, or `options` (a dict with the CLI's kebab-case keys), is a
-    planner option, e.g. r1=3 or options={"tsp.dp-max-segments": 12}.
+    hull: None (the default hull), a Hull, or anything --hull takes (a path, "dtc").
+    params: every other option of `hullinspect run` with '_' for '-' (s1=5, theta=90, p_c=0.01,
+    time_limit=900, r1=3, partitioner="stripes", starts=[(0, 15), (100, 15)], fail=["1@40"],
+    prior="prior.txt", …); a keyword that is not one of them, and every entry of `options` (a dict
+    with the CLI's KEY=VALUE keys, e.g. {"tsp.max-segments": 12}), is a planner option (-O).
     """
-    if isinstance(hull, str):
-        hull = Hull.load(hull)
-    mission, scenario_options, planner = _split_params(params, options)
-    raw = _core.run_mission(algorithm, int(uavs), int(s2), int(seed), scenario, hull, planner,
-                            mission, scenario_options)
-    return MissionResult(raw)
+    hull_object, hull_path = _hull_arguments(hull)
+    words = _words(algorithm, uavs, s2, seed, scenario, hull_path, options, params)
+    return MissionResult(_core.run_mission(words, hull_object))
 
 
 def make_instance(hull, seed, scenario="perfect", **params):
     """Draws C (.truth) and C' (.prior) for a hull, a seed and a scenario (with p_c=… overrides)."""
-    if isinstance(hull, str):
-        hull = Hull.load(hull)
+    if hull is None:
+        hull = Hull.default()
+    elif not isinstance(hull, Hull):
+        hull = Hull.load(os.fspath(hull))
     options = {k.replace("_", "-"): _text(v) for k, v in params.items()}
     return _core.make_instance(hull, int(seed), scenario, options)
 
@@ -153,10 +149,60 @@ def register_planner(name, cls, description=None):
     run_experiment; each mission gets a new instance. Names cannot be registered twice."""
     if not (isinstance(cls, type) and issubclass(cls, Planner)):
         raise ValueError(f"register_planner: {cls!r} is not a subclass of hullinspect.Planner")
-    _core.register_planner(name, cls, description or (cls.__doc__ or "a Python planner").strip())
+    if description is None:
+        description = (cls.__doc__ or "a Python planner").strip().splitlines()[0]
+    _core.register_planner(str(name), cls, description)
 
 
 def catalog(kind=""):
     """What `hullinspect list KIND --json` prints: planners, partitioners, tsp-solvers, scenarios,
     presets with their declared options."""
     return json.loads(_core.catalog(kind))
+
+
+class Session:
+    """A live mission: the planner steered by what the cameras saw (docs/python.md, "Live session").
+
+    Session(algorithm, hull=None, prior=None, uavs=4, s2=7, options=None, **params) takes the
+    mission options of run_mission except the instance (scenario, seed, truth, failures): the
+    truth is what step() is told. prior: C' as None (no expected corrosion), a map file (any
+    hull-mask format) or an array [y][x] with 1 on expected corrosion.
+
+    step(readings, failed=()) applies the actions returned by the previous step (none before the
+    first), takes `readings` — (x, y, plane, corroded) for every hull cell in the footprint of
+    every UAV on a plane, exactly the cells expected_readings(failed) lists — and returns the next
+    action per UAV ("N", "S", "E", "W", "hover", "change"), or [] once the mission has finished.
+    `failed` lists UAVs that failed before carrying out the previous actions (they sense nothing
+    from then on). Bad readings raise ValueError and change nothing.
+    """
+
+    def __init__(self, algorithm, hull=None, prior=None, uavs=4, s2=7, options=None, **params):
+        for key in ("scenario", "seed"):
+            if key in params:
+                raise ValueError(f"Session: {key} does not apply to a live session (the readings "
+                                 "are the truth)")
+        hull_object, hull_path = _hull_arguments(hull)
+        words = _words(algorithm, uavs, s2, 1, "perfect", hull_path, options, params)
+        self._session = _core.Session(words, hull_object, prior)
+
+    def step(self, readings, failed=()):
+        return self._session.step(readings, [int(k) for k in failed])
+
+    def expected_readings(self, failed=()):
+        """The (x, y, plane) cells the next step's readings must cover, in (y, x, plane) order."""
+        return self._session.expected_readings([int(k) for k in failed])
+
+    @property
+    def state(self):
+        """t, map (M, int8 [y][x]), uavs [(x, y, z, in_transit, failed)], finished, complete."""
+        s = self._session
+        return types.SimpleNamespace(t=s.t, map=s.map, uavs=s.uavs, finished=s.finished,
+                                     complete=s.complete)
+
+    @property
+    def finished(self):
+        return self._session.finished
+
+    def result(self):
+        """The mission so far as a MissionResult (T_c and c count the corrosion reported)."""
+        return MissionResult(self._session.result())
