@@ -155,6 +155,7 @@
           }
         });
       }
+      this.drawNoFly(ctx);
       const states = [];
       for (let k = 0; k < r.uavCount; ++k) states.push(r.uavState(t, k));
       if (this.show.footprints) {
@@ -225,6 +226,33 @@
         ctx.lineWidth = 1.5;
         ctx.strokeStyle = HOVER_MARK;
         ctx.strokeRect(px - 2.5, py - 2.5, cp + 5, cp + 5);
+      }
+    }
+
+    // No-fly positions hatched (black diagonals), unreachable hull cells cross-hatched (grey: seen
+    // only from z = 2; dark: never seen).
+    drawNoFly(ctx) {
+      const r = this.replay;
+      if (!r.noFly && !r.unreachable) return;
+      const cp = this.cellPx;
+      ctx.lineWidth = 1;
+      for (let i = 0; i < r.W * r.H; ++i) {
+        const nf = r.noFly ? r.noFly[i] : 0;
+        const un = r.unreachable ? r.unreachable[i] : 0;
+        if (!nf && !un) continue;
+        const x = (i % r.W) * cp;
+        const y = (r.H - 1 - Math.floor(i / r.W)) * cp;
+        ctx.beginPath();
+        if (nf) {
+          ctx.moveTo(x, y + cp);
+          ctx.lineTo(x + cp, y);
+        }
+        if (un) {
+          ctx.moveTo(x, y);
+          ctx.lineTo(x + cp, y + cp);
+        }
+        ctx.strokeStyle = nf ? '#111' : (un === 2 ? '#444' : '#999');
+        ctx.stroke();
       }
     }
 

@@ -40,6 +40,10 @@
       this.truth = this.parseRows(trace.truth);
       this.prior = this.parseRows(trace.prior);
       this.owner = trace.partition ? this.parseRows(trace.partition, true) : null;
+      // No-fly zones (docs/model.md): '#' no-fly positions; 'd' hull cells only z = 2 sees, 'x'
+      // hull cells no footprint sees. Both absent from traces without no-fly zones.
+      this.noFly = trace.no_fly ? this.parseSymbols(trace.no_fly, {'#': 1}) : null;
+      this.unreachable = trace.unreachable ? this.parseSymbols(trace.unreachable, {d: 1, x: 2}) : null;
       this.indexChanges();
       this.indexUavs();
       this.indexFirstSeen();
@@ -47,6 +51,15 @@
       this.buildKeyframes();
       this.t = this.lastT;
       this.seek(0);
+    }
+
+    // rows[y] strings (y = 0 bottom) → Int8Array by flat index y * W + x; symbols → values, else 0.
+    parseSymbols(rows, values) {
+      const out = new Int8Array(this.W * this.H);
+      for (let y = 0; y < this.H; ++y) {
+        for (let x = 0; x < this.W; ++x) out[y * this.W + x] = values[rows[y][x]] || 0;
+      }
+      return out;
     }
 
     // rows[y] strings (y = 0 bottom) → Int8Array by flat index y * W + x; '.' → -1.

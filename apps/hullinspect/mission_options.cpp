@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/world/no_fly.hpp"
 #include "hullinspect/core/parameters.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/scenario.hpp"
@@ -117,7 +118,28 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
                  "generated one")
       ->type_name("FILE");
   add_mesh_options(cmd, a.mesh);
+  add_no_fly_options(cmd, a.no_fly, a.no_fly_boxes);
   cmd.footer("Planners and their options (-O KEY=VALUE):\n" + planner_help);
+}
+
+void add_no_fly_options(CLI::App& cmd, std::string& file, std::vector<std::string>& boxes) {
+  cmd.add_option("--no-fly", file,
+                 "No-fly positions: a mask the hull's size (text or PGM; hull-marked cells are "
+                 "no-fly; see docs/model.md)")
+      ->type_name("FILE");
+  cmd.add_option("--no-fly-box", boxes,
+                 "A no-fly rectangle of cells, corners inclusive (repeatable)")
+      ->type_name("X0,Y0,X1,Y1");
+}
+
+std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& file,
+                                                             const std::vector<std::string>& boxes,
+                                                             const world::HullMask& hull) {
+  if (file.empty() && boxes.empty()) return nullptr;
+  std::vector<world::CellBox> cell_boxes;
+  for (const auto& b : boxes) cell_boxes.push_back(world::parse_cell_box(b, "no-fly-box"));
+  return std::make_shared<const grid::Grid<std::uint8_t>>(
+      world::make_no_fly_mask(hull, file, cell_boxes));
 }
 
 world::HullMask load_mission_hull(const MissionArgs& a) {
@@ -138,6 +160,7 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   p.time_limit = a.time_limit;
   if (hull.geometry()) p.cell_size_m = hull.geometry()->cell_size;
   for (const auto& s : a.starts) p.starts.push_back(parse_xy(s));
+  p.no_fly = build_no_fly(a.no_fly, a.no_fly_boxes, hull);
 
   OptionMap scenario_options;
   auto set = [&](const char* key, const std::optional<std::string>& v) {

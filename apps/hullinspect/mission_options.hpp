@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,12 +30,21 @@ struct MissionArgs {
   int time_limit = world::MissionParams{}.time_limit;
   std::optional<std::string> partitioner, partition_seed, tsp_solver, r1, r2, alpha, beta;
   std::vector<std::string> planner_options;  // key=value
+  std::string no_fly;                        // mask file of no-fly positions ("" = none)
+  std::vector<std::string> no_fly_boxes;     // X0,Y0,X1,Y1 (cells, inclusive)
   std::vector<std::string> fail;             // UAV@STEP
   double fail_rate = 0;
   int fail_one_within = 0;
   MeshArgs mesh;                             // how a mesh --hull is imported
   std::string prior, truth;                  // the user's C′ and C (any hull-mask format)
 };
+
+/// Adds --no-fly FILE and --no-fly-box X0,Y0,X1,Y1 (repeatable) to a command.
+void add_no_fly_options(CLI::App& cmd, std::string& file, std::vector<std::string>& boxes);
+/// The no-fly mask the options describe for `hull`, or null when they name none.
+std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& file,
+                                                             const std::vector<std::string>& boxes,
+                                                             const world::HullMask& hull);
 
 void add_mission_options(CLI::App& cmd, MissionArgs& args);
 world::HullMask load_mission_hull(const MissionArgs& args);

@@ -15,6 +15,8 @@
 #include "hullinspect/io/output_set.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "hullinspect/world/no_fly.hpp"
+#include "mission_options.hpp"
 #include "number_options.hpp"
 
 namespace hullinspect::cli {
@@ -34,6 +36,8 @@ struct PartitionArgs {
   std::vector<std::string> options;  // key=value
   bool json = false;
   std::string out_path;
+  std::string no_fly;
+  std::vector<std::string> no_fly_boxes;
   MeshArgs mesh;  // how a mesh --hull is imported
 };
 
@@ -154,6 +158,7 @@ int run_partition(const PartitionArgs& args) {
   world::MissionParams params;
   params.uavs = args.uavs;
   for (const auto& s : args.starts) params.starts.push_back(parse_xy(s));
+  params.no_fly = build_no_fly(args.no_fly, args.no_fly_boxes, hull);
   try {
     world::validate(params, hull);
   } catch (const ParameterError& e) {
@@ -178,6 +183,12 @@ int run_partition(const PartitionArgs& args) {
   request.hull = &hull;
   request.starts = world::start_cells(params, hull);
   request.seed = args.seed;
+  if (params.no_fly) {
+    // DARP's initial distances follow the shortest flights around the no-fly zones.
+    request.allowed = world::compute_reachability(hull, params.no_fly.get(), params.s1, params.s2,
+                                                  request.starts)
+                          .flyable;
+  }
   reject_shared_starts(params.starts, request.starts);
   const partition::Partition result = partitioner->partition(request);
   const auto connected = connected_regions(hull, result, args.uavs);
@@ -230,6 +241,7 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
                   "Partitioner option as key=value, e.g. iteration-limit=500 (repeatable; listed "
                   "below)")
       ->type_name("KEY=VALUE");
+  add_no_fly_options(*cmd, args->no_fly, args->no_fly_boxes);
   cmd->add_flag("--json", args->json,
                 "Print one JSON object (partitioner, hull, hull_cells, uavs, seed, iterations, "
                 "converged, tolerance, seconds, regions, warnings)");

@@ -51,6 +51,12 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
   };
   std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
                            time(r.t_m), r.corroded_cells, r.hull_cells);
+  if (r.unreachable_cells > 0 || r.unreachable_z2_cells > 0) {
+    std::cout << fmt::format(
+        "  no-fly zones: {} hull cells cannot be inspected, {} cannot be seen at all "
+        "(docs/model.md: what cannot reach its final state is not counted)\n",
+        r.unreachable_cells, r.unreachable_z2_cells);
+  }
   std::cout << fmt::format(
       "  moves {}, plane changes {}, hovers {}, redundant observations {} of {}\n", total.moves,
       total.plane_changes, total.hovers, r.redundant_observations, r.observations);

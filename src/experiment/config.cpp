@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "config_no_fly.hpp"
 #include "config_scenarios.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
@@ -272,13 +273,14 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   f.expect_map(root, "",
                {"name", "description", "hull", "grid", "scenarios", "sweeps", "s1", "s2", "theta",
                 "uavs", "start_z", "algorithms", "instances", "first_seed", "time_limit", "curve",
-                "prior", "truth"});
+                "prior", "truth", "no-fly"});
   for (const char* key : {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull"}) {
     remember_line(c, root, key);
   }
   if (root["name"]) c.name = f.as_label(root["name"], "name");
   if (root["description"]) c.description = f.as_string(root["description"], "description");
   read_hull(f, root, base_dir, c);
+  detail::read_no_fly(f, root, base_dir, c);
   read_user_maps(f, root, base_dir, c);
   c.scenarios = detail::parse_scenarios(f, root["scenarios"], root["sweeps"], c.hull->width());
   if (root["s1"]) c.s1 = f.as_int(root["s1"], "s1", 1, kMaxSide);
@@ -351,6 +353,7 @@ nlohmann::json config_json(const ExperimentConfig& c) {
                {"cells", c.hull_cells},
                {"hash", c.hull_hash}};
   j["cell_size"] = c.cell_size;
+  if (!c.no_fly_spec.is_null()) j["no_fly"] = c.no_fly_spec;  // absent without: ids unchanged
   // Only when given, so configs without user maps keep their fingerprints.
   if (!c.prior_path.empty()) j["prior"] = c.prior_path;
   if (!c.truth_path.empty()) j["truth"] = c.truth_path;
@@ -403,6 +406,7 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     c.hull_cells = h.at("cells").get<int>();
     c.hull_hash = h.at("hash").get<std::string>();
     c.cell_size = j.at("cell_size").get<double>();
+    if (j.contains("no_fly")) c.no_fly_spec = j.at("no_fly");
     if (j.contains("prior")) c.prior_path = j.at("prior").get<std::string>();
     if (j.contains("truth")) c.truth_path = j.at("truth").get<std::string>();
     for (const auto& s : j.at("scenarios")) {

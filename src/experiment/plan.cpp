@@ -97,6 +97,7 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.cell_size_m = c.cell_size;
   spec.params.start_z = c.start_z;
   spec.params.time_limit = c.time_limit;
+  spec.params.no_fly = c.no_fly;
   spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
   spec.failures = c.scenarios[static_cast<std::size_t>(cell.scenario)].failures;
   spec.seed = seed;

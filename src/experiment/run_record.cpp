@@ -46,7 +46,8 @@ std::vector<std::string> runs_header() {
           "tsp_unproven", "tsp_fallbacks",
           "replans",      "assignments",
           "failures",     "failed_uavs",
-          "bound_T_c",    "bound_T_m"};
+          "bound_T_c",    "bound_T_m",
+          "unreachable_cells"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -159,7 +160,7 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
         std::to_string(r.planner.tsp_unproven), std::to_string(r.planner.tsp_fallbacks),
         std::to_string(r.planner.replans), std::to_string(r.planner.assignments),
         failures_field(plan, run), std::to_string(r.failed_uavs), std::to_string(r.bound_t_c),
-        std::to_string(r.bound_t_m)}) {
+        std::to_string(r.bound_t_m), std::to_string(r.unreachable_cells)}) {
     fields.push_back(std::move(value));
   }
   record.runs = csv_line(fields);

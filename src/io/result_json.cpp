@@ -23,6 +23,8 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   j["observations"] = r.observations;
   j["corroded_cells"] = r.corroded_cells;
   j["hull_cells"] = r.hull_cells;
+  j["unreachable_cells"] = r.unreachable_cells;
+  j["unreachable_z2_cells"] = r.unreachable_z2_cells;
   j["planner_seconds"] = r.planner_seconds;
   j["tsp_solves"] = r.planner.tsp_solves;
   j["tsp_seconds"] = r.planner.tsp_seconds;

@@ -235,6 +235,11 @@ void validate_trace(const json& trace, const std::string& source) {
     check.rows(partition, "partition", width, height, ".0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ");
   }
 
+  if (trace.contains("no_fly")) check.rows(trace["no_fly"], "no_fly", width, height, ".#");
+  if (trace.contains("unreachable")) {
+    check.rows(trace["unreachable"], "unreachable", width, height, ".dx");
+  }
+
   const auto& frames = check.array(check.field(trace, "", "frames"), "frames");
   if (frames.empty()) check.fail("frames", "expected at least frame 0 (t = 0)");
   const auto& u0 = check.array(check.field(check.object(frames[0], "frames[0]"), "frames[0]", "u"),

@@ -133,6 +133,24 @@ void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner&
   } else {
     trace_["partition"] = nullptr;
   }
+  // No-fly zones (docs/model.md): '#' no-fly positions; per hull cell 'd' when only z = 2 sees it
+  // (never inspectable), 'x' when no footprint does. Absent without no-fly zones.
+  if (const auto& reach = sim.reachability(); reach.any_no_fly) {
+    grid::Grid<std::int8_t> no_fly(hull.width(), hull.height(), 0);
+    grid::Grid<std::int8_t> unreachable(hull.width(), hull.height(), 0);
+    for (int i = 0; i < no_fly.size(); ++i) {
+      no_fly[i] = sim.no_fly(no_fly.cell(i)) ? 1 : 0;
+      if (!hull.is_hull(i)) continue;
+      if ((reach.reach[i] & world::kReachZ2) == 0) {
+        unreachable[i] = 2;
+      } else if ((reach.reach[i] & world::kReachZ1) == 0) {
+        unreachable[i] = 1;
+      }
+    }
+    trace_["no_fly"] = rows(no_fly, [](std::int8_t v) { return v != 0 ? '#' : '.'; });
+    trace_["unreachable"] =
+        rows(unreachable, [](std::int8_t v) { return v == 2 ? 'x' : (v == 1 ? 'd' : '.'); });
+  }
   // The map before t = 0's sensing is the prior; frame 0 holds the changes of t = 0's sensing.
   json map0 = rows(sim.map(), matrix_symbol);
   for (int i : sim.changed_cells()) {
@@ -161,6 +179,8 @@ json TraceRecorder::finish(const sim::MissionResult& result) const {
   r["steps"] = result.steps;
   r["hull_cells"] = result.hull_cells;
   r["corroded_cells"] = result.corroded_cells;
+  r["unreachable_cells"] = result.unreachable_cells;
+  r["unreachable_z2_cells"] = result.unreachable_z2_cells;
   const auto total = result.totals();
   r["moves"] = total.moves;
   r["plane_changes"] = total.plane_changes;

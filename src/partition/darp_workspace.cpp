@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "hullinspect/grid/distance_service.hpp"
+
 namespace hullinspect::partition::detail {
 
 namespace {
@@ -520,6 +522,25 @@ void DarpWorkspace::export_assignment(Which which, grid::Grid<std::int16_t>& own
     owner[cell_flat_[j]] = static_cast<std::int16_t>(from[j]);
   }
   totals_of(from, region_cells, region_weight);
+}
+
+void DarpWorkspace::use_allowed_distances(const grid::Grid<std::uint8_t>& allowed,
+                                          std::span<const int> start_index) {
+  grid::DistanceService distances(allowed, /*cached_fields=*/1);
+  const auto cells = static_cast<std::size_t>(cell_count_);
+  for (std::size_t r = 0; r < start_index.size(); ++r) {
+    const grid::Grid<int>& field = distances.field(allowed.cell(start_index[r]));
+    int far = 0;
+    for (std::size_t j = 0; j < cells; ++j) {
+      const int d = field[cell_flat_[j]];
+      if (d < grid::kUnreachable) far = std::max(far, d);
+    }
+    float* e = &eval_[r * cells];
+    for (std::size_t j = 0; j < cells; ++j) {
+      const int d = std::min(field[cell_flat_[j]], far + 1);
+      e[j] = d == 0 ? kStartValue : static_cast<float>(portable_log(static_cast<double>(d)));
+    }
+  }
 }
 
 }  // namespace hullinspect::partition::detail

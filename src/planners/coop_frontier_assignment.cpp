@@ -62,9 +62,12 @@ void FrontierAssigner::reduce_around(std::span<const grid::Cell> frontiers, grid
 FrontierAssigner::Pick FrontierAssigner::best_for(std::span<const grid::Cell> frontiers, int robot,
                                                   grid::Cell at) const {
   const auto table = travel_term_.size();
+  const grid::Grid<int>* field =
+      distances_ != nullptr && distances_->has_no_fly() ? &distances_->field(at) : nullptr;
   Pick best;
   for (std::size_t j = 0; j < frontiers.size(); ++j) {
-    const auto d = static_cast<std::size_t>(grid::manhattan(at, frontiers[j]));
+    const auto d = static_cast<std::size_t>(field != nullptr ? (*field)[frontiers[j]]
+                                                             : grid::manhattan(at, frontiers[j]));
     const double travel = d < table ? travel_term_[d] : beta_ / static_cast<double>(d);
     const double score = reduced_[j] + travel;
     if (best.frontier < 0 || score > best.score ||

@@ -35,11 +35,12 @@ void InspectionClaims::release_all(int uav) {
 
 std::optional<grid::Cell> InspectionClaims::inspect_target(int uav, grid::Cell pos,
                                                            const grid::Grid<std::int8_t>& map,
-                                                           int radius) {
+                                                           int radius,
+                                                           const grid::Grid<int>* distance_from_pos) {
   std::optional<grid::Cell> best;
   int best_d = 0;
   auto consider = [&](grid::Cell c) {
-    const int d = grid::manhattan(pos, c);
+    const int d = distance_from_pos != nullptr ? (*distance_from_pos)[c] : grid::manhattan(pos, c);
     if (!best || d < best_d || (d == best_d && c < *best)) {
       best = c;
       best_d = d;
@@ -65,7 +66,10 @@ std::optional<grid::Cell> InspectionClaims::inspect_target(int uav, grid::Cell p
     const int x0 = std::max(0, pos.x - reach);
     const int x1 = std::min(map.width() - 1, pos.x + reach);
     for (int x = x0; x <= x1; ++x) {
-      if (map(x, y) == sim::kCorrosionSeen) consider({x, y});
+      // Shortest flights are never shorter than Manhattan, so the diamond holds every candidate.
+      if (map(x, y) != sim::kCorrosionSeen) continue;
+      if (distance_from_pos != nullptr && (*distance_from_pos)(x, y) > radius) continue;
+      consider({x, y});
     }
   }
   return best;

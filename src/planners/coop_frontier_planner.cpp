@@ -15,19 +15,28 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   radius_ = static_cast<int>(
       std::floor(options_.radius_factor * context.params.delta_zeta_cells() + 1e-9));
 
-  // M before t = 0's sensing: −1 off the hull, 2 where the prior expects corrosion, 0 elsewhere.
-  grid::Grid<std::int8_t> map(w, h, sim::kUnknown);
+  distances_ = &distances_of(context, own_distances_);
+  reach_ = context.reach != nullptr && context.reach->any_no_fly ? &context.reach->reach : nullptr;
+  half1_ = (context.params.s1 - 1) / 2;
+  half2_ = (context.params.s2 - 1) / 2;
+
+  // M before t = 0's sensing: −1 off the hull, 2 where the prior expects corrosion, 0 elsewhere;
+  // cells written off by no-fly zones read 1 (see effective()).
+  grid::Grid<std::int8_t>& map = map_;
+  map = grid::Grid<std::int8_t>(w, h, sim::kUnknown);
   known_.assign(static_cast<std::size_t>(prior.size()), 0);
-  prior_field_.reset(w, h);
-  detected_field_.reset(w, h);
+  prior_field_.reset(w, h, distances_);
+  detected_field_.reset(w, h, distances_);
   corrosion_left_.reset(w, h);
   for (int i = 0; i < prior.size(); ++i) {
     if (prior[i] < 0) {
       map[i] = sim::kNotHull;
-    } else if (prior[i] == 1) {
-      map[i] = sim::kCorrosionSeen;
-      prior_field_.set(i, true);
-      corrosion_left_.insert(i);
+    } else {
+      map[i] = effective(i, prior[i] == 1 ? sim::kCorrosionSeen : sim::kUnknown);
+      if (prior[i] == 1 && (reach_ == nullptr || ((*reach_)[i] & world::kReachZ2) != 0)) {
+        prior_field_.set(i, true);
+      }
+      if (map[i] == sim::kCorrosionSeen) corrosion_left_.insert(i);
     }
     known_[static_cast<std::size_t>(i)] = map[i] != sim::kUnknown ? 1 : 0;
   }
@@ -38,6 +47,7 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   uavs_.assign(static_cast<std::size_t>(n), UavPlan{first, {-1, -1}, false});
 
   assigner_.configure(options_.beta, context.params.s2, w + h);
+  assigner_.set_distances(distances_);
   assigner_.reserve(prior.size(), n);
   utility_.clear();
   utility_.reserve(static_cast<std::size_t>(prior.size()));
@@ -57,13 +67,32 @@ std::optional<grid::Cell> CoopFrontierPlanner::target(int uav) const {
   return p.target;
 }
 
+std::int8_t CoopFrontierPlanner::effective(int index, std::int8_t m) const {
+  if (reach_ == nullptr || m == sim::kNotHull) return m;
+  const std::uint8_t reach = (*reach_)[index];
+  if ((reach & world::kReachZ2) == 0) return sim::kClean;  // never seen: nothing to explore
+  if (m == sim::kCorrosionSeen && (reach & world::kReachZ1) == 0) return sim::kClean;
+  return m;
+}
+
+grid::Cell CoopFrontierPlanner::step_to(grid::Cell pos, grid::Cell target, int z) {
+  const grid::Cell at = distances_->viewpoint(target, z == 1 ? half1_ : half2_);
+  if (at == grid::kNoCell) return pos;
+  return distances_->next_step(pos, at);
+}
+
+const grid::Grid<int>* CoopFrontierPlanner::field_from(grid::Cell pos) {
+  return distances_->has_no_fly() ? &distances_->field(pos) : nullptr;
+}
+
 void CoopFrontierPlanner::absorb_readings(const sim::PlannerView& view) {
-  const auto& map = view.map;
+  auto& map = map_;
   const int n = view.sensed.uav_count();
   for (int k = 0; k < n; ++k) {
     for (const sim::Reading& r : view.sensed.readings(k)) {
       const int i = r.index;
-      const std::int8_t m = map[i];
+      const std::int8_t m = effective(i, view.map[i]);
+      map[i] = m;
       auto& known = known_[static_cast<std::size_t>(i)];
       if (!known && m != sim::kUnknown) {
         known = 1;
@@ -83,7 +112,7 @@ void CoopFrontierPlanner::absorb_readings(const sim::PlannerView& view) {
 bool CoopFrontierPlanner::claim_detections(int uav, const sim::PlannerView& view) {
   bool claimed = false;
   for (const sim::Reading& r : view.sensed.readings(uav)) {
-    if ((r.events & sim::kEventDetection) && view.map[r.index] == sim::kCorrosionSeen) {
+    if ((r.events & sim::kEventDetection) && map_[r.index] == sim::kCorrosionSeen) {
       claimed = claims_.claim(uav, r.index) || claimed;
     }
   }
@@ -96,9 +125,10 @@ std::optional<grid::Cell> CoopFrontierPlanner::claim_nearest_free(int uav, grid:
   int best_index = -1;
   const auto indices = corrosion_left_.indices();
   const auto cells = corrosion_left_.cells();
+  const grid::Grid<int>* field = field_from(pos);
   for (std::size_t j = 0; j < cells.size(); ++j) {
     if (claims_.owner(indices[j]) >= 0) continue;
-    const int d = grid::manhattan(pos, cells[j]);
+    const int d = field != nullptr ? (*field)[cells[j]] : grid::manhattan(pos, cells[j]);
     if (!best || d < best_d || (d == best_d && cells[j] < *best)) {
       best = cells[j];
       best_d = d;
@@ -173,7 +203,7 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
         continue;
       }
       const bool keeps = plan.has_target() && plan.target != u.pos &&
-                         frontiers_.contains(view.map.index(plan.target));
+                         frontiers_.contains(map_.index(plan.target));
       if (keeps) {
         held_.push_back(plan.target);
       } else {
@@ -185,13 +215,13 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
     }
     // z = 1.
     if (plan.mode == Mode::kInspect) {
-      auto cell = claims_.inspect_target(id, u.pos, view.map, radius_);
+      auto cell = claims_.inspect_target(id, u.pos, map_, radius_, field_from(u.pos));
       if (!cell && options_.endgame_stay_low && frontiers_.empty()) {
         cell = claim_nearest_free(id, u.pos);
       }
       if (cell) {
         plan.target = *cell;
-        actions[k] = sim::step_towards(u.pos, *cell);
+        actions[k] = sim::step_towards(u.pos, step_to(u.pos, *cell, 1));
         continue;
       }
       plan.mode = Mode::kExplore;
@@ -214,7 +244,7 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
     const UavPlan& plan = uavs_[k];
     if (plan.mode == Mode::kExplore && plan.has_target() && !u.failed && !u.in_transit() &&
         u.z == 2) {
-      actions[k] = sim::step_towards(u.pos, plan.target);
+      actions[k] = sim::step_towards(u.pos, step_to(u.pos, plan.target, 2));
     }
     uavs_[k].changing_plane = u.in_transit() || actions[k] == Action::kChangePlane;
   }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "hullinspect/planners/lawnmower_no_fly.hpp"
+
 namespace hullinspect::planners {
 
 std::vector<grid::Cell> LawnmowerPlanner::sweep(const grid::Grid<std::int16_t>& owner, int uav,
@@ -38,12 +40,26 @@ void LawnmowerPlanner::start(const PlannerContext& context) {
   request.hull = &context.hull;
   request.starts.assign(context.starts.begin(), context.starts.end());
   request.seed = options_.partition_seed;
+  add_no_fly(request, context);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
+  grid::DistanceService& distances = distances_of(context, own_distances_);
   followers_.assign(static_cast<std::size_t>(n), WaypointFollower{});
+  climb_.assign(static_cast<std::size_t>(n), {});
+  climbed_.assign(static_cast<std::size_t>(n), 0);
   for (int k = 0; k < n; ++k) {
-    followers_[static_cast<std::size_t>(k)].assign(
-        sweep(partition_->owner, k, context.params.s1, context.starts[static_cast<std::size_t>(k)]));
+    auto& follower = followers_[static_cast<std::size_t>(k)];
+    const grid::Cell from = context.starts[static_cast<std::size_t>(k)];
+    follower.set_distances(&distances);
+    if (!distances.has_no_fly() || context.reach == nullptr) {
+      follower.assign(sweep(partition_->owner, k, context.params.s1, from));
+      continue;
+    }
+    LawnmowerRoute route = lawnmower_route_around_no_fly(
+        partition_->owner, k, context.params.s1, context.params.s2, from, distances,
+        context.reach->reach);
+    follower.assign(std::move(route.z1));
+    climb_[static_cast<std::size_t>(k)] = std::move(route.z2);
   }
 }
 
@@ -52,7 +68,21 @@ void LawnmowerPlanner::decide(const sim::PlannerView& view, std::span<sim::Actio
   for (std::size_t k = 0; k < view.uavs.size(); ++k) {
     const sim::UavState& u = view.uavs[k];
     if (u.failed || u.in_transit()) continue;
-    actions[k] = u.z == 2 ? sim::Action::kChangePlane : followers_[k].next_action(u.pos);
+    if (climbed_[k] != 0) {  // the z = 2 leg of a route around no-fly zones
+      actions[k] = u.z == 1 ? sim::Action::kHover : followers_[k].next_action(u.pos);
+      continue;
+    }
+    if (u.z == 2) {
+      actions[k] = sim::Action::kChangePlane;
+      continue;
+    }
+    actions[k] = followers_[k].next_action(u.pos);
+    if (actions[k] == sim::Action::kHover && !climb_[k].empty()) {
+      climbed_[k] = 1;
+      followers_[k].assign(std::move(climb_[k]));
+      climb_[k].clear();
+      actions[k] = sim::Action::kChangePlane;
+    }
   }
 }
 
@@ -68,7 +98,8 @@ bool LawnmowerPlanner::idle(const sim::PlannerView& view) const {
 void LawnmowerPlanner::annotate(AnnotationSink& sink) const {
   for (std::size_t k = 0; k < followers_.size(); ++k) {
     const auto& f = followers_[k];
-    const bool descending = k < last_.size() && (last_[k].z == 2 || last_[k].in_transit());
+    const bool descending = k < last_.size() && climbed_[k] == 0 &&
+                            (last_[k].z == 2 || last_[k].in_transit());
     const auto plan = f.remaining();
     sink.uav(static_cast<int>(k), descending ? "descend" : (plan.empty() ? "done" : "cover"),
              f.target(), plan);

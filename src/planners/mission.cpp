@@ -19,6 +19,17 @@ std::shared_ptr<const partition::Partition> DirectPartitionSource::get(
   return std::make_shared<const partition::Partition>(p->partition(request));
 }
 
+void add_no_fly(partition::PartitionRequest& request, const PlannerContext& context) {
+  if (context.reach != nullptr && context.reach->any_no_fly) request.allowed = context.reach->flyable;
+}
+
+grid::DistanceService& distances_of(const PlannerContext& context,
+                                    grid::DistanceService& fallback) {
+  if (context.distances != nullptr) return *context.distances;
+  fallback = grid::DistanceService(context.hull.width(), context.hull.height());
+  return fallback;
+}
+
 sim::MissionResult run_mission(const world::HullMask& hull, const world::Instance& instance,
                                const world::MissionParams& params, Planner& planner,
                                const MissionOptions& options) {
@@ -35,8 +46,14 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
 
   DirectPartitionSource direct;
   const auto starts = world::start_cells(params, hull);
-  PlannerContext context{hull, params, instance.prior, starts,
-                         options.partitions ? *options.partitions : direct};
+  grid::DistanceService distances = world::make_distance_service(sim.reachability());
+  PlannerContext context{hull,
+                         params,
+                         instance.prior,
+                         starts,
+                         options.partitions ? *options.partitions : direct,
+                         &distances,
+                         &sim.reachability()};
   if (planner.sees_truth()) context.truth = &instance.truth;
   double planner_seconds = 0;
   auto t0 = Clock::now();

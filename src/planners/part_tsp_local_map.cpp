@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/world/no_fly.hpp"
 
 namespace hullinspect::planners::part_tsp {
 
@@ -101,6 +102,16 @@ void LocalMaps::set_value(int index, std::int8_t value) {
   values_[index] = value;
 }
 
+void LocalMaps::write_off(const grid::Grid<std::uint8_t>& reach) {
+  reach_ = &reach;
+  for (int i = 0; i < owner_.size(); ++i) {
+    if (owner_[i] < 0) continue;
+    const bool can_see = (reach[i] & world::kReachZ2) != 0;
+    const bool can_inspect = (reach[i] & world::kReachZ1) != 0;
+    if (!can_see || (values_[i] == sim::kCorrosionSeen && !can_inspect)) set_value(i, sim::kClean);
+  }
+}
+
 LocalEvents LocalMaps::ingest(int k, std::span<const sim::Reading> readings) {
   LocalEvents events;
   for (const sim::Reading& reading : readings) {
@@ -116,7 +127,10 @@ LocalEvents LocalMaps::ingest(int k, std::span<const sim::Reading> readings) {
           seen_from_z2_[i] = 1;
           events.detection = true;
         }
-        if (before != sim::kInspected) set_value(i, sim::kCorrosionSeen);
+        if (before != sim::kInspected) {
+          const bool can_inspect = reach_ == nullptr || ((*reach_)[i] & world::kReachZ1) != 0;
+          set_value(i, can_inspect ? sim::kCorrosionSeen : sim::kClean);
+        }
         break;
       case sim::kInspected:  // corroded, seen from z = 1
         if (before != sim::kInspected) {

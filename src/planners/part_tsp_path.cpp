@@ -38,7 +38,9 @@ void SegmentPath::advance(grid::Cell pos) {
 }
 
 sim::Action SegmentPath::next_action(grid::Cell pos) const {
-  return finished() ? sim::Action::kHover : sim::step_towards(pos, waypoints_[next_]);
+  if (finished()) return sim::Action::kHover;
+  if (distances_ == nullptr) return sim::step_towards(pos, waypoints_[next_]);
+  return sim::step_towards(pos, distances_->next_step(pos, waypoints_[next_]));
 }
 
 }  // namespace hullinspect::planners::part_tsp

@@ -36,13 +36,18 @@ void PartTspPlanner::start(const PlannerContext& context) {
   request.hull = &context.hull;
   request.starts.assign(context.starts.begin(), context.starts.end());
   request.seed = options_.partition_seed;
+  add_no_fly(request, context);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
   if (options_.oracle && !context.truth) throw LogicError("oracle-part-tsp started without the truth");
   const auto& prior = options_.oracle ? *context.truth : context.prior;
   maps_ = std::make_unique<LocalMaps>(partition_->owner, prior, options_.use_prior || options_.oracle, n,
                                       context.params.s1, context.params.s2);
+  distances_ = &distances_of(context, own_distances_);
+  if (context.reach != nullptr && context.reach->any_no_fly) maps_->write_off(context.reach->reach);
+  problem_.distances = distances_;
   uavs_.assign(static_cast<std::size_t>(n), UavState{});
+  for (UavState& p : uavs_) p.path.set_distances(distances_);
   stats_ = {};
 }
 
@@ -115,16 +120,20 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   p.plan_z = z;
   p.plan_value = target_value(z, maps_->corrosion_to_inspect(k));
   if (p.plans++ > 0) ++stats_.replans;
-  divide_into_segments(*maps_, k, z, p.plan_value, segments_);
   const int trim = options_.trim_ends ? (maps_->layout(z).s - 1) / 2 : 0;
-  ends_.clear();
-  for (const StripSegment& s : segments_) ends_.push_back(segment_ends(s, trim));
+  if (distances_->has_no_fly()) {
+    part_tsp::divide_around_no_fly(*maps_, k, z, p.plan_value, trim, *distances_, segments_, ends_);
+  } else {
+    divide_into_segments(*maps_, k, z, p.plan_value, segments_);
+    ends_.clear();
+    for (const StripSegment& s : segments_) ends_.push_back(segment_ends(s, trim));
+  }
 
   order_.clear();
   if (segments_.size() == 1) {
     // One segment: the optimal open path enters at the nearer end (the left one on a tie).
     const auto& [left, right] = ends_.front();
-    order_.push_back(tsp::Visit{0, grid::manhattan(pos, right) < grid::manhattan(pos, left)});
+    order_.push_back(tsp::Visit{0, distances_->distance(pos, right) < distances_->distance(pos, left)});
   } else if (segments_.size() > 1) {
     problem_.start = pos;
     problem_.segments.clear();

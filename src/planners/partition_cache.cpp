@@ -24,6 +24,10 @@ std::string request_key(std::string_view partitioner, const OptionMap& options,
   for (double w : r.weights.values()) key += fmt::format("|{}", w);
   key += "|shares";
   for (double s : r.shares) key += fmt::format("|{}", s);
+  if (r.allowed.size() > 0) {
+    key += "|allowed|";
+    for (auto v : r.allowed.values()) key += static_cast<char>('0' + v);
+  }
   return key;
 }
 

@@ -1,5 +1,7 @@
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
+#include "hullinspect/core/errors.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -20,6 +22,13 @@ grid::Cell SweepInspectPlanner::reach_position(grid::Cell pos, grid::Cell c, int
 }
 
 void SweepInspectPlanner::start(const PlannerContext& context) {
+  // Its moves follow the fixed Manhattan rule, which may cross a no-fly position: refuse rather
+  // than let the simulator stop the mission on the first forbidden move.
+  if (context.params.no_fly) {
+    throw ParameterError("algorithm",
+                         "sweep-inspect does not fly around no-fly zones yet (use lawnmower, "
+                         "part-tsp, part-tsp0 or coop-frontier)");
+  }
   const auto& p = context.params;
   h1_ = (p.s1 - 1) / 2;
   h2_ = (p.s2 - 1) / 2;

@@ -8,6 +8,7 @@ double MissionResult::c_percent(int t) const {
 }
 
 double MissionResult::m_percent(int t) const {
+  if (hull_cells == 0) return 100.0;
   return 100.0 * known_series[static_cast<std::size_t>(t)] / hull_cells;
 }
 

@@ -12,15 +12,27 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
                      const world::MissionParams& params)
     : hull_(hull), truth_(instance.truth), params_(params), uz_(params.plane_change_steps()) {
   const int n = params.uavs;
+  const auto starts = world::start_cells(params, hull);
+  for (const auto& c : starts) {
+    if (no_fly(c)) {
+      throw LogicError(fmt::format("a UAV starts on the no-fly position ({}, {})", c.x, c.y));
+    }
+  }
+  reach_ = world::compute_reachability(hull, params.no_fly.get(), params.s1, params.s2, starts);
   map_ = grid::Grid<std::int8_t>(hull.width(), hull.height(), kNotHull);
   seen_ = grid::Grid<std::uint8_t>(hull.width(), hull.height(), 0);
+  counted_ = grid::Grid<std::uint8_t>(hull.width(), hull.height(), 0);
   for (int i : hull.cells()) {
     map_[i] = instance.prior[i] == 1 ? kCorrosionSeen : kUnknown;
+    // Only cells that can reach their final state count (docs/model.md): a corroded cell needs a
+    // z = 1 footprint, a clean one either plane's.
+    const std::uint8_t need = truth_[i] == 1 ? world::kReachZ1 : world::kReachZ2;
+    if ((reach_.reach[i] & need) == 0) continue;
+    counted_[i] = 1;
+    ++hull_cells_;
     if (truth_[i] == 1) ++corroded_;
   }
-  hull_cells_ = hull.cell_count();
 
-  const auto starts = world::start_cells(params, hull);
   uavs_.resize(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) {
     uavs_[static_cast<std::size_t>(k)] = UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, false};
@@ -35,6 +47,8 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
 
   result_.hull_cells = hull_cells_;
   result_.corroded_cells = corroded_;
+  result_.unreachable_cells = reach_.unreachable_z1;
+  result_.unreachable_z2_cells = reach_.unreachable_z2;
   result_.uavs.assign(static_cast<std::size_t>(n), UavCounters{});
   const auto series_capacity = static_cast<std::size_t>(std::min(params.time_limit, 1 << 20)) + 1;
   result_.inspected_series.reserve(series_capacity);
@@ -90,6 +104,11 @@ void Simulator::step(std::span<const Action> actions) {
                                        "t = {}",
                                        k, u.pos.x, u.pos.y, to_string(a), map_.width(),
                                        map_.height(), time_));
+        }
+        if (no_fly(next)) {
+          throw LogicError(fmt::format("UAV {} at ({}, {}) was told to move {} onto the no-fly "
+                                       "position ({}, {}) at t = {}",
+                                       k, u.pos.x, u.pos.y, to_string(a), next.x, next.y, time_));
         }
         u.pos = next;
         ++count.moves;
@@ -149,7 +168,8 @@ void Simulator::sense(int uav) {
           ++inspected_;
           r.events |= kEventInspection;
         }
-        if ((after == kClean || after == kInspected) && before != kClean && before != kInspected) {
+        if ((after == kClean || after == kInspected) && before != kClean && before != kInspected &&
+            counted_[i] != 0) {
           ++known_;
         }
         map_[i] = after;
@@ -175,7 +195,9 @@ double Simulator::c_percent() const {
   return corroded_ == 0 ? 100.0 : 100.0 * inspected_ / corroded_;
 }
 
-double Simulator::m_percent() const { return 100.0 * known_ / hull_cells_; }
+double Simulator::m_percent() const {
+  return hull_cells_ == 0 ? 100.0 : 100.0 * known_ / hull_cells_;
+}
 
 MissionResult Simulator::result() const {
   MissionResult r = result_;

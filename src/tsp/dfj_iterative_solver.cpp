@@ -27,23 +27,26 @@ struct PaperGraph {
   int g = 0;
   int nodes = 0;
   std::vector<grid::Cell> at;
+  const SegmentTsp* problem = nullptr;
 
-  explicit PaperGraph(const SegmentTsp& problem)
-      : g(static_cast<int>(problem.segments.size())),
+  explicit PaperGraph(const SegmentTsp& p)
+      : g(static_cast<int>(p.segments.size())),
         nodes(2 * g + 2),
-        at(static_cast<std::size_t>(nodes)) {
-    at[0] = problem.start;
+        at(static_cast<std::size_t>(nodes)),
+        problem(&p) {
+    at[0] = p.start;
     for (int l = 0; l < g; ++l) {
-      at[static_cast<std::size_t>(2 * l + 1)] = problem.segments[static_cast<std::size_t>(l)].first;
-      at[static_cast<std::size_t>(2 * l + 2)] =
-          problem.segments[static_cast<std::size_t>(l)].second;
+      at[static_cast<std::size_t>(2 * l + 1)] = p.segments[static_cast<std::size_t>(l)].first;
+      at[static_cast<std::size_t>(2 * l + 2)] = p.segments[static_cast<std::size_t>(l)].second;
     }
   }
   int artificial() const { return 2 * g + 1; }
-  /// d_{i,j}: Manhattan, 0 to the artificial node (eq. 11; its forced edge to 0 costs 0 too).
+  /// d_{i,j}: the problem's distance, 0 to the artificial node (eq. 11; its forced edge to 0
+  /// costs 0 too).
   double cost(int i, int j) const {
     if (i == artificial() || j == artificial()) return 0.0;
-    return grid::manhattan(at[static_cast<std::size_t>(i)], at[static_cast<std::size_t>(j)]);
+    return node_distance(*problem, at[static_cast<std::size_t>(i)],
+                         at[static_cast<std::size_t>(j)]);
   }
   /// Eqs. 9 and 10.
   bool forced(int i, int j) const {

@@ -20,10 +20,18 @@ void EndCosts::assign(const SegmentTsp& problem) {
     const Segment& s = problem.segments[static_cast<std::size_t>(l)];
     at[static_cast<std::size_t>(2 * l)] = s.first;
     at[static_cast<std::size_t>(2 * l + 1)] = s.second;
-    segment_total_ += grid::manhattan(s.first, s.second);
+    segment_total_ += node_distance(problem, s.first, s.second);
   }
   at[static_cast<std::size_t>(2 * g_)] = problem.start;
   for (int a = 0; a < stride_; ++a) {
+    if (problem.distances != nullptr && problem.distances->has_no_fly()) {
+      // One field per row: distances are symmetric, and the service caches fields per source.
+      const grid::Grid<int>& field = problem.distances->field(at[static_cast<std::size_t>(a)]);
+      for (int b = 0; b < stride_; ++b) {
+        cost_[static_cast<std::size_t>(a * stride_ + b)] = field[at[static_cast<std::size_t>(b)]];
+      }
+      continue;
+    }
     for (int b = 0; b < stride_; ++b) {
       cost_[static_cast<std::size_t>(a * stride_ + b)] =
           grid::manhattan(at[static_cast<std::size_t>(a)], at[static_cast<std::size_t>(b)]);

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to the TSP solvers: Manhattan costs between the UAV and the 2g segment ends, in the
+// Internal to the TSP solvers: the problem's costs (node_distance) between the UAV and the 2g segment ends, in the
 // numbering the solvers share. End 2l is segment l's `first`, end 2l+1 its `second`; a visit that
 // enters segment l by end e leaves by end e ^ 1, so a tour is a sequence of entry ends. Index 2g is
 // the UAV. Coordinates are grid cells, so every cost fits an int.

@@ -13,7 +13,7 @@ long long tour_length(const SegmentTsp& problem, std::span<const Visit> order) {
     const Segment& s = problem.segments[static_cast<std::size_t>(v.segment)];
     const grid::Cell entry = v.reversed ? s.second : s.first;
     const grid::Cell exit = v.reversed ? s.first : s.second;
-    length += grid::manhattan(at, entry) + grid::manhattan(entry, exit);
+    length += node_distance(problem, at, entry) + node_distance(problem, entry, exit);
     at = exit;
   }
   return length;

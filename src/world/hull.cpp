@@ -245,13 +245,8 @@ HullMask parse_pgm_mask(std::string_view bytes, const std::string& source) {
 
 grid::Grid<std::uint8_t> load_cell_map(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(name, 0, "cannot open the file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string bytes = buffer.str();
-  if (bytes.size() > 64u * 1024 * 1024) throw InputError(name, 0, "file is larger than 64 MiB");
-  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
+  const std::string bytes = io::read_file(path, kMaxHullFileBytes, "the file");
+  if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '0' && bytes[1] <= '9') {
     return parse_pgm_cells(bytes, name);
   }
   return parse_text_cells(bytes, name);

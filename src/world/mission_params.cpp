@@ -93,6 +93,26 @@ void validate(const MissionParams& p, const HullMask& hull) {
                                                  c.x, c.y, hull.width(), hull.height()));
     }
   }
+  if (p.no_fly) {
+    if (p.no_fly->width() != hull.width() || p.no_fly->height() != hull.height()) {
+      throw ParameterError("no-fly",
+                           fmt::format("mask is {} × {} but the hull is {} × {}", p.no_fly->width(),
+                                       p.no_fly->height(), hull.width(), hull.height()));
+    }
+    int allowed_hull = 0;
+    for (int i : hull.cells()) allowed_hull += (*p.no_fly)[i] == 0 ? 1 : 0;
+    if (allowed_hull < p.uavs) {
+      throw ParameterError("no-fly", fmt::format("leaves {} hull cells outside no-fly zones for {} "
+                                                 "UAVs to start on",
+                                                 allowed_hull, p.uavs));
+    }
+    for (const auto& c : start_cells(p, hull)) {
+      if ((*p.no_fly)[c] != 0) {
+        throw ParameterError("starts",
+                             fmt::format("start cell ({}, {}) is a no-fly position", c.x, c.y));
+      }
+    }
+  }
   // Explicit starts that snap onto one hull cell: refused here, before any planning starts.
   if (!p.starts.empty()) {
     const auto snapped = start_cells(p, hull);
@@ -140,13 +160,15 @@ std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull
   for (int k = 0; k < p.uavs; ++k) {
     const grid::Cell aim{x0 + static_cast<int>((2LL * k + 1) * w / (2LL * p.uavs)),
                          y0 + (y1 - y0 + 1) / 2};
+    // Never a cell another UAV took, nor a no-fly position.
+    auto free = [&](int i) { return taken[i] == 0 && (!p.no_fly || (*p.no_fly)[i] == 0); };
     grid::Cell best = hull.snap(aim);
-    if (taken(best.x, best.y)) {
+    if (!free(hull.mask().index(best))) {
       int best_d = std::numeric_limits<int>::max();
       for (const int i : hull.cells()) {  // (y, x) order: the first strict minimum wins ties
         const grid::Cell h = hull.mask().cell(i);
         const int d = grid::manhattan(h, aim);
-        if (!taken[i] && d < best_d) {
+        if (free(i) && d < best_d) {
           best_d = d;
           best = h;
         }

@@ -231,7 +231,7 @@ TEST(ExperimentCli, ErrorsAreOneLineWithExitStatus2) {
 
   o = run_cli({"experiment", "--preset", "nope", "--out", out.string()}, dir);
   EXPECT_EQ(o.status, 2);
-  EXPECT_EQ(o.err, "hullinspect: --preset: unknown preset 'nope' (known: beyond, fig8, paper, paper-quick)\n");
+  EXPECT_EQ(o.err, "hullinspect: --preset: unknown preset 'nope' (known: beyond, fig8, obstacles, paper, paper-quick)\n");
 
   o = run_cli({"experiment", "--preset", "paper-quick", "--out", out.string(), "--shard", "4/3"}, dir);
   EXPECT_EQ(o.status, 2);

@@ -121,7 +121,7 @@ TEST(ExperimentConfig, SweepsExpandIntoNamedScenarios) {
 }
 
 TEST(ExperimentConfig, PresetsMatchSpecSection6) {
-  EXPECT_EQ(preset_names(), (std::vector<std::string>{"beyond", "fig8", "paper", "paper-quick"}));
+  EXPECT_EQ(preset_names(), (std::vector<std::string>{"beyond", "fig8", "obstacles", "paper", "paper-quick"}));
   const auto paper = load_preset("paper");
   ASSERT_EQ(paper.scenarios.size(), 4u);
   EXPECT_EQ(paper.scenarios[1].name, "imperfect");
@@ -197,7 +197,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
   const std::vector<BadConfig> cases = {
       {"s1: 5\ngrdi: {}\n",
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, s1, "
-       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, truth)"},
+       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, truth, no-fly)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
@@ -283,7 +283,7 @@ TEST(ExperimentConfig, UnknownPresetListsTheKnownOnes) {
     FAIL() << "expected an error";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.name(), "preset");
-    EXPECT_EQ(e.problem(), "unknown preset 'papr' (known: beyond, fig8, paper, paper-quick)");
+    EXPECT_EQ(e.problem(), "unknown preset 'papr' (known: beyond, fig8, obstacles, paper, paper-quick)");
   }
 }
 

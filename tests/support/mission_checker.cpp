@@ -18,6 +18,7 @@ void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner
   last_m_ = sim.m_percent();
   for (const auto& u : sim.uavs()) {
     if (!sim.hull().is_hull(u.pos)) fail(fmt::format("UAV starts off the hull at ({}, {})", u.pos.x, u.pos.y));
+    if (sim.no_fly(u.pos)) fail(fmt::format("UAV starts on the no-fly position ({}, {})", u.pos.x, u.pos.y));
   }
 }
 
@@ -46,6 +47,9 @@ void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&
     }
     if (moved == 1 && before.z != after.z) fail(fmt::format("t={} UAV {} moved and changed plane", t, k));
     if (!sim.map().contains(after.pos)) fail(fmt::format("t={} UAV {} off the grid", t, k));
+    if (sim.map().contains(after.pos) && sim.no_fly(after.pos)) {
+      fail(fmt::format("t={} UAV {} on the no-fly position ({}, {})", t, k, after.pos.x, after.pos.y));
+    }
     if (after.z != 1 && after.z != 2) fail(fmt::format("t={} UAV {} on plane {}", t, k, after.z));
     if (after.transit_left < 0 || after.transit_left >= sim.plane_change_steps()) {
       fail(fmt::format("t={} UAV {} has {} transit steps left", t, k, after.transit_left));

@@ -59,6 +59,9 @@ struct ExperimentConfig {
   int hull_height = 0;
   int hull_cells = 0;
   double cell_size = 0.5;
+  /// No-fly positions (null = none) and how the config stated them ({file, boxes-m, hash}).
+  std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
+  nlohmann::json no_fly_spec;
   std::string prior_path, truth_path;  ///< the user's C′ and C ("prior:", "truth:"), resolved
   world::UserMaps maps;                ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points

@@ -23,6 +23,9 @@ struct PartitionRequest {
   /// Optional share per UAV (positive, any scale). Empty = equal shares.
   std::vector<double> shares;
   std::uint64_t seed = 0;
+  /// No-fly zones only: the positions UAVs can fly (1) — DARP's initial distances are then the
+  /// shortest flights over them (docs/model.md). Empty = none (BFS through hull cells).
+  grid::Grid<std::uint8_t> allowed;
 };
 
 struct Partition {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hullinspect/grid/cell.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 
 namespace hullinspect::planners {
 
@@ -33,6 +34,8 @@ class FrontierAssigner {
   /// Reserves room for up to `frontiers` frontiers and `robots` robots, so assign() never
   /// allocates.
   void reserve(int frontiers, int robots);
+  /// d(r, f) from the mission's distance service (shortest allowed flights); null: Manhattan.
+  void set_distances(grid::DistanceService* distances) { distances_ = distances; }
 
   /// Assigns one frontier to every robot. `frontiers` are the cells of F with their utilities U_f
   /// (eq. 13) in `utility`; `held` are the targets other EXPLORE UAVs keep, which reduce U by eq.
@@ -58,6 +61,7 @@ class FrontierAssigner {
 
   double beta_ = 1.0;
   int s2_ = 7;
+  grid::DistanceService* distances_ = nullptr;
   std::vector<double> travel_term_;  // β / max(1, d) for d = 0 … max_distance
   std::vector<double> reduction_;    // P(√q) for squared distances q < (2·s2)²
   std::vector<double> reduced_;

@@ -28,9 +28,11 @@ class InspectionClaims {
   /// The INSPECT target of `uav` at `pos`: the nearest cell (Manhattan; ties lowest (y, x)) among
   /// its claimed cells with M = 2 and every M = 2 cell within Manhattan distance `radius` of `pos`.
   /// Claimed cells that are no longer 2 are dropped from the claim list on the way. nullopt when
-  /// the set is empty.
+  /// the set is empty. With `distance_from_pos` (the distance service's field from `pos`, no-fly
+  /// zones) that distance replaces Manhattan in both rules.
   std::optional<grid::Cell> inspect_target(int uav, grid::Cell pos,
-                                           const grid::Grid<std::int8_t>& map, int radius);
+                                           const grid::Grid<std::int8_t>& map, int radius,
+                                           const grid::Grid<int>* distance_from_pos = nullptr);
 
  private:
   std::vector<int> owner_;

@@ -1,26 +1,26 @@
 #pragma once
-// Distance fields behind d_HP and d_C (model.md §5.4): the Manhattan distance from every cell to the
+// Distance fields behind d_HP and d_C (model.md §5.4): the distance (docs/model.md) from every cell to the
 // nearest member of a cell set that changes during the mission.
 
 #include <cstdint>
 
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/grid/grid.hpp"
 
 namespace hullinspect::planners {
 
-/// Exact Manhattan (4-neighbour, obstacle-free) distance from every cell to the nearest cell with
-/// sources != 0, by one forward and one backward raster pass: O(cells), no allocation once `out`
-/// has the right size. With no source every cell gets grid::kUnreachable.
-void manhattan_distance_transform(const grid::Grid<std::uint8_t>& sources, grid::Grid<int>& out);
+/// The obstacle-free transform now lives in the distance service's module.
+using grid::manhattan_distance_transform;
 
 /// A set of cells and the distance field to it. Membership changes are O(1) and only mark the field
 /// stale; the field is recomputed (one O(cells) transform) the first time it is read afterwards, so
 /// any number of changes between two reads costs one transform.
 class SourceDistanceField {
  public:
-  /// An empty set on a grid of `width` × `height` cells.
-  void reset(int width, int height);
+  /// An empty set on a grid of `width` × `height` cells; distances from `distances` (shortest
+  /// allowed paths) or, when null, Manhattan.
+  void reset(int width, int height, grid::DistanceService* distances = nullptr);
   /// Adds (member = true) or removes the cell.
   void set(int index, bool member);
   bool member(int index) const { return member_[index] != 0; }
@@ -36,6 +36,7 @@ class SourceDistanceField {
   long long transforms() const { return transforms_; }
 
  private:
+  grid::DistanceService* distances_ = nullptr;
   grid::Grid<std::uint8_t> member_;
   grid::Grid<int> distance_;
   int count_ = 0;

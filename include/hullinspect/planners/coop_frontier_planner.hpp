@@ -69,6 +69,13 @@ class CoopFrontierPlanner final : public Planner {
     bool has_target() const { return target.x >= 0; }
   };
 
+  /// M as this planner works with it: with no-fly zones, a cell no z = 2 footprint reaches and a
+  /// corroded one no z = 1 footprint reaches read 1 (nothing is left to do there).
+  std::int8_t effective(int index, std::int8_t m) const;
+  /// The next position from `pos` towards the allowed place that sees `target` on plane z.
+  grid::Cell step_to(grid::Cell pos, grid::Cell target, int z);
+  /// The service's distance field from `pos` with no-fly zones; null (Manhattan) without.
+  const grid::Grid<int>* field_from(grid::Cell pos);
   void absorb_readings(const sim::PlannerView& view);
   bool claim_detections(int uav, const sim::PlannerView& view);
   std::optional<grid::Cell> claim_nearest_free(int uav, grid::Cell pos);
@@ -80,7 +87,14 @@ class CoopFrontierPlanner final : public Planner {
   int radius_ = 0;
   std::vector<UavPlan> uavs_;
 
+  grid::DistanceService* distances_ = nullptr;  // the mission's, or own_distances_
+  grid::DistanceService own_distances_;
+  const grid::Grid<std::uint8_t>* reach_ = nullptr;  // no-fly zones only: kReachZ1/Z2 bits
+  int half1_ = 0;
+  int half2_ = 0;
+
   // What the fleet knows, mirrored from the readings so nothing is rescanned per step.
+  grid::Grid<std::int8_t> map_;         // effective() M
   std::vector<std::uint8_t> known_;     // M ≠ 0 (non-hull counts as known)
   FrontierSet frontiers_;               // F
   SourceDistanceField prior_field_;     // prior corrosion not yet seen by any UAV → d_HP

@@ -17,7 +17,8 @@ struct LawnmowerOptions {
 
 /// The baseline of model.md §5.2: descend to z = 1 once, then sweep the UAV's region strip by strip
 /// (strips of s1 rows from the bottom, flown along their centre rows, bottom to top, each from its
-/// nearer end). Ignores the prior and everything sensed.
+/// nearer end). Ignores the prior and everything sensed. With no-fly zones its route goes around
+/// them (lawnmower_no_fly.hpp).
 class LawnmowerPlanner final : public Planner {
  public:
   explicit LawnmowerPlanner(LawnmowerOptions options) : options_(std::move(options)) {}
@@ -37,6 +38,10 @@ class LawnmowerPlanner final : public Planner {
   std::shared_ptr<const partition::Partition> partition_;
   std::vector<WaypointFollower> followers_;
   std::vector<sim::UavState> last_;
+  grid::DistanceService own_distances_;
+  // With no-fly zones only: the waypoints of the z = 2 leg still to come, and whether it began.
+  std::vector<std::vector<grid::Cell>> climb_;
+  std::vector<std::uint8_t> climbed_;
 };
 
 }  // namespace hullinspect::planners

@@ -45,6 +45,11 @@ class LocalMaps {
   LocalMaps(const grid::Grid<std::int16_t>& owner, const grid::Grid<std::int8_t>& prior,
             bool use_prior, int uavs, int s1, int s2);
 
+  /// No-fly zones (docs/model.md): cells that can never reach their final state are written off —
+  /// a cell no z = 2 footprint reaches, and a corroded one (2) no z = 1 footprint reaches, read 1
+  /// in M^k from now on (nothing is left to do there). `reach` holds world::kReachZ1/Z2 bits.
+  void write_off(const grid::Grid<std::uint8_t>& reach);
+
   /// Applies UAV k's readings of one step to M^k (the model.md §3 table, cells of R_k only).
   LocalEvents ingest(int k, std::span<const sim::Reading> readings);
 
@@ -91,6 +96,7 @@ class LocalMaps {
   grid::Grid<std::int16_t> owner_;
   grid::Grid<std::int8_t> values_;
   grid::Grid<std::uint8_t> seen_from_z2_;  // UAV A(i) has seen cell i from z = 2
+  const grid::Grid<std::uint8_t>* reach_ = nullptr;  // set by write_off()
   std::array<StripLayout, 2> layouts_;
   std::vector<Region> regions_;
 };

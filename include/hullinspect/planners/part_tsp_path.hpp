@@ -1,7 +1,8 @@
 #pragma once
 // A UAV's current Part-TSP plan: the segments in TSP order, each entered at one end and flown to
-// the other along its flight row. Between consecutive waypoints the UAV follows the project's fixed
-// Manhattan rule (sim::step_towards: along x first, then along y).
+// the other along its flight row. Between consecutive waypoints the UAV follows the distance
+// service's shortest flight (without no-fly positions: the project's fixed Manhattan rule,
+// sim::step_towards: along x first, then along y).
 
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "hullinspect/grid/cell.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/planners/part_tsp_segments.hpp"
 #include "hullinspect/sim/types.hpp"
 #include "hullinspect/tsp/segment_tsp.hpp"
@@ -29,6 +31,8 @@ class SegmentPath {
               std::span<const std::pair<grid::Cell, grid::Cell>> ends,
               std::span<const tsp::Visit> order);
   void clear();
+  /// The service whose paths to follow; null: the Manhattan rule.
+  void set_distances(grid::DistanceService* distances) { distances_ = distances; }
 
   /// Passes over the waypoints already reached at `pos`.
   void advance(grid::Cell pos);
@@ -57,6 +61,7 @@ class SegmentPath {
   std::vector<grid::Cell> waypoints_;  // entry, exit of each visit
   std::size_t next_ = 0;
   std::vector<std::uint8_t> used_;  // scratch: segments already in the order
+  grid::DistanceService* distances_ = nullptr;
 };
 
 }  // namespace hullinspect::planners::part_tsp

@@ -88,6 +88,8 @@ class PartTspPlanner final : public Planner {
   std::unique_ptr<part_tsp::LocalMaps> maps_;
   std::vector<UavState> uavs_;
   sim::PlannerStats stats_;
+  grid::DistanceService* distances_ = nullptr;  // the mission's, or own_distances_
+  grid::DistanceService own_distances_;
   // Scratch reused by every plan.
   std::vector<part_tsp::StripSegment> segments_;
   std::vector<std::pair<grid::Cell, grid::Cell>> ends_;

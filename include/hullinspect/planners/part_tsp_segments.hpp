@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hullinspect/grid/cell.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/planners/part_tsp_local_map.hpp"
 
 namespace hullinspect::planners::part_tsp {
@@ -16,6 +17,9 @@ struct StripSegment {
   int row = 0;      ///< its flight row y_j
   int x_left = 0;   ///< first targeted column
   int x_right = 0;  ///< last targeted column (inclusive)
+  /// A point visit (no-fly zones only): the allowed position from which the targeted cells of
+  /// column x_left = x_right are seen; kNoCell for a segment flown along its row.
+  grid::Cell point = grid::kNoCell;
   friend bool operator==(const StripSegment&, const StripSegment&) = default;
 };
 
@@ -23,6 +27,15 @@ struct StripSegment {
 /// segments left to right. Reads only the column counts of `maps` (no rescan of the region).
 void divide_into_segments(const LocalMaps& maps, int k, int z, std::int8_t value,
                           std::vector<StripSegment>& out);
+
+/// The same division with no-fly positions (docs/model.md): a run of targeted columns is split
+/// wherever its flight-row position is not allowed; a targeted cell that no segment of its strip
+/// sees (its column is outside every segment's footprint reach) becomes a point visit at
+/// `distances.viewpoint()` (a zero-length segment; cells with no viewpoint are left out). Fills
+/// `out` and the matching flown `ends` (segment_ends with `trim`, or the point twice).
+void divide_around_no_fly(const LocalMaps& maps, int k, int z, std::int8_t value, int trim,
+                          grid::DistanceService& distances, std::vector<StripSegment>& out,
+                          std::vector<std::pair<grid::Cell, grid::Cell>>& ends);
 
 /// Whether some column between x_from and x_to (inclusive, either order) of the segment's strip
 /// still holds a cell of R_k with `value`.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/core/registry.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/partition/partitioner.hpp"
@@ -16,6 +17,7 @@
 #include "hullinspect/sim/planner_view.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "hullinspect/world/no_fly.hpp"
 
 namespace hullinspect::planners {
 
@@ -43,9 +45,24 @@ struct PlannerContext {
   const grid::Grid<std::int8_t>& prior;  ///< C' (−1 not hull, 0, 1)
   std::span<const grid::Cell> starts;    ///< the UAVs' start cells
   PartitionSource& partitions;
+  /// The mission's one distance service (docs/model.md, "No-fly zones"): every distance and path a
+  /// planner uses comes from it. run_mission() always sets it; null (hand-built contexts in tests)
+  /// means no no-fly positions — use planners::distances_of().
+  grid::DistanceService* distances = nullptr;
+  /// Which hull cells can be inspected / detected at all; null: every one.
+  const world::Reachability* reach = nullptr;
   /// The ground truth C — only for planners whose sees_truth() is true (oracle bounds); else null.
   const grid::Grid<std::int8_t>* truth = nullptr;
 };
+
+/// Adds the mission's no-fly zones to a partition request (DARP's initial distances then follow
+/// the shortest allowed flights); nothing without no-fly zones.
+void add_no_fly(partition::PartitionRequest& request, const PlannerContext& context);
+
+/// The context's distance service, or `fallback` (reset to an obstacle-free one of the hull's
+/// size) when the context has none.
+grid::DistanceService& distances_of(const PlannerContext& context,
+                                    grid::DistanceService& fallback);
 
 /// Receives what a planner wants shown in traces and the viewer; only called when tracing.
 class AnnotationSink {

@@ -1,10 +1,12 @@
 #pragma once
-// Follows a list of waypoints cell by cell under the fixed Manhattan rule (x first, then y).
+// Follows a list of waypoints cell by cell along the distance service's shortest flights (without
+// no-fly positions: the fixed Manhattan rule, x first, then y).
 
 #include <span>
 #include <vector>
 
 #include "hullinspect/grid/cell.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/sim/types.hpp"
 
 namespace hullinspect::planners {
@@ -16,10 +18,14 @@ class WaypointFollower {
     next_ = 0;
   }
   void clear() { assign({}); }
+  /// The service whose paths to follow; null: the Manhattan rule.
+  void set_distances(grid::DistanceService* distances) { distances_ = distances; }
   /// The move from `pos` towards the next waypoint not yet reached; kHover when all are reached.
   sim::Action next_action(grid::Cell pos) {
     while (next_ < waypoints_.size() && waypoints_[next_] == pos) ++next_;
-    return next_ < waypoints_.size() ? sim::step_towards(pos, waypoints_[next_]) : sim::Action::kHover;
+    if (next_ >= waypoints_.size()) return sim::Action::kHover;
+    if (distances_ == nullptr) return sim::step_towards(pos, waypoints_[next_]);
+    return sim::step_towards(pos, distances_->next_step(pos, waypoints_[next_]));
   }
   bool finished(grid::Cell pos) const {
     return next_ >= waypoints_.size() || (next_ + 1 == waypoints_.size() && waypoints_[next_] == pos);
@@ -32,6 +38,7 @@ class WaypointFollower {
  private:
   std::vector<grid::Cell> waypoints_;
   std::size_t next_ = 0;
+  grid::DistanceService* distances_ = nullptr;
 };
 
 }  // namespace hullinspect::planners

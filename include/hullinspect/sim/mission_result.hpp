@@ -36,8 +36,12 @@ struct MissionResult {
   bool stopped_idle = false;  ///< ended incomplete because no working UAV had anything left to do
   int bound_t_c = 0;  ///< analytic lower bound on T_c for this instance (docs/beyond.md)
   int bound_t_m = 0;  ///< analytic lower bound on T_m
+  /// Hull cells counted in m(t): those that can reach their final state (all of them without
+  /// no-fly zones; docs/model.md).
   int hull_cells = 0;
-  int corroded_cells = 0;  ///< #{C = 1}
+  int corroded_cells = 0;  ///< #{C = 1} counted in c(t): those a z = 1 footprint can reach
+  int unreachable_cells = 0;     ///< hull cells no allowed z = 1 footprint contains
+  int unreachable_z2_cells = 0;  ///< hull cells no allowed z = 2 footprint contains
   /// Per t = 0..steps: corroded cells inspected and hull cells known (M ∈ {1, 3}).
   std::vector<int> inspected_series;
   std::vector<int> known_series;

@@ -13,6 +13,7 @@
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "hullinspect/world/no_fly.hpp"
 
 namespace hullinspect::sim {
 
@@ -23,7 +24,8 @@ class Simulator {
             const world::MissionParams& params);
 
   /// Applies one action per UAV (ignored for UAVs in transit or failed), senses, advances t.
-  /// Throws LogicError if an action would leave the grid or the mission is already finished.
+  /// Throws LogicError if an action would leave the grid or enter a no-fly position (a planner
+  /// error), or the mission is already finished.
   void step(std::span<const Action> actions);
 
   /// UAV `uav` fails at the start of step `from_time` (t → t+1): from then on its actions are
@@ -32,6 +34,7 @@ class Simulator {
   void fail_uav_at(int uav, int from_time);
 
   int time() const { return time_; }
+  /// Every counted cell known: the hull cells that can reach their final state (docs/model.md).
   bool complete() const { return known_ == hull_cells_; }
   /// Complete, at the time limit, or no UAV left that can act (every UAV failed).
   bool finished() const {
@@ -41,6 +44,10 @@ class Simulator {
   const world::MissionParams& params() const { return params_; }
   const world::HullMask& hull() const { return hull_; }
   int plane_change_steps() const { return uz_; }
+  /// Flyable positions and the hull cells that can be inspected / detected (computed at t = 0).
+  const world::Reachability& reachability() const { return reach_; }
+  /// True when (x, y) is a no-fly position of the mission.
+  bool no_fly(grid::Cell c) const { return params_.no_fly && (*params_.no_fly)[c] != 0; }
 
   /// What the UAVs know — the only thing planners see.
   PlannerView view() const { return {time_, uavs_, map_, seen_, log_}; }
@@ -67,11 +74,13 @@ class Simulator {
   const world::HullMask& hull_;
   const grid::Grid<std::int8_t>& truth_;
   world::MissionParams params_;
+  world::Reachability reach_;
   int uz_ = 1;
   int time_ = 0;
 
   grid::Grid<std::int8_t> map_;
   grid::Grid<std::uint8_t> seen_;
+  grid::Grid<std::uint8_t> counted_;  // 1: the cell counts in c(t) / m(t)
   std::vector<UavState> uavs_;
   std::vector<int> fail_time_;
   std::vector<Action> applied_;

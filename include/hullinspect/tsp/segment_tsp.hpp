@@ -1,6 +1,7 @@
 #pragma once
 // The segment TSP of Part-TSP (model.md §5.3, eqs. 6–12): an open path from the UAV through every
-// segment, each segment flown end to end in one of its two directions, Manhattan costs.
+// segment, each segment flown end to end in one of its two directions. Costs are the mission's
+// distances (docs/model.md): Manhattan without no-fly zones, shortest allowed flights with them.
 // Solvers (docs/tsp.md): "exact" (default, proves optimality), "dfj-iterative" (the paper's
 // reference on CBC), "heuristic" (fast local search, no optimality claim).
 
@@ -13,6 +14,7 @@
 #include "hullinspect/core/options.hpp"
 #include "hullinspect/core/registry.hpp"
 #include "hullinspect/grid/cell.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 
 namespace hullinspect::tsp {
 
@@ -24,7 +26,14 @@ struct Segment {
 struct SegmentTsp {
   grid::Cell start;               ///< node 0, the UAV
   std::vector<Segment> segments;  ///< g segments
+  /// The mission's distance service; null = Manhattan costs (no no-fly positions).
+  grid::DistanceService* distances = nullptr;
 };
+
+/// The cost between two nodes' cells: the service's distance, or Manhattan without one.
+inline int node_distance(const SegmentTsp& problem, grid::Cell a, grid::Cell b) {
+  return problem.distances != nullptr ? problem.distances->distance(a, b) : grid::manhattan(a, b);
+}
 
 struct Visit {
   int segment = 0;

@@ -2,6 +2,7 @@
 // Mission parameters (model.md §1): fleet, camera footprints, plane-change time, start cells, time limit.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -20,6 +21,8 @@ struct MissionParams {
   int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
   std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
   int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
+  /// No-fly positions (1 = no UAV may be there, on either plane), the hull's size; null = none.
+  std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
 
   /// Δζ = (s2 − s1) / (2·tan(θ/2)), in cells.
   double delta_zeta_cells() const;
@@ -32,8 +35,10 @@ struct MissionParams {
 /// Throws ParameterError naming the field ("uavs", "s2", "theta", …) and the accepted range.
 void validate(const MissionParams& params, const HullMask& hull);
 
-/// The start cells of the mission: `params.starts` snapped to the hull, or the model.md §1 defaults
-/// x_k = floor((k + 0.5)·a/n), y = floor(b/2), snapped to the nearest hull cell.
+/// The start cells of the mission: `params.starts` snapped to the hull, or the defaults of
+/// docs/model.md §1: UAV k aims at x = x0 + floor((k + 0.5)·w/n) on the middle row of the hull's
+/// bounding box and takes the nearest hull cell that no earlier UAV took and that is not a no-fly
+/// position, so default starts are always distinct and allowed.
 std::vector<grid::Cell> start_cells(const MissionParams& params, const HullMask& hull);
 
 }  // namespace hullinspect::world
