@@ -53,7 +53,11 @@ Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionS
                                                   "session does not have",
                                                   spec_.algorithm));
   }
-  planners::PlannerContext context{*hull_, spec_.params, instance_.prior, starts_, partitions_};
+  reach_ = world::compute_reachability(*hull_, spec_.params.no_fly.get(), spec_.params.s1,
+                                       spec_.params.s2, starts_);
+  distances_ = world::make_distance_service(reach_);
+  planners::PlannerContext context{*hull_,      spec_.params, instance_.prior, starts_,
+                                   partitions_, &distances_,  &reach_};
   const auto t0 = Clock::now();
   planner_->start(context);
   planner_seconds_ += seconds_since(t0);

@@ -65,6 +65,10 @@ class Session {
   planners::MissionSpec spec_;
   world::Instance instance_;  // truth: the latest reading of each cell; prior: the caller's C′
   std::vector<grid::Cell> starts_;
+  // The planner's view of the no-fly zones, as run_mission() builds it (the simulator computes
+  // the same reachability again when it starts at the first step).
+  world::Reachability reach_;
+  grid::DistanceService distances_;
   planners::DirectPartitionSource partitions_;
   std::unique_ptr<planners::Planner> planner_;
   std::optional<sim::Simulator> sim_;
