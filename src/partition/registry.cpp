@@ -2,6 +2,7 @@
 #include "hullinspect/partition/darp_partitioner.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/partition/stripes_partitioner.hpp"
+#include "hullinspect/partition/transfer_partitioner.hpp"
 
 namespace hullinspect::partition {
 
@@ -17,6 +18,12 @@ void add_builtins(PartitionerRegistry& r) {
       "stripes", "equal-area vertical bands, in the order of the start cells' x",
       Params<StripesOptions>("stripes"),
       [](const StripesOptions&) { return std::make_unique<StripesPartitioner>(); }));
+  r.add_builtin(make_entry<Partitioner, TransferOptions>(
+      "transfer",
+      "geodesic Voronoi regions balanced exactly by connectivity-keeping boundary transfers "
+      "(docs/partition.md); fast for large fleets",
+      transfer_params(),
+      [](const TransferOptions& o) { return std::make_unique<TransferPartitioner>(o); }));
 }
 
 }  // namespace

@@ -1,13 +1,12 @@
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
-#include "hullinspect/core/errors.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 
 #include "hullinspect/planners/lawnmower_planner.hpp"
+#include "hullinspect/world/no_fly.hpp"
 
 namespace hullinspect::planners {
 
@@ -17,18 +16,22 @@ int chebyshev(grid::Cell a, grid::Cell b) {
 }
 }  // namespace
 
-grid::Cell SweepInspectPlanner::reach_position(grid::Cell pos, grid::Cell c, int h) {
-  return {std::clamp(pos.x, c.x - h, c.x + h), std::clamp(pos.y, c.y - h, c.y + h)};
+grid::Cell SweepInspectPlanner::reach_position(grid::Cell pos, grid::Cell c, int h) const {
+  const grid::Cell clamped{std::clamp(pos.x, c.x - h, c.x + h),
+                           std::clamp(pos.y, c.y - h, c.y + h)};
+  if (reach_ == nullptr || distances_->allowed(clamped)) return clamped;
+  return distances_->viewpoint(c, h);
+}
+
+sim::Action SweepInspectPlanner::step(grid::Cell pos, grid::Cell to) const {
+  return sim::step_towards(pos, distances_->next_step(pos, to));
 }
 
 void SweepInspectPlanner::start(const PlannerContext& context) {
-  // Its moves follow the fixed Manhattan rule, which may cross a no-fly position: refuse rather
-  // than let the simulator stop the mission on the first forbidden move.
-  if (context.params.no_fly) {
-    throw ParameterError("algorithm",
-                         "sweep-inspect does not fly around no-fly zones yet (use lawnmower, "
-                         "part-tsp, part-tsp0 or coop-frontier)");
-  }
+  // Every distance and move comes from the mission's distance service (docs/model.md, "No-fly
+  // zones"); without no-fly positions it answers Manhattan distances and the x-then-y rule.
+  distances_ = &distances_of(context, own_distances_);
+  reach_ = context.reach != nullptr && context.reach->any_no_fly ? &context.reach->reach : nullptr;
   const auto& p = context.params;
   h1_ = (p.s1 - 1) / 2;
   h2_ = (p.s2 - 1) / 2;
@@ -37,6 +40,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   request.hull = &context.hull;
   request.starts.assign(context.starts.begin(), context.starts.end());
   request.seed = options_.partition_seed;
+  add_no_fly(request, context);
   if (options_.prior_weights) {
     // Expected work of a cell: sweeping it at z = 2 costs 1/s2 of a step; a prior cell adds an
     // expected inspection detour (its probability of being real times ~ one z = 1 pass of s1).
@@ -49,13 +53,27 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   const int n = p.uavs;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});
   for (int k = 0; k < n; ++k) {
-    uavs_[static_cast<std::size_t>(k)].sweep.assign(LawnmowerPlanner::sweep(
-        partition_->owner, k, p.s2, context.starts[static_cast<std::size_t>(k)]));
+    auto waypoints = LawnmowerPlanner::sweep(partition_->owner, k, p.s2,
+                                             context.starts[static_cast<std::size_t>(k)]);
+    if (reach_ != nullptr) {
+      // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
+      // the flight between waypoints goes around no-fly positions, and whatever the strips then
+      // miss is found as unknown cells by the help phase.
+      std::vector<grid::Cell> flyable;
+      for (const grid::Cell w : waypoints) {
+        const grid::Cell v = distances_->allowed(w) ? w : distances_->viewpoint(w, h2_);
+        if (v != grid::kNoCell && (flyable.empty() || flyable.back() != v)) flyable.push_back(v);
+      }
+      waypoints = std::move(flyable);
+    }
+    Uav& uav = uavs_[static_cast<std::size_t>(k)];
+    uav.sweep.assign(std::move(waypoints));
+    uav.sweep.set_distances(distances_);
   }
   prior_.assign(static_cast<std::size_t>(n), {});
   if (options_.prior_first) {
     for (int i : context.hull.cells()) {
-      if (context.prior[i] == 1)
+      if (context.prior[i] == 1 && reachable(i, world::kReachZ1))
         prior_[static_cast<std::size_t>(partition_->owner[i])].push_back(i);
     }
   }
@@ -79,8 +97,8 @@ int SweepInspectPlanner::nearest_pending(int k, grid::Cell pos, grid::Cell aroun
     const grid::Cell c = view.map.cell(i);
     if (radius >= 0 && chebyshev(c, around) > radius) continue;
     if (!options_.help && partition_->owner[i] != k) continue;
-    if (claimed_by_other(k, i)) continue;
-    const int d = grid::manhattan(pos, reach_position(pos, c, h1_));
+    if (!reachable(i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+    const int d = distances_->distance(pos, reach_position(pos, c, h1_));
     if (d < best_d) {
       best_d = d;
       best = i;
@@ -99,9 +117,9 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
       continue;
     }
     if (!options_.help && partition_->owner[i] != k) continue;
-    if (claimed_by_other(k, i)) continue;
+    if (!reachable(i, world::kReachZ2) || claimed_by_other(k, i)) continue;
     const grid::Cell c = view.map.cell(i);
-    const int d = grid::manhattan(pos, reach_position(pos, c, h2_));
+    const int d = distances_->distance(pos, reach_position(pos, c, h2_));
     if (d < best_d) {
       best_d = d;
       best = i;
@@ -149,14 +167,14 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       int best = -1;
       int best_d = std::numeric_limits<int>::max();
       for (int i : cells) {
-        const int d = grid::manhattan(u.pos, reach_position(u.pos, view.map.cell(i), h1_));
+        const int d = distances_->distance(u.pos, reach_position(u.pos, view.map.cell(i), h1_));
         if (d < best_d) {
           best_d = d;
           best = i;
         }
       }
       p.target = reach_position(u.pos, view.map.cell(best), h1_);
-      return sim::step_towards(u.pos, p.target);
+      return step(u.pos, p.target);
     }
   }
 
@@ -170,13 +188,13 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
         for (int i : pending_) {
           const grid::Cell c = view.map.cell(i);
           if (std::abs(c.x - u.pos.x) <= h1_ && std::abs(c.y - u.pos.y) <= h2_ &&
-              !claimed_by_other(k, i)) {
+              reachable(i, world::kReachZ1) && !claimed_by_other(k, i)) {
             p.resume = u.pos;
             return sim::Action::kChangePlane;
           }
         }
       }
-      if (p.mode == Mode::kReturn) return sim::step_towards(u.pos, p.resume);
+      if (p.mode == Mode::kReturn) return step(u.pos, p.resume);
       const sim::Action a = p.sweep.next_action(u.pos);
       if (a != sim::Action::kHover) return a;
       p.mode = Mode::kHelp;
@@ -189,21 +207,26 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     if (u.z == 2) {  // climbed back: resume the sweep
       p.mode = Mode::kReturn;
       p.target_cell = -1;
-      return u.pos == p.resume ? decide_uav(k, u, view) : sim::step_towards(u.pos, p.resume);
+      return u.pos == p.resume ? decide_uav(k, u, view) : step(u.pos, p.resume);
     }
     const int cell = nearest_pending(k, u.pos, p.resume, radius_, view);
     p.target_cell = cell;
     if (cell < 0) return sim::Action::kChangePlane;
     p.target = reach_position(u.pos, view.map.cell(cell), h1_);
-    return sim::step_towards(u.pos, p.target);
+    return step(u.pos, p.target);
   }
 
   if (p.mode == Mode::kHelp) {
     // Keep a target while it is still work; else take the nearest unclaimed work anywhere:
     // detected cells first (inspected from z = 1), then unknown cells (covered from z = 2).
-    const bool target_done =
-        p.target_cell < 0 || (view.map[p.target_cell] != sim::kUnknown &&
-                              !(view.map[p.target_cell] == sim::kCorrosionSeen));
+    // A cell taken as unknown that turned out corroded needs z = 1 now: drop it when no z = 1
+    // footprint reaches it (no-fly zones).
+    const bool target_done = p.target_cell < 0 ||
+                             (view.map[p.target_cell] != sim::kUnknown &&
+                              !(view.map[p.target_cell] == sim::kCorrosionSeen)) ||
+                             (view.map[p.target_cell] == sim::kCorrosionSeen &&
+                              (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0 &&
+                              !reachable(p.target_cell, world::kReachZ1));
     if (target_done) {
       p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
       if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
@@ -220,10 +243,10 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     p.target = reach_position(u.pos, c, inspect ? h1_ : h2_);
     if (u.z != want_z) {
       // Change plane where the work is: go there first at z = 2, climb at once from z = 1.
-      if (u.z == 2 && u.pos != p.target) return sim::step_towards(u.pos, p.target);
+      if (u.z == 2 && u.pos != p.target) return step(u.pos, p.target);
       return sim::Action::kChangePlane;
     }
-    return sim::step_towards(u.pos, p.target);
+    return step(u.pos, p.target);
   }
   return sim::Action::kHover;  // kDone
 }

@@ -186,7 +186,7 @@ TEST_F(PartitionCli, BadInputIsOneLineAndExitTwo) {
        "hullinspect: --option: darp.cc: must be a number in [0, 0.5] (got '5')"},
       {"--uavs 2 -O cc", "hullinspect: --option: expects KEY=VALUE (got 'cc')"},
       {"--uavs 2 --partitioner nope",
-       "hullinspect: --partitioner: unknown partitioner 'nope' (known: darp, stripes)"},
+       "hullinspect: --partitioner: unknown partitioner 'nope' (known: darp, stripes, transfer)"},
       {"--uavs 70",  // --out (added below) has 62 symbols
        "hullinspect: --out: a region mask has symbols for at most 62 UAVs (got 70)"},
       {"--uavs 2 --hull /nonexistent/hull.txt",

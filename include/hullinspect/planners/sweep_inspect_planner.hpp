@@ -53,8 +53,15 @@ class SweepInspectPlanner final : public Planner {
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
-  /// Nearest position whose footprint of half-width h holds `c`.
-  static grid::Cell reach_position(grid::Cell pos, grid::Cell c, int h);
+  /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
+  /// footprint square); with no-fly zones, when that is not flyable, the service's viewpoint of c.
+  grid::Cell reach_position(grid::Cell pos, grid::Cell c, int h) const;
+  /// Whether cell i can ever be seen from z = 1 (bit kReachZ1) / z = 2 (kReachZ2).
+  bool reachable(int i, std::uint8_t bit) const {
+    return reach_ == nullptr || ((*reach_)[i] & bit) != 0;
+  }
+  /// The move from `pos` one step along the service's shortest flight to `to`.
+  sim::Action step(grid::Cell pos, grid::Cell to) const;
 
   SweepInspectOptions options_;
   std::shared_ptr<const partition::Partition> partition_;
@@ -62,6 +69,9 @@ class SweepInspectPlanner final : public Planner {
   std::vector<int> pending_;  // detected (seen at z = 2), not yet inspected cells, flat indices
   std::vector<int> hull_cells_;
   std::vector<std::vector<int>> prior_;  // per UAV: the prior's cells of its region still M = 2
+  grid::DistanceService own_distances_;
+  grid::DistanceService* distances_ = nullptr;
+  const grid::Grid<std::uint8_t>* reach_ = nullptr;  // null: no no-fly zones, all reachable
   int h1_ = 2;
   int h2_ = 3;
   int radius_ = 7;

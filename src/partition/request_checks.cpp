@@ -1,0 +1,73 @@
+#include "request_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::partition::detail {
+
+std::string cell_text(grid::Cell c) {
+  return fmt::format("({}, {})", c.x, c.y);
+}
+
+std::vector<int> checked_starts(const world::HullMask& hull, std::span<const grid::Cell> starts) {
+  std::vector<int> index;
+  std::vector<grid::Cell> snapped;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const grid::Cell c = starts[k];
+    if (!hull.mask().contains(c)) {
+      throw ParameterError(
+          "starts", fmt::format("start cell {} of UAV {} is outside the {} × {} grid", cell_text(c),
+                                k, hull.width(), hull.height()));
+    }
+    snapped.push_back(hull.is_hull(c) ? c : hull.snap(c));
+  }
+  for (std::size_t k = 0; k < snapped.size(); ++k) {
+    for (std::size_t other = 0; other < k; ++other) {
+      if (snapped[other] != snapped[k]) continue;
+      const bool moved = snapped[k] != starts[k] || snapped[other] != starts[other];
+      throw ParameterError(
+          "starts", fmt::format("UAVs {} and {} both start on cell {}{}; every UAV needs its own "
+                                "start cell",
+                                other, k, cell_text(snapped[k]),
+                                moved ? " (after snapping to the nearest hull cell)" : ""));
+    }
+    index.push_back(hull.mask().index(snapped[k]));
+  }
+  return index;
+}
+
+void check_weights(const world::HullMask& hull, const grid::Grid<double>& weights) {
+  if (weights.width() != hull.width() || weights.height() != hull.height()) {
+    throw ParameterError("weights",
+                         fmt::format("grid is {} × {} but the hull is {} × {}", weights.width(),
+                                     weights.height(), hull.width(), hull.height()));
+  }
+  for (int i : hull.cells()) {
+    const double w = weights[i];
+    if (!(w > 0) || !std::isfinite(w)) {
+      throw ParameterError("weights", fmt::format("hull cell {} has weight {}; weights must be "
+                                                  "finite and > 0",
+                                                  cell_text(hull.mask().cell(i)), w));
+    }
+  }
+}
+
+std::vector<double> checked_shares(std::span<const double> shares, int n) {
+  if (shares.empty()) return std::vector<double>(static_cast<std::size_t>(n), 1.0);
+  if (static_cast<int>(shares.size()) != n) {
+    throw ParameterError("shares", fmt::format("gives {} shares for {} UAVs", shares.size(), n));
+  }
+  for (std::size_t k = 0; k < shares.size(); ++k) {
+    if (!(shares[k] > 0) || !std::isfinite(shares[k])) {
+      throw ParameterError("shares", fmt::format("share of UAV {} is {}; shares must be finite and "
+                                                 "> 0",
+                                                 k, shares[k]));
+    }
+  }
+  return {shares.begin(), shares.end()};
+}
+
+}  // namespace hullinspect::partition::detail

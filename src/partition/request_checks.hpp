@@ -1,0 +1,22 @@
+#pragma once
+// Checks shared by the partitioners that take start cells (darp, transfer): starts inside the grid,
+// snapped onto the hull and distinct; weights finite and > 0 on hull cells; shares finite and > 0.
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "hullinspect/grid/grid.hpp"
+#include "hullinspect/world/hull.hpp"
+
+namespace hullinspect::partition::detail {
+
+std::string cell_text(grid::Cell c);
+/// Start cells as flat indices: outside the grid is a ParameterError("starts"), off the hull is
+/// snapped (HullMask::snap), two UAVs on one cell (also after snapping) an error naming both.
+std::vector<int> checked_starts(const world::HullMask& hull, std::span<const grid::Cell> starts);
+void check_weights(const world::HullMask& hull, const grid::Grid<double>& weights);
+/// The shares (equal when empty); a wrong count or a non-positive share is a ParameterError.
+std::vector<double> checked_shares(std::span<const double> shares, int n);
+
+}  // namespace hullinspect::partition::detail

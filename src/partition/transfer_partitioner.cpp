@@ -1,0 +1,668 @@
+#include "hullinspect/partition/transfer_partitioner.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
+#include "hullinspect/grid/distance.hpp"
+#include "hullinspect/grid/distance_service.hpp"
+#include "hullinspect/world/mission_params.hpp"
+#include "hullinspect/world/random.hpp"
+#include "request_checks.hpp"
+
+namespace hullinspect::partition {
+
+namespace {
+
+// The 8 cells around a cell in ring order; consecutive entries are 4-adjacent, and the odd entries
+// are the 4-neighbours of the centre.
+constexpr std::array<int, 8> kRingDx = {-1, 0, 1, 1, 1, 0, -1, -1};
+constexpr std::array<int, 8> kRingDy = {-1, -1, -1, 0, 1, 1, 1, 0};
+
+struct HeapEntry {
+  long long key;  // smaller first
+  int cell;
+  bool operator>(const HeapEntry& o) const { return key != o.key ? key > o.key : cell > o.cell; }
+};
+
+// The state of one run: owners, region totals and the per-start distance fields.
+class TransferWorkspace {
+ public:
+  TransferWorkspace(const world::HullMask& hull, std::vector<int> starts,
+                    const grid::Grid<double>* weights)
+      : hull_(hull),
+        width_(hull.width()),
+        height_(hull.height()),
+        n_(static_cast<int>(starts.size())),
+        starts_(std::move(starts)),
+        weights_(weights),
+        owner_(static_cast<std::size_t>(width_) * height_, -1),
+        distance_(static_cast<std::size_t>(n_) * owner_.size(), 0),
+        weight_(static_cast<std::size_t>(n_), 0.0),
+        adjacent_(static_cast<std::size_t>(n_) * n_, 0),
+        blocked_(static_cast<std::size_t>(n_) * n_, 0) {
+    heap_.reserve(owner_.size() * 4);
+    for (auto* v : {&seen_, &parent_, &disc_, &low_}) v->assign(owner_.size(), 0);
+    subtree_.assign(owner_.size(), 0.0);
+    cut_off_.assign(owner_.size(), 0.0);
+    dfs_.reserve(owner_.size());
+  }
+
+  int n() const { return n_; }
+
+  // Back to the empty state for another attempt; `rs` (or none: attempt 0) draws the tie-breaking
+  // jitter of every cell, which orders cells of equal distance differently.
+  void reset(world::RandomStream* rs) {
+    std::fill(owner_.begin(), owner_.end(), -1);
+    std::fill(weight_.begin(), weight_.end(), 0.0);
+    clear_blocks();
+    jitter_.assign(owner_.size(), 0);
+    if (rs != nullptr) {
+      for (auto& j : jitter_) j = static_cast<int>(rs->below(kJitter));
+    }
+  }
+  const std::vector<int>& owner() const { return owner_; }
+  double weight(int r) const { return weight_[static_cast<std::size_t>(r)]; }
+  double cell_weight(int i) const { return weights_ ? (*weights_)[i] : 1.0; }
+
+  // Distances from every start: through hull cells, or the shortest flights over `allowed`
+  // (cells no flight reaches get the largest finite distance + 1, as in DARP).
+  void compute_distances(const grid::Grid<std::uint8_t>* allowed) {
+    const std::size_t cells = owner_.size();
+    if (allowed == nullptr) {
+      grid::Grid<int> field;
+      grid::BfsScratch scratch;
+      for (int r = 0; r < n_; ++r) {
+        const int source = starts_[static_cast<std::size_t>(r)];
+        grid::bfs_distances(hull_.mask(), std::span<const int>(&source, 1), field, scratch);
+        store_field(
+            r, [&](std::size_t i) { return field[static_cast<int>(i)]; }, cells);
+      }
+      return;
+    }
+    grid::DistanceService service(*allowed, /*cached_fields=*/1);
+    for (int r = 0; r < n_; ++r) {
+      const grid::Grid<int>& field =
+          service.field(allowed->cell(starts_[static_cast<std::size_t>(r)]));
+      store_field(
+          r, [&](std::size_t i) { return field[static_cast<int>(i)]; }, cells);
+    }
+  }
+
+  // Grows every region from its start, cell by cell in order of (distance from its start, UAV id,
+  // cell index) through hull cells: the geodesic Voronoi partition, connected by construction
+  // (every cell joins through a neighbour its region already holds). Returns the number of hull
+  // cells no start reaches.
+  int grow() {
+    heap_.clear();
+    for (int r = 0; r < n_; ++r) {
+      const int s = starts_[static_cast<std::size_t>(r)];
+      owner_[static_cast<std::size_t>(s)] = r;
+      weight_[static_cast<std::size_t>(r)] += cell_weight(s);
+    }
+    for (int r = 0; r < n_; ++r)
+      push_neighbours_for_growth(starts_[static_cast<std::size_t>(r)], r);
+    while (!heap_.empty()) {
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+      const HeapEntry e = heap_.back();
+      heap_.pop_back();
+      const int cell = e.cell / n_;
+      const int r = e.cell % n_;
+      if (owner_[static_cast<std::size_t>(cell)] >= 0) continue;
+      owner_[static_cast<std::size_t>(cell)] = r;
+      weight_[static_cast<std::size_t>(r)] += cell_weight(cell);
+      push_neighbours_for_growth(cell, r);
+    }
+    int unreached = 0;
+    for (int i : hull_.cells()) unreached += owner_[static_cast<std::size_t>(i)] < 0;
+    return unreached;
+  }
+
+  // Which regions touch which (4-adjacency), rebuilt from the owners.
+  void rebuild_adjacency() {
+    std::fill(adjacent_.begin(), adjacent_.end(), 0);
+    for (int i : hull_.cells()) {
+      const int a = owner_[static_cast<std::size_t>(i)];
+      const int x = i % width_;
+      if (x + 1 < width_) mark_adjacent(a, owner_[static_cast<std::size_t>(i + 1)]);
+      if (i + width_ < static_cast<int>(owner_.size()))
+        mark_adjacent(a, owner_[static_cast<std::size_t>(i + width_)]);
+    }
+  }
+  bool adjacent(int a, int b) const { return adjacent_[index(a, b)] != 0; }
+  bool blocked(int from, int to) const { return blocked_[index(from, to)] != 0; }
+  void block(int from, int to) { blocked_[index(from, to)] = 1; }
+  void clear_blocks() { std::fill(blocked_.begin(), blocked_.end(), 0); }
+
+  // Moves boundary cells of region `from` to the adjacent region `to` until `amount` weight has
+  // moved (or no movable cell is left); returns the weight moved. A cell moves only if it is not
+  // `from`'s start and its removal keeps `from` 4-connected (local test below); it joins `to`
+  // through a neighbour `to` holds, so `to` stays connected. Cells closest to `to`'s start relative
+  // to `from`'s go first, which keeps the boundary where the distance fields put it.
+  double transfer(int from, int to, double amount) {
+    heap_.clear();
+    for (int i : hull_.cells()) {
+      if (owner_[static_cast<std::size_t>(i)] == from && touches(i, to))
+        push_candidate(i, from, to);
+    }
+    double moved = 0;
+    const int from_start = starts_[static_cast<std::size_t>(from)];
+    auto move = [&](int cell) {
+      owner_[static_cast<std::size_t>(cell)] = to;
+      const double w = cell_weight(cell);
+      weight_[static_cast<std::size_t>(from)] -= w;
+      weight_[static_cast<std::size_t>(to)] += w;
+      moved += w;
+      // The move can make any cell of `from` around it movable (its ring changed).
+      const int x = cell % width_;
+      const int y = cell / width_;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kRingDx[static_cast<std::size_t>(k)];
+        const int ny = y + kRingDy[static_cast<std::size_t>(k)];
+        if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
+        const int nb = ny * width_ + nx;
+        if (owner_[static_cast<std::size_t>(nb)] == from) push_candidate(nb, from, to);
+      }
+    };
+    while (moved < amount - 1e-9) {
+      if (heap_.empty()) {
+        // The local test found nothing: ask the exact one (articulation points of `from`), which
+        // also frees cells beside holes and around loops of the region.
+        const int cell = best_exact_move(from, to, from_start, amount - moved);
+        if (cell < 0) break;
+        move(cell);
+        // Cells the move cut off from `from`'s start follow it into `to` (they touch it through
+        // the moved cell, so both regions stay connected).
+        for (int i : hull_.cells()) {
+          if (owner_[static_cast<std::size_t>(i)] == from)
+            owner_[static_cast<std::size_t>(i)] = kMark;
+        }
+        flood_back(from_start, from);
+        for (int i : hull_.cells()) {
+          if (owner_[static_cast<std::size_t>(i)] == kMark) move(i);
+        }
+        continue;
+      }
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+      const int cell = heap_.back().cell;
+      heap_.pop_back();
+      if (owner_[static_cast<std::size_t>(cell)] != from || cell == from_start) continue;
+      if (!touches(cell, to) || !removable(cell, from)) continue;
+      move(cell);
+    }
+    return moved;
+  }
+
+ private:
+  // The best cell of `from` beside `to` (smallest transfer key, never the start) that can move
+  // together with the cells its removal cuts off from the start (found with an iterative Tarjan
+  // search from the start: the DFS subtrees below it whose low point does not climb above it)
+  // without the moved weight exceeding `room`. -1 when there is none. O(region) per call; used only
+  // when the local test finds nothing, e.g. beside holes, around loops, or along one-cell-wide
+  // arms.
+  int best_exact_move(int from, int to, int root, double room) {
+    ++epoch_;
+    int timer = 0;
+    dfs_.clear();
+    visit(root, -1, timer);
+    while (!dfs_.empty()) {
+      auto& [v, next] = dfs_.back();
+      if (next < 4) {
+        const int w = neighbour(v, next++);
+        if (w < 0 || owner_[static_cast<std::size_t>(w)] != from) continue;
+        if (seen_[static_cast<std::size_t>(w)] != epoch_) {
+          visit(w, v, timer);
+        } else if (w != parent_[static_cast<std::size_t>(v)]) {
+          low_[static_cast<std::size_t>(v)] =
+              std::min(low_[static_cast<std::size_t>(v)], disc_[static_cast<std::size_t>(w)]);
+        }
+        continue;
+      }
+      const int done = v;
+      dfs_.pop_back();
+      const int p = parent_[static_cast<std::size_t>(done)];
+      if (p < 0) continue;
+      const auto pi = static_cast<std::size_t>(p);
+      const auto di = static_cast<std::size_t>(done);
+      low_[pi] = std::min(low_[pi], low_[di]);
+      subtree_[pi] += subtree_[di];
+      if (low_[di] >= disc_[pi]) cut_off_[pi] += subtree_[di];
+    }
+    int best = -1;
+    long long best_key = std::numeric_limits<long long>::max();
+    for (int i : hull_.cells()) {
+      if (seen_[static_cast<std::size_t>(i)] != epoch_ || i == root) continue;
+      const double weight = cell_weight(i) + cut_off_[static_cast<std::size_t>(i)];
+      if (weight > room + 1e-9 || !touches(i, to)) continue;
+      const long long key = transfer_key(i, from, to);
+      if (key < best_key) {
+        best_key = key;
+        best = i;
+      }
+    }
+    return best;
+  }
+  // Gives the cells marked kMark that are 4-connected to `start` through marked cells back to
+  // `region` (the start itself belongs to it already).
+  void flood_back(int start, int region) {
+    dfs_.clear();
+    dfs_.push_back({start, 0});
+    while (!dfs_.empty()) {
+      const int v = dfs_.back().first;
+      dfs_.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        const int w = neighbour(v, k);
+        if (w < 0 || owner_[static_cast<std::size_t>(w)] != kMark) continue;
+        owner_[static_cast<std::size_t>(w)] = region;
+        dfs_.push_back({w, 0});
+      }
+    }
+  }
+  static constexpr int kMark = -2;
+
+  void visit(int cell, int parent, int& timer) {
+    seen_[static_cast<std::size_t>(cell)] = epoch_;
+    parent_[static_cast<std::size_t>(cell)] = parent;
+    disc_[static_cast<std::size_t>(cell)] = low_[static_cast<std::size_t>(cell)] = timer++;
+    subtree_[static_cast<std::size_t>(cell)] = cell_weight(cell);
+    cut_off_[static_cast<std::size_t>(cell)] = 0;
+    dfs_.push_back({cell, 0});
+  }
+  int neighbour(int cell, int k) const {
+    const int x = cell % width_;
+    const int y = cell / width_;
+    switch (k) {
+      case 0:
+        return x > 0 ? cell - 1 : -1;
+      case 1:
+        return x + 1 < width_ ? cell + 1 : -1;
+      case 2:
+        return y > 0 ? cell - width_ : -1;
+      default:
+        return y + 1 < height_ ? cell + width_ : -1;
+    }
+  }
+  std::size_t index(int a, int b) const { return static_cast<std::size_t>(a) * n_ + b; }
+  void mark_adjacent(int a, int b) {
+    if (a < 0 || b < 0 || a == b) return;
+    adjacent_[index(a, b)] = 1;
+    adjacent_[index(b, a)] = 1;
+  }
+
+  template <typename Field>
+  void store_field(int r, Field field, std::size_t cells) {
+    int far = 0;
+    for (std::size_t i = 0; i < cells; ++i) {
+      const int d = field(i);
+      if (d < grid::kUnreachable) far = std::max(far, d);
+    }
+    int* out = &distance_[static_cast<std::size_t>(r) * cells];
+    for (std::size_t i = 0; i < cells; ++i) out[i] = std::min(field(i), far + 1);
+    key_scale_ = std::max(key_scale_, static_cast<long long>(far) + 2);
+  }
+  int distance(int r, int cell) const {
+    return distance_[static_cast<std::size_t>(r) * owner_.size() + static_cast<std::size_t>(cell)];
+  }
+
+  template <typename F>
+  void for_each_neighbour(int cell, F f) const {
+    const int x = cell % width_;
+    const int y = cell / width_;
+    if (x > 0 && hull_.is_hull(cell - 1)) f(cell - 1);
+    if (x + 1 < width_ && hull_.is_hull(cell + 1)) f(cell + 1);
+    if (y > 0 && hull_.is_hull(cell - width_)) f(cell - width_);
+    if (y + 1 < height_ && hull_.is_hull(cell + width_)) f(cell + width_);
+  }
+
+  void push_neighbours_for_growth(int cell, int r) {
+    for_each_neighbour(cell, [&](int nb) {
+      if (owner_[static_cast<std::size_t>(nb)] >= 0) return;
+      // One key orders by (distance, UAV, cell); the entry's cell field carries cell · n + UAV.
+      const long long key = (static_cast<long long>(distance(r, nb)) * kJitter +
+                             jitter_[static_cast<std::size_t>(nb)]) *
+                                n_ +
+                            r;
+      heap_.push_back({key, nb * n_ + r});
+      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+    });
+  }
+
+  void push_candidate(int cell, int from, int to) {
+    heap_.push_back({transfer_key(cell, from, to), cell});
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+  }
+
+  long long transfer_key(int cell, int from, int to) const {
+    // Manhattan-like distances tie over whole rows (every cell beyond both starts has the same
+    // difference), so among equal differences the cell nearest `to`'s start goes first; without
+    // that, ties by index would peel one row off far along the hull.
+    const long long key =
+        (static_cast<long long>(distance(to, cell)) - distance(from, cell)) * key_scale_ +
+        distance(to, cell);
+    return key * kJitter + jitter_[static_cast<std::size_t>(cell)];
+  }
+
+  bool touches(int cell, int region) const {
+    bool found = false;
+    for_each_neighbour(
+        cell, [&](int nb) { found = found || owner_[static_cast<std::size_t>(nb)] == region; });
+    return found;
+  }
+
+  // True when removing `cell` from `region` cannot disconnect it: every 4-neighbour the region
+  // holds lies in one run of region cells around the cell's 8-ring (consecutive ring cells are
+  // 4-adjacent), so they stay joined without the cell. Sufficient, not necessary: a cell joining
+  // two parts that also meet far away is kept, which only costs a candidate.
+  bool removable(int cell, int region) const {
+    const int x = cell % width_;
+    const int y = cell / width_;
+    std::array<bool, 8> in{};
+    bool any_out = false;
+    for (int k = 0; k < 8; ++k) {
+      const int nx = x + kRingDx[static_cast<std::size_t>(k)];
+      const int ny = y + kRingDy[static_cast<std::size_t>(k)];
+      in[static_cast<std::size_t>(k)] =
+          nx >= 0 && ny >= 0 && nx < width_ && ny < height_ &&
+          owner_[static_cast<std::size_t>(ny * width_ + nx)] == region;
+      any_out = any_out || !in[static_cast<std::size_t>(k)];
+    }
+    if (!any_out) return true;
+    int first_out = 0;
+    while (in[static_cast<std::size_t>(first_out)]) ++first_out;
+    int runs_with_neighbour = 0;
+    bool run_has_neighbour = false;
+    for (int step = 1; step <= 8; ++step) {
+      const int k = (first_out + step) % 8;
+      if (in[static_cast<std::size_t>(k)]) {
+        run_has_neighbour = run_has_neighbour || (k % 2 == 1);
+      } else {
+        runs_with_neighbour += run_has_neighbour;
+        run_has_neighbour = false;
+      }
+    }
+    return runs_with_neighbour == 1;
+  }
+
+  const world::HullMask& hull_;
+  int width_;
+  int height_;
+  int n_;
+  std::vector<int> starts_;
+  const grid::Grid<double>* weights_;
+  std::vector<int> owner_;
+  std::vector<int> distance_;  // n × grid cells
+  std::vector<double> weight_;
+  std::vector<std::uint8_t> adjacent_;
+  std::vector<std::uint8_t> blocked_;
+  std::vector<HeapEntry> heap_;
+  long long key_scale_ = 1;
+  static constexpr int kJitter = 1 << 12;
+  std::vector<int> jitter_;
+  // Articulation search (best_non_articulation): stamps instead of clearing, sized once.
+  int epoch_ = 0;
+  std::vector<int> seen_, parent_, disc_, low_;
+  std::vector<double> subtree_,
+      cut_off_;  // DFS subtree weight; weight cut off by removing the cell
+  std::vector<std::pair<int, int>>
+      dfs_;  // larger than any distance: orders transfer keys by difference first
+};
+
+// Whole-cell targets summing to the hull's cell count: floors of the desired counts, the remaining
+// cells to the largest remainders (ties lowest UAV id).
+std::vector<double> whole_cell_targets(std::span<const double> desired, int cells) {
+  std::vector<double> target(desired.size());
+  int assigned = 0;
+  for (std::size_t k = 0; k < desired.size(); ++k) {
+    target[k] = std::floor(desired[k] + 1e-9);
+    assigned += static_cast<int>(target[k]);
+  }
+  std::vector<std::size_t> order(desired.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return desired[a] - target[a] > desired[b] - target[b];
+  });
+  for (std::size_t i = 0; assigned < cells && i < order.size(); ++i, ++assigned)
+    target[order[i]] += 1;
+  return target;
+}
+
+// Virtual starts for UAVs launching together: the model's default start cells for n UAVs (spread
+// along the hull at mid height, docs/model.md §1), the k-th from the stern going to the UAV whose
+// real start is k-th in (x, y) order, so the UAVs fan out without crossing.
+std::vector<int> spread_virtual_starts(const world::HullMask& hull, std::span<const int> real) {
+  world::MissionParams params;
+  params.uavs = static_cast<int>(real.size());
+  std::vector<grid::Cell> spread = world::start_cells(params, hull);
+  std::sort(spread.begin(), spread.end(),
+            [](grid::Cell a, grid::Cell b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  std::vector<std::size_t> order(real.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const grid::Cell ca = hull.mask().cell(real[a]);
+    const grid::Cell cb = hull.mask().cell(real[b]);
+    return ca.x != cb.x ? ca.x < cb.x : ca.y < cb.y;
+  });
+  std::vector<int> out(real.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = hull.mask().index(spread[k]);
+  return out;
+}
+
+}  // namespace
+
+const Params<TransferOptions>& transfer_params() {
+  static const Params<TransferOptions> params = [] {
+    Params<TransferOptions> p("transfer");
+    p.integer("round-limit", &TransferOptions::round_limit, 1, 100'000'000,
+              "largest number of transfer rounds (one path of adjacent regions each), all attempts")
+        .integer("attempts", &TransferOptions::attempts, 1, 1000,
+                 "restarts with seeded tie-breaking when the transfers get stuck")
+        .flag("spread-starts", &TransferOptions::spread_starts,
+              "grow regions from spread virtual starts (UAVs launching together fly to theirs)");
+    return p;
+  }();
+  return params;
+}
+
+Partition TransferPartitioner::partition(const PartitionRequest& request) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (request.hull == nullptr)
+    throw ParameterError("hull", "no hull given to the transfer partitioner");
+  const world::HullMask& hull = *request.hull;
+  const int n = static_cast<int>(request.starts.size());
+  if (n < 1) throw ParameterError("uavs", "must be at least 1 (got 0)");
+  const int limit =
+      std::min(hull.cell_count(), static_cast<int>(std::numeric_limits<std::int16_t>::max()));
+  if (n > limit) {
+    throw ParameterError("uavs", fmt::format("must be at most {} for a hull of {} cells (got {})",
+                                             limit, hull.cell_count(), n));
+  }
+  std::vector<int> starts = detail::checked_starts(hull, request.starts);
+  if (options_.spread_starts) starts = spread_virtual_starts(hull, starts);
+  const bool weighted = request.weights.size() > 0;
+  if (weighted) detail::check_weights(hull, request.weights);
+  const std::vector<double> shares = detail::checked_shares(request.shares, n);
+
+  double total = 0;
+  double unit = 1;
+  if (weighted) {
+    unit = 0;
+    for (int i : hull.cells()) {
+      total += request.weights[i];
+      unit = std::max(unit, request.weights[i]);
+    }
+  } else {
+    total = hull.cell_count();
+  }
+  const double share_total = std::accumulate(shares.begin(), shares.end(), 0.0);
+  Partition out;
+  out.desired_weight.resize(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < shares.size(); ++k)
+    out.desired_weight[k] = total * shares[k] / share_total;
+  // Unweighted: whole-cell targets, met exactly. Weighted: the desired weights, within one unit.
+  const std::vector<double> target =
+      weighted ? out.desired_weight : whole_cell_targets(out.desired_weight, hull.cell_count());
+  const double goal = weighted ? unit : 0.5;
+
+  TransferWorkspace ws(hull, starts, weighted ? &request.weights : nullptr);
+  ws.compute_distances(request.allowed.size() > 0 ? &request.allowed : nullptr);
+  world::RandomStream rs(request.seed, world::Stream::kPartition);
+  std::vector<int> best_owner;
+  std::vector<double> best_weight(static_cast<std::size_t>(n));
+  double best_score = std::numeric_limits<double>::infinity();
+  int rounds = 0;
+  int attempt = 0;
+  bool converged = n == 1;
+  bool hit_limit = false;
+  for (; attempt < options_.attempts && !converged; ++attempt) {
+    ws.reset(attempt == 0 ? nullptr : &rs);
+    if (const int unreached = ws.grow(); unreached > 0) {
+      throw Error(
+          fmt::format("transfer: {} of hull '{}' not 4-connected to any start cell; every "
+                      "region must be connected",
+                      plural(unreached, "hull cell"), hull.source()));
+    }
+
+    auto excess = [&](int r) { return ws.weight(r) - target[static_cast<std::size_t>(r)]; };
+    auto imbalance = [&]() {
+      double sum = 0;
+      for (int r = 0; r < n; ++r) sum += std::abs(excess(r));
+      return sum;
+    };
+    // Breadth-first search over the region graph (edges not blocked) from `source`, forwards (cells
+    // flow source → found) or backwards; returns the path source … found, empty if none.
+    std::vector<int> parent(static_cast<std::size_t>(n));
+    std::vector<int> queue(static_cast<std::size_t>(n));
+    std::vector<int> path;
+    path.reserve(static_cast<std::size_t>(n));
+    auto find_path = [&](int source, bool forwards) {
+      path.clear();
+      std::fill(parent.begin(), parent.end(), -2);
+      parent[static_cast<std::size_t>(source)] = -1;
+      std::size_t head = 0;
+      std::size_t tail = 0;
+      queue[tail++] = source;
+      while (head < tail) {
+        const int a = queue[head++];
+        const bool wanted = forwards ? excess(a) < -1e-9 : excess(a) > 1e-9;
+        if (a != source && wanted) {
+          for (int v = a; v >= 0; v = parent[static_cast<std::size_t>(v)]) path.push_back(v);
+          if (forwards) std::reverse(path.begin(), path.end());
+          return;
+        }
+        for (int b = 0; b < n; ++b) {
+          if (parent[static_cast<std::size_t>(b)] != -2 || !ws.adjacent(a, b)) continue;
+          if (forwards ? ws.blocked(a, b) : ws.blocked(b, a)) continue;
+          parent[static_cast<std::size_t>(b)] = a;
+          queue[tail++] = b;
+        }
+      }
+    };
+
+    std::vector<std::uint8_t> stuck(static_cast<std::size_t>(n), 0);
+    double last_imbalance = imbalance();
+    while (!converged) {
+      if (rounds >= options_.round_limit) {
+        hit_limit = true;
+        break;
+      }
+      // The region furthest from its target that is not stuck in this epoch.
+      int worst = -1;
+      double worst_excess = 0;
+      bool all_within = true;
+      for (int r = 0; r < n; ++r) {
+        const double e = std::abs(excess(r));
+        if (e > goal) all_within = false;
+        if (e > goal && !stuck[static_cast<std::size_t>(r)] && e > worst_excess) {
+          worst = r;
+          worst_excess = e;
+        }
+      }
+      if (all_within) {
+        converged = true;
+        break;
+      }
+      if (worst < 0) break;  // every unbalanced region is stuck: nothing movable on any path
+      ++rounds;
+      ws.rebuild_adjacency();
+      const bool over = excess(worst) > 0;
+      find_path(worst, over);
+      if (path.empty()) {
+        stuck[static_cast<std::size_t>(worst)] = 1;
+        continue;
+      }
+      // Move along the path from its source, each edge asked for what the previous one moved: an
+      // intermediate region first grows on one side, then gives as much on the other, so it ends
+      // where it began (or over by what a blocked edge held back). Thin intermediate regions can
+      // pass on more cells this way than they hold.
+      double amount = std::min(std::abs(excess(path.front())), std::abs(excess(path.back())));
+      if (!weighted) amount = std::round(amount);
+      for (std::size_t e = 1; e < path.size() && amount > 1e-9; ++e) {
+        const int from = path[e - 1];
+        const int to = path[e];
+        const double moved = ws.transfer(from, to, amount);
+        if (moved < amount - 1e-9) ws.block(from, to);
+        amount = moved;
+      }
+      const double now = imbalance();
+      if (now < last_imbalance - 1e-9) {
+        ws.clear_blocks();
+        std::fill(stuck.begin(), stuck.end(), 0);
+      }
+      last_imbalance = now;
+    }
+    // Keep the best-balanced attempt (the first converged one ends the loop).
+    double score = 0;
+    for (int r = 0; r < n; ++r) score = std::max(score, std::abs(excess(r)));
+    if (converged || score < best_score) {
+      best_score = score;
+      best_owner = ws.owner();
+      for (int r = 0; r < n; ++r) best_weight[static_cast<std::size_t>(r)] = ws.weight(r);
+    }
+    if (hit_limit) {
+      ++attempt;
+      break;
+    }
+  }
+
+  out.owner = grid::Grid<std::int16_t>(hull.width(), hull.height(), -1);
+  out.region_cells.assign(static_cast<std::size_t>(n), 0);
+  out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
+  double worst = 0;
+  for (int i : hull.cells()) {
+    const int r = best_owner.empty() ? 0 : best_owner[static_cast<std::size_t>(i)];
+    out.owner[i] = static_cast<std::int16_t>(r);
+    out.region_cells[static_cast<std::size_t>(r)] += 1;
+  }
+  for (int r = 0; r < n; ++r) {
+    const double w = n == 1 ? total : best_weight[static_cast<std::size_t>(r)];
+    out.region_weight[static_cast<std::size_t>(r)] = w;
+    worst = std::max(worst, std::abs(w - out.desired_weight[static_cast<std::size_t>(r)]));
+  }
+  out.iterations = rounds;
+  out.converged = converged;
+  if (converged) {
+    // As DARP reports it: 0 when the shares divide the hull exactly, else one cell (unit).
+    out.tolerance = weighted || worst > 1e-9 ? unit : 0.0;
+  } else {
+    out.tolerance = worst;
+    out.warnings.push_back(fmt::format(
+        "transfer did not balance the regions in {} ({}): {}; returned the best connected "
+        "partition reached (largest imbalance {:g})",
+        plural(rounds, "round"), plural(attempt, "attempt"),
+        hit_limit ? "round limit reached" : "no movable boundary cell left", worst));
+    if (!options_.spread_starts) {
+      out.warnings.back() += "; for UAVs launching close together try -O spread-starts=true";
+    }
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace hullinspect::partition
