@@ -5,8 +5,8 @@
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/lawnmower_planner.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
-#include "hullinspect/planners/sweep_inspect_planner.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/sweep_inspect_planner.hpp"
 
 namespace hullinspect::planners {
 
@@ -39,7 +39,9 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
   PartTspOptions defaults;
   defaults.use_prior = use_prior;
   defaults.oracle = oracle;
-  Params<PartTspOptions> p(oracle ? "oracle-part-tsp" : use_prior ? "part-tsp" : "part-tsp0",
+  Params<PartTspOptions> p(oracle      ? "oracle-part-tsp"
+                           : use_prior ? "part-tsp"
+                                       : "part-tsp0",
                            defaults);
   p.integer("r1", &PartTspOptions::r1, 0, 1 << 20,
             "steps since the last detection before descending")
@@ -67,7 +69,8 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
             return partition::resolve_partitioner_options(o.partitioner, m);
           },
           "option <key> of the partitioner (e.g. partitioner.iteration-limit=4000 for darp)");
-  return p;}
+  return p;
+}
 
 Params<SweepInspectOptions> sweep_inspect_params() {
   Params<SweepInspectOptions> p("sweep-inspect");
@@ -85,6 +88,22 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "DARP weighted by the expected work per cell (prior-aware)")
       .flag("prior-first", &SweepInspectOptions::prior_first,
             "first inspect the prior's cells of the region at z = 1, then sweep")
+      .flag("resume-ahead", &SweepInspectOptions::resume_ahead,
+            "after an inspection rejoin the strip up to s2/2 columns ahead (already seen) instead "
+            "of where it was left")
+      .flag("nearer-sweep-end", &SweepInspectOptions::nearer_sweep_end,
+            "plan the sweep from where the prior's inspections ended, from its nearer end "
+            "(false: bottom-up from the start cell)")
+      .number("prior-trust", &SweepInspectOptions::prior_trust, 0.0, 1.0,
+              "stop the prior's inspections once fewer than this fraction of the prior cells "
+              "seen so far were corroded (0: never)")
+      .integer("prior-check-cells", &SweepInspectOptions::prior_check_cells, 1, 1000000,
+               "prior cells to see before prior-trust applies")
+      .flag("take-over-prior", &SweepInspectOptions::take_over_prior,
+            "a failed UAV's prior cells go at once to the nearest working UAV (false: they wait "
+            "for the helpers)")
+      .flag("yield-claims", &SweepInspectOptions::yield_claims,
+            "a claimed target goes to a UAV nearer to it than its claimer (false: claims hold)")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

@@ -27,6 +27,28 @@ sim::Action SweepInspectPlanner::step(grid::Cell pos, grid::Cell to) const {
   return sim::step_towards(pos, distances_->next_step(pos, to));
 }
 
+std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
+  auto waypoints = LawnmowerPlanner::sweep(partition_->owner, k, h2_ * 2 + 1, from);
+  if (reach_ != nullptr) {
+    // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
+    // the flight between waypoints goes around no-fly positions, and whatever the strips then
+    // miss is found as unknown cells by the help phase.
+    std::vector<grid::Cell> flyable;
+    for (const grid::Cell w : waypoints) {
+      const grid::Cell v = distances_->allowed(w) ? w : distances_->viewpoint(w, h2_);
+      if (v != grid::kNoCell && (flyable.empty() || flyable.back() != v)) flyable.push_back(v);
+    }
+    waypoints = std::move(flyable);
+  }
+  // The same strips top to bottom when their far end is nearer (after the prior's inspections).
+  if (options_.nearer_sweep_end && waypoints.size() > 1 &&
+      distances_->distance(from, waypoints.back()) <
+          distances_->distance(from, waypoints.front())) {
+    std::reverse(waypoints.begin(), waypoints.end());
+  }
+  return waypoints;
+}
+
 void SweepInspectPlanner::start(const PlannerContext& context) {
   // Every distance and move comes from the mission's distance service (docs/model.md, "No-fly
   // zones"); without no-fly positions it answers Manhattan distances and the x-then-y rule.
@@ -53,21 +75,8 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   const int n = p.uavs;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});
   for (int k = 0; k < n; ++k) {
-    auto waypoints = LawnmowerPlanner::sweep(partition_->owner, k, p.s2,
-                                             context.starts[static_cast<std::size_t>(k)]);
-    if (reach_ != nullptr) {
-      // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
-      // the flight between waypoints goes around no-fly positions, and whatever the strips then
-      // miss is found as unknown cells by the help phase.
-      std::vector<grid::Cell> flyable;
-      for (const grid::Cell w : waypoints) {
-        const grid::Cell v = distances_->allowed(w) ? w : distances_->viewpoint(w, h2_);
-        if (v != grid::kNoCell && (flyable.empty() || flyable.back() != v)) flyable.push_back(v);
-      }
-      waypoints = std::move(flyable);
-    }
     Uav& uav = uavs_[static_cast<std::size_t>(k)];
-    uav.sweep.assign(std::move(waypoints));
+    uav.sweep.assign(sweep_from(k, context.starts[static_cast<std::size_t>(k)]));
     uav.sweep.set_distances(distances_);
   }
   prior_.assign(static_cast<std::size_t>(n), {});
@@ -77,14 +86,26 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
         prior_[static_cast<std::size_t>(partition_->owner[i])].push_back(i);
     }
   }
+  positions_.assign(context.starts.begin(), context.starts.end());
+  width_ = context.hull.width();
+  prior_true_ = 0;
+  prior_false_ = 0;
   pending_.clear();
   pending_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
   hull_cells_ = context.hull.cells();
 }
 
 bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
+  // A claim holds against UAVs no nearer to the cell than the claimer: a UAV that is done takes
+  // over a far claimer's target instead of hovering while the claimer crosses the hull.
+  if (cell < 0) return false;
+  int mine = -1;
   for (std::size_t j = 0; j < uavs_.size(); ++j) {
-    if (static_cast<int>(j) != k && uavs_[j].target_cell == cell) return true;
+    if (static_cast<int>(j) == k || uavs_[j].target_cell != cell) continue;
+    if (!options_.yield_claims) return true;
+    const grid::Cell c = hull_cell(cell);
+    if (mine < 0) mine = distances_->distance(positions_[static_cast<std::size_t>(k)], c);
+    if (distances_->distance(positions_[j], c) <= mine) return true;
   }
   return false;
 }
@@ -138,11 +159,41 @@ void SweepInspectPlanner::decide(const sim::PlannerView& view, std::span<sim::Ac
     }
   }
   std::erase_if(pending_, [&](int i) { return view.map[i] != sim::kCorrosionSeen; });
+  // The prior's precision so far, fleet-wide from the shared map: its cells found corroded
+  // (inspected) against those found clean.
   for (auto& cells : prior_) {
-    std::erase_if(cells, [&](int i) { return view.map[i] != sim::kCorrosionSeen; });
+    std::erase_if(cells, [&](int i) {
+      if (view.map[i] == sim::kCorrosionSeen) return false;
+      (view.map[i] == sim::kClean ? prior_false_ : prior_true_) += 1;
+      return true;
+    });
   }
+  for (std::size_t k = 0; k < uavs_.size(); ++k) positions_[k] = view.uavs[k].pos;
+  if (options_.take_over_prior) hand_over_prior(view);
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     actions[k] = decide_uav(static_cast<int>(k), view.uavs[k], view);
+  }
+}
+
+void SweepInspectPlanner::hand_over_prior(const sim::PlannerView& view) {
+  for (std::size_t j = 0; j < uavs_.size(); ++j) {
+    if (!view.uavs[j].failed || prior_[j].empty()) continue;
+    for (int i : prior_[j]) {
+      const grid::Cell c = view.map.cell(i);
+      int best = -1;
+      int best_d = std::numeric_limits<int>::max();
+      for (std::size_t k = 0; k < uavs_.size(); ++k) {
+        if (view.uavs[k].failed) continue;
+        const int d =
+            distances_->distance(view.uavs[k].pos, reach_position(view.uavs[k].pos, c, h1_));
+        if (d < best_d) {
+          best_d = d;
+          best = static_cast<int>(k);
+        }
+      }
+      if (best >= 0) prior_[static_cast<std::size_t>(best)].push_back(i);
+    }
+    prior_[j].clear();
   }
 }
 
@@ -156,12 +207,28 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
   }
   if (u.in_transit()) return sim::Action::kHover;
 
+  if (!prior_[static_cast<std::size_t>(k)].empty() && u.z == 2 &&
+      (p.mode == Mode::kSweep || p.mode == Mode::kHelp || p.mode == Mode::kDone)) {
+    // Prior cells handed over from a failed UAV: leave the sweep (or help) for them, come back.
+    p.after_prior = p.mode == Mode::kSweep ? Mode::kReturn : Mode::kHelp;
+    if (p.mode == Mode::kSweep) p.resume = u.pos;
+    p.target_cell = -1;
+    p.mode = Mode::kPrior;
+  }
   if (p.mode == Mode::kPrior) {
     // Inspect the prior's cells of the region first, nearest first, then sweep.
     auto& cells = prior_[static_cast<std::size_t>(k)];
+    if (prior_distrusted()) cells.clear();  // a prior this wrong is not worth a tour: sweep
     if (cells.empty()) {
       if (u.z == 1) return sim::Action::kChangePlane;
-      p.mode = Mode::kSweep;
+      if (p.sweep_planned) {
+        p.mode = p.after_prior;
+      } else {
+        p.mode = Mode::kSweep;
+        p.sweep_planned = true;
+        // Plan the sweep from where the prior's inspections ended.
+        if (options_.nearer_sweep_end) p.sweep.assign(sweep_from(k, u.pos));
+      }
     } else {
       if (u.z == 2) return sim::Action::kChangePlane;
       int best = -1;
@@ -211,7 +278,10 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     }
     const int cell = nearest_pending(k, u.pos, p.resume, radius_, view);
     p.target_cell = cell;
-    if (cell < 0) return sim::Action::kChangePlane;
+    if (cell < 0) {
+      if (options_.resume_ahead) p.resume = rejoin_point(p, u.pos);
+      return sim::Action::kChangePlane;
+    }
     p.target = reach_position(u.pos, view.map.cell(cell), h1_);
     return step(u.pos, p.target);
   }
@@ -227,7 +297,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
                              (view.map[p.target_cell] == sim::kCorrosionSeen &&
                               (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0 &&
                               !reachable(p.target_cell, world::kReachZ1));
-    if (target_done) {
+    if (target_done || claimed_by_other(k, p.target_cell)) {
       p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
       if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
       if (p.target_cell < 0) {
@@ -249,6 +319,19 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     return step(u.pos, p.target);
   }
   return sim::Action::kHover;  // kDone
+}
+
+grid::Cell SweepInspectPlanner::rejoin_point(const Uav& p, grid::Cell pos) const {
+  // From the point where it left the strip (on the strip's flight row, at z = 2) the UAV saw the
+  // whole strip band up to h2 columns ahead; so it may rejoin anywhere up to there without
+  // leaving a gap — as far ahead as it now is, towards the strip end it is flying to.
+  const grid::Cell end = p.sweep.target();
+  if (end.y != p.resume.y || end.x == p.resume.x) return p.resume;
+  const int dir = end.x > p.resume.x ? 1 : -1;
+  const int ahead =
+      std::min({std::max(0, dir * (pos.x - p.resume.x)), h2_, std::abs(end.x - p.resume.x)});
+  const grid::Cell rejoin{p.resume.x + dir * ahead, p.resume.y};
+  return distances_->allowed(rejoin) ? rejoin : p.resume;
 }
 
 bool SweepInspectPlanner::idle(const sim::PlannerView& view) const {

@@ -5,8 +5,8 @@
 
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/sim/lower_bound.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 #include "support/truth_blindness.hpp"
 
@@ -168,9 +168,43 @@ TEST(SweepInspect, IsTruthBlind) {
     world::MissionParams params;
     params.uavs = 4;
     params.s2 = s2;
-    for (const auto& options : {OptionMap{}, OptionMap{{"prior-weights", "true"}}}) {
+    for (const auto& options :
+         {OptionMap{}, OptionMap{{"prior-weights", "false"}}, OptionMap{{"prior-trust", "0"}},
+          OptionMap{{"resume-ahead", "false"}, {"nearer-sweep-end", "false"}}}) {
       EXPECT_TRUE(testing::planner_is_truth_blind("sweep-inspect", options, params, 5));
     }
+  }
+}
+
+TEST(SweepInspect, PriorTrustChangesNothingWhenThePriorIsRight) {
+  // p_TP = 1, p_FP = 0: every prior cell is corroded, so the prior is never distrusted.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    auto with = spec_for("sweep-inspect", "perfect", 9, 4, seed);
+    auto without = with;
+    without.planner_options = {{"prior-trust", "0"}};
+    const auto a = run_mission(with, world::default_hull());
+    const auto b = run_mission(without, world::default_hull());
+    EXPECT_EQ(a.t_c, b.t_c);
+    EXPECT_EQ(a.t_m, b.t_m);
+    EXPECT_EQ(a.totals().moves, b.totals().moves);
+  }
+}
+
+TEST(SweepInspect, AWrongPriorIsDroppedAfterItsFirstCellsAreSeen) {
+  // Only false positives: with prior-trust the UAVs leave the prior's tour once prior-check-cells
+  // cells were found clean and sweep; without it they fly the whole tour at z = 1 first.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    auto with = spec_for("sweep-inspect", "perfect", 9, 4, seed);
+    with.corrosion.p_tp = 0.0;
+    with.corrosion.p_fp = 0.005;
+    auto without = with;
+    without.planner_options = {{"prior-trust", "0"}};
+    const auto a = run_mission(with, world::default_hull());
+    const auto b = run_mission(without, world::default_hull());
+    ASSERT_TRUE(a.complete);
+    ASSERT_TRUE(b.complete);
+    EXPECT_LT(a.totals().steps_z1, b.totals().steps_z1 / 2) << "seed " << seed;
+    EXPECT_LT(*a.t_m, *b.t_m) << "seed " << seed;
   }
 }
 

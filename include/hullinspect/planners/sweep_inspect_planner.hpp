@@ -23,8 +23,23 @@ struct SweepInspectOptions {
   bool help = true;  ///< after its sweep a UAV takes work anywhere (false: only its own region's)
   bool inspect_on_the_way = true;  ///< descend when a detection is abreast (false: only at the end)
   double radius_factor = 1.0;  ///< inspect detected cells within radius_factor·s2 of the descent
-  bool prior_weights = false;  ///< DARP weighted by the expected work per cell (prior-aware)
+  bool prior_weights = true;   ///< DARP weighted by the expected work per cell (prior-aware)
   bool prior_first = true;     ///< first inspect the prior's cells of the region at z = 1
+  /// After an inspection, rejoin the strip up to s2/2 columns ahead of where it was left (those
+  /// columns were already seen from there) instead of flying back to that point.
+  bool resume_ahead = true;
+  /// Plan the sweep from where the prior's inspections ended, bottom-up or top-down, whichever
+  /// end is nearer (false: bottom-up from the start cell).
+  bool nearer_sweep_end = true;
+  /// Stop the prior's inspections (and sweep) once at least `prior_check_cells` of the prior's
+  /// cells have been seen and fewer than this fraction of them were corroded (0: never).
+  double prior_trust = 0.8;
+  int prior_check_cells = 10;
+  /// A failed UAV's prior cells go at once to the nearest working UAV, which interrupts its sweep
+  /// for them (false: they wait for the helpers, after their sweeps).
+  bool take_over_prior = true;
+  /// A claimed target goes to a UAV nearer to it than its claimer (false: claims hold).
+  bool yield_claims = true;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -41,9 +56,11 @@ class SweepInspectPlanner final : public Planner {
   struct Uav {
     Mode mode = Mode::kPrior;
     WaypointFollower sweep;
-    grid::Cell resume{-1, -1};  // where the sweep was left for an inspection
-    grid::Cell target{-1, -1};  // the position it flies to (inspect / help)
-    int target_cell = -1;       // the cell that target serves (help claims it)
+    grid::Cell resume{-1, -1};        // where the sweep was left for an inspection
+    grid::Cell target{-1, -1};        // the position it flies to (inspect / help)
+    int target_cell = -1;             // the cell that target serves (help claims it)
+    bool sweep_planned = false;       // its sweep was planned (it left the prior's cells once)
+    Mode after_prior = Mode::kSweep;  // where to go on when prior cells handed over are done
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
@@ -53,6 +70,17 @@ class SweepInspectPlanner final : public Planner {
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
+  bool prior_distrusted() const {
+    const int seen = prior_true_ + prior_false_;
+    return options_.prior_trust > 0 && seen >= options_.prior_check_cells &&
+           prior_true_ < options_.prior_trust * seen;
+  }
+  /// The strips of UAV k's region (waypoints at z = 2) flown from `from`.
+  std::vector<grid::Cell> sweep_from(int k, grid::Cell from);
+  /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
+  void hand_over_prior(const sim::PlannerView& view);
+  /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
+  grid::Cell rejoin_point(const Uav& p, grid::Cell pos) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
   /// footprint square); with no-fly zones, when that is not flyable, the service's viewpoint of c.
   grid::Cell reach_position(grid::Cell pos, grid::Cell c, int h) const;
@@ -72,6 +100,11 @@ class SweepInspectPlanner final : public Planner {
   grid::DistanceService own_distances_;
   grid::DistanceService* distances_ = nullptr;
   const grid::Grid<std::uint8_t>* reach_ = nullptr;  // null: no no-fly zones, all reachable
+  std::vector<grid::Cell> positions_;                // the UAVs' positions at this decision
+  int width_ = 0;
+  grid::Cell hull_cell(int index) const { return {index % width_, index / width_}; }
+  int prior_true_ = 0;   // prior cells found corroded so far (fleet-wide)
+  int prior_false_ = 0;  // prior cells found clean so far
   int h1_ = 2;
   int h2_ = 3;
   int radius_ = 7;
