@@ -17,3 +17,15 @@ endif()
 if(HULLINSPECT_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+# The Python module (python/): pybind11-dev and python3-dev for Debian's /usr/bin/python3. Not in
+# sanitizer builds: an ASan-instrumented extension cannot be loaded into the uninstrumented python3
+# without preloading the ASan runtime, which then reports CPython's own allocations.
+option(HULLINSPECT_BUILD_PYTHON "Build the hullinspect Python module" ON)
+if(HULLINSPECT_BUILD_PYTHON AND NOT HULLINSPECT_SANITIZE)
+  set(Python3_EXECUTABLE /usr/bin/python3)
+  # Development.Embed: tests/python_planners runs Python planners inside a C++ test program.
+  find_package(Python3 REQUIRED COMPONENTS Interpreter Development.Module Development.Embed)
+  set(PYBIND11_FINDPYTHON ON)
+  find_package(pybind11 CONFIG REQUIRED)
+  set(HULLINSPECT_WITH_PYTHON ON)
+endif()

@@ -1,0 +1,315 @@
+// The `hullinspect._core` extension: bindings of the library for the Python package
+// (python/hullinspect/__init__.py, docs/python.md). No logic of its own: missions are parsed by the
+// CLI's own option parser (mission_args.hpp) and run by the same library calls as `hullinspect
+// run`, and library errors become ValueError with the CLI's one-line message.
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "../apps/hullinspect/mesh_options.hpp"
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/experiment/catalog.hpp"
+#include "hullinspect/experiment/config.hpp"
+#include "hullinspect/experiment/plan.hpp"
+#include "hullinspect/experiment/presets.hpp"
+#include "hullinspect/experiment/runner.hpp"
+#include "hullinspect/io/result_json.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/scenario.hpp"
+#include "hullinspect/world/user_maps.hpp"
+#include "mission_args.hpp"
+#include "planner_bridge.hpp"
+#include "session.hpp"
+
+namespace py = pybind11;
+using namespace hullinspect;
+
+namespace {
+
+using HullPtr = std::shared_ptr<world::HullMask>;
+
+template <class T>
+py::array_t<T> grid_array(const grid::Grid<T>& g) {
+  py::array_t<T> a({g.height(), g.width()});
+  std::copy(g.values().begin(), g.values().end(), a.mutable_data());
+  return a;
+}
+
+py::array_t<bool> mask_array(const world::HullMask& hull) {
+  py::array_t<bool> a({hull.height(), hull.width()});
+  const auto values = hull.mask().values();
+  for (std::size_t i = 0; i < values.size(); ++i) a.mutable_data()[i] = values[i] != 0;
+  return a;
+}
+
+HullPtr load_hull(const std::string& path) {
+  return std::make_shared<world::HullMask>(cli::load_hull_argument(path, cli::MeshArgs{}));
+}
+
+HullPtr hull_or_default(const HullPtr& hull) {
+  return hull ? hull : std::make_shared<world::HullMask>(world::default_hull());
+}
+
+/// The hull of a mission: the Hull object given, else --hull as the CLI loads it.
+HullPtr mission_hull(const HullPtr& given, const cli::MissionArgs& args) {
+  return given ? given : std::make_shared<world::HullMask>(cli::load_mission_hull(args));
+}
+
+py::dict result_dict(const planners::MissionSpec& spec, const sim::MissionResult& result) {
+  py::dict out;
+  out["json"] = io::result_json(spec, result).dump();
+  py::array_t<double> c(static_cast<py::ssize_t>(result.inspected_series.size()));
+  py::array_t<double> m(static_cast<py::ssize_t>(result.known_series.size()));
+  for (int t = 0; t < static_cast<int>(result.inspected_series.size()); ++t) {
+    c.mutable_data()[t] = result.c_percent(t);
+    m.mutable_data()[t] = result.m_percent(t);
+  }
+  out["c"] = c;
+  out["m"] = m;
+  return out;
+}
+
+/// `hullinspect run --json WORDS` without printing: the result JSON and c(t), m(t).
+py::dict run_mission(const std::vector<std::string>& words, const HullPtr& hull_arg) {
+  sim::MissionResult result;
+  planners::MissionSpec spec;
+  {
+    py::gil_scoped_release release;  // Python planners take it back in start/decide
+    const cli::MissionArgs args = python::parse_mission_words(words);
+    const HullPtr hull = mission_hull(hull_arg, args);
+    spec = cli::build_spec(args, *hull);
+    planners::validate(spec, *hull);
+    result = planners::run_mission(spec, *hull);
+  }
+  return result_dict(spec, result);
+}
+
+/// C′ for a Session: None (no expected corrosion), a map file, or an array [y][x] over the hull.
+grid::Grid<std::int8_t> session_prior(const py::object& prior, const world::HullMask& hull) {
+  grid::Grid<std::int8_t> out(hull.width(), hull.height(), -1);
+  for (int i : hull.cells()) out[i] = 0;
+  if (prior.is_none()) return out;
+  if (py::isinstance<py::str>(prior)) {
+    return world::load_corrosion_map(prior.cast<std::string>(), hull).cells;
+  }
+  const auto a = py::array_t<std::int8_t, py::array::c_style | py::array::forcecast>::ensure(prior);
+  if (!a || a.ndim() != 2 || a.shape(0) != hull.height() || a.shape(1) != hull.width()) {
+    throw Error(
+        fmt::format("prior: expected a path or an array of shape ({}, {}) [y][x] like the "
+                    "hull's mask",
+                    hull.height(), hull.width()));
+  }
+  for (int y = 0; y < hull.height(); ++y) {
+    for (int x = 0; x < hull.width(); ++x) {
+      const bool corroded = a.at(y, x) == 1;
+      if (corroded && !hull.is_hull(x, y)) {
+        throw Error(
+            fmt::format("prior: cell ({}, {}) is marked corroded but is not a hull cell", x, y));
+      }
+      if (hull.is_hull(x, y)) out(x, y) = corroded ? 1 : 0;
+    }
+  }
+  return out;
+}
+
+std::unique_ptr<python::Session> make_session(const std::vector<std::string>& words,
+                                              const HullPtr& hull_arg, const py::object& prior) {
+  const cli::MissionArgs args = python::parse_mission_words(words);
+  if (!args.truth.empty() || !args.fail.empty() || args.fail_rate != 0 ||
+      args.fail_one_within != 0 || !args.prior.empty()) {
+    throw Error(
+        "Session: truth and fail options do not apply to a live session (the readings are "
+        "the truth; report failures with step(readings, failed=[…]))");
+  }
+  const HullPtr hull = mission_hull(hull_arg, args);
+  planners::MissionSpec spec = cli::build_spec(args, *hull);
+  auto prior_grid = session_prior(prior, *hull);
+  py::gil_scoped_release release;
+  return std::make_unique<python::Session>(hull, std::move(spec), std::move(prior_grid));
+}
+
+std::vector<python::CellReading> readings_from(const py::iterable& items) {
+  std::vector<python::CellReading> out;
+  std::size_t j = 0;
+  for (const auto& item : items) {
+    const auto seq = py::reinterpret_borrow<py::sequence>(item);
+    if (!py::isinstance<py::sequence>(item) || py::isinstance<py::str>(item) || seq.size() != 4) {
+      throw Error(fmt::format("readings[{}]: expected (x, y, plane, corroded), got {}", j,
+                              py::repr(item).cast<std::string>()));
+    }
+    try {
+      out.push_back({seq[0].cast<int>(), seq[1].cast<int>(), seq[2].cast<int>(),
+                     PyObject_IsTrue(seq[3].ptr()) == 1});
+    } catch (const py::cast_error&) {
+      throw Error(fmt::format("readings[{}]: x, y and plane must be integers, got {}", j,
+                              py::repr(item).cast<std::string>()));
+    }
+    ++j;
+  }
+  return out;
+}
+
+py::list action_names(std::span<const sim::Action> actions) {
+  py::list out;
+  for (const auto a : actions) {
+    switch (a) {
+      case sim::Action::kNorth:
+        out.append("N");
+        break;
+      case sim::Action::kSouth:
+        out.append("S");
+        break;
+      case sim::Action::kEast:
+        out.append("E");
+        break;
+      case sim::Action::kWest:
+        out.append("W");
+        break;
+      case sim::Action::kChangePlane:
+        out.append("change");
+        break;
+      case sim::Action::kHover:
+        out.append("hover");
+        break;
+    }
+  }
+  return out;
+}
+
+py::list uav_tuples(std::span<const sim::UavState> uavs) {
+  py::list out;
+  for (const auto& u : uavs)
+    out.append(py::make_tuple(u.pos.x, u.pos.y, u.z, u.in_transit(), u.failed));
+  return out;
+}
+
+experiment::ExperimentConfig load_experiment(const std::string& kind, const std::string& value) {
+  if (kind == "preset") return experiment::load_preset(value);
+  if (kind == "path") return experiment::load_config(value);
+  // YAML text (a dict arrives as JSON, which is YAML); relative hull paths from the cwd.
+  return experiment::parse_config(value, "<config>", std::filesystem::current_path());
+}
+
+void run_experiment(const std::string& kind, const std::string& value, int jobs,
+                    const std::string& out) {
+  py::gil_scoped_release release;  // worker threads running Python planners take it in turn
+  const experiment::ExperimentPlan plan(load_experiment(kind, value));
+  experiment::RunnerOptions options;
+  options.jobs = jobs;
+  experiment::run_experiment(plan, out, options);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "hullinspect's C++ library (use the hullinspect package, not this module)";
+
+  // Bad input is ValueError with the CLI's one-line message; a broken model rule (a planner bug)
+  // is RuntimeError.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const LogicError& e) {
+      PyErr_SetString(PyExc_RuntimeError, user_message(e).c_str());
+    } catch (const Error& e) {
+      PyErr_SetString(PyExc_ValueError, user_message(e).c_str());
+    }
+  });
+
+  py::class_<world::HullMask, HullPtr>(m, "Hull")
+      .def_static(
+          "default", [] { return std::make_shared<world::HullMask>(world::default_hull()); },
+          "The built-in 230 x 30 ship side profile")
+      .def_static("load", &load_hull, py::arg("path"),
+                  "Anything `--hull` takes: 'default', 'dtc', a text mask, a PGM image, a hull "
+                  "JSON or a mesh (docs/hulls.md)")
+      .def_property_readonly("mask", &mask_array, "numpy bool array [y][x], True on hull cells")
+      .def_property_readonly("width", &world::HullMask::width)
+      .def_property_readonly("height", &world::HullMask::height)
+      .def_property_readonly("cells", &world::HullMask::cell_count)
+      .def_property_readonly("source", &world::HullMask::source)
+      .def("__repr__", [](const world::HullMask& h) {
+        return fmt::format("Hull({}x{}, {} cells, {})", h.width(), h.height(), h.cell_count(),
+                           h.source());
+      });
+
+  py::class_<world::Instance>(m, "Instance")
+      .def_property_readonly(
+          "truth", [](const world::Instance& i) { return grid_array(i.truth); },
+          "C: numpy int8 [y][x], -1 not hull, 0 clean, 1 corroded")
+      .def_property_readonly(
+          "prior", [](const world::Instance& i) { return grid_array(i.prior); },
+          "C': numpy int8 [y][x], -1 not hull, 0, 1")
+      .def_readonly("seed", &world::Instance::seed)
+      .def_property_readonly("corroded_cells", &world::Instance::corroded_cells);
+
+  m.def(
+      "make_instance",
+      [](const HullPtr& hull_arg, std::uint64_t seed, const std::string& scenario,
+         const OptionMap& scenario_options) {
+        const HullPtr hull = hull_or_default(hull_arg);
+        world::CorrosionParams corrosion;
+        try {
+          corrosion = world::scenario(scenario, scenario_options).corrosion(hull->width());
+        } catch (const ParameterError& e) {  // "perfect.p-c" is --p-c, as in build_spec
+          const auto dot = e.name().find('.');
+          if (dot == std::string::npos) throw;
+          throw ParameterError(e.name().substr(dot + 1), e.problem());
+        }
+        world::validate(corrosion, *hull);
+        return world::generate_instance(*hull, corrosion, seed);
+      },
+      py::arg("hull"), py::arg("seed"), py::arg("scenario"), py::arg("options"));
+
+  m.def("mission_words", &python::mission_words, py::arg("algorithm"), py::arg("uavs"),
+        py::arg("s2"), py::arg("seed"), py::arg("scenario"), py::arg("hull_path"),
+        py::arg("options"), py::arg("params"));
+  m.def("run_mission", &run_mission, py::arg("words"), py::arg("hull"));
+  m.def("run_experiment", &run_experiment, py::arg("kind"), py::arg("value"), py::arg("jobs"),
+        py::arg("out"));
+  m.def(
+      "catalog", [](const std::string& kind) { return experiment::catalog_json(kind).dump(); },
+      py::arg("kind") = "");
+  m.def("preset_names", &experiment::preset_names);
+  m.def("register_planner", &python::register_python_planner, py::arg("name"), py::arg("cls"),
+        py::arg("description"));
+
+  py::class_<python::Session>(m, "Session")
+      .def(py::init(&make_session), py::arg("words"), py::arg("hull"), py::arg("prior"))
+      .def(
+          "step",
+          [](python::Session& s, const py::iterable& readings, const std::vector<int>& failed) {
+            const auto parsed = readings_from(readings);
+            std::vector<sim::Action> actions;
+            {
+              py::gil_scoped_release release;
+              actions = s.step(parsed, failed);
+            }
+            return action_names(actions);
+          },
+          py::arg("readings"), py::arg("failed") = std::vector<int>{})
+      .def(
+          "expected_readings",
+          [](const python::Session& s, const std::vector<int>& failed) {
+            py::list out;
+            for (const auto& [x, y, plane] : s.expected_readings(failed)) {
+              out.append(py::make_tuple(x, y, plane));
+            }
+            return out;
+          },
+          py::arg("failed") = std::vector<int>{})
+      .def_property_readonly("t", &python::Session::time)
+      .def_property_readonly("finished", &python::Session::finished)
+      .def_property_readonly("complete", &python::Session::complete)
+      .def_property_readonly("map", [](const python::Session& s) { return grid_array(s.map()); })
+      .def_property_readonly("uavs", [](const python::Session& s) { return uav_tuples(s.uavs()); })
+      .def_property_readonly("hull", [](const python::Session& s) { return mask_array(s.hull()); })
+      .def("result", [](const python::Session& s) { return result_dict(s.spec(), s.result()); });
+}

@@ -1,0 +1,103 @@
+#include "mission_args.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "../apps/hullinspect/number_options.hpp"
+#include "hullinspect/core/errors.hpp"
+
+namespace hullinspect::python {
+
+namespace py = pybind11;
+
+namespace {
+
+/// A Python value as the CLI would read it: True/False as true/false, numbers as Python prints
+/// them (repr of a float round-trips), anything else as str().
+std::string text(const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
+  return py::str(value).cast<std::string>();
+}
+
+/// A tuple as one option value: (x, y) → "x,y" for --start, (uav, t) → "uav@t" for --fail.
+std::string item_text(const std::string& flag, const py::handle& item) {
+  if (!py::isinstance<py::tuple>(item)) return text(item);
+  std::string out;
+  for (const auto& part : item.cast<py::tuple>()) {
+    if (!out.empty()) out += flag == "--fail" ? "@" : ",";
+    out += text(part);
+  }
+  return out;
+}
+
+/// The parser `hullinspect run` uses for its mission options.
+struct MissionParser {
+  cli::MissionArgs args;
+  CLI::App app{"hullinspect run"};
+  MissionParser() {
+    cli::add_mission_options(app, args);
+    cli::require_exact_numbers(app);
+  }
+};
+
+/// CLI11's "Could not convert: --uavs,-n = abc" as main.cpp prints it.
+std::string parse_error_message(const CLI::ParseError& e) {
+  std::string message = e.what();
+  const std::string prefix = "Could not convert: ";
+  if (message.rfind(prefix, 0) == 0) {
+    const auto eq = message.find(" = ");
+    std::string option = message.substr(prefix.size(), eq - prefix.size());
+    option = option.substr(0, option.find(','));
+    const std::string value = eq == std::string::npos ? "" : message.substr(eq + 3);
+    message = option + ": '" + value + "' is not a valid value";
+  }
+  return message + " (see --help)";
+}
+
+}  // namespace
+
+std::vector<std::string> mission_words(const std::string& algorithm, const py::handle& uavs,
+                                       const py::handle& s2, const py::handle& seed,
+                                       const std::string& scenario, const std::string& hull_path,
+                                       const py::dict& options, const py::dict& params) {
+  std::vector<std::string> words = {"--algorithm", algorithm, "--uavs",   text(uavs),   "--s2",
+                                    text(s2),      "--seed",  text(seed), "--scenario", scenario};
+  if (!hull_path.empty()) words.insert(words.end(), {"--hull", hull_path});
+  const MissionParser known;
+  for (const auto& [key, value] : params) {
+    std::string name = key.cast<std::string>();
+    std::replace(name.begin(), name.end(), '_', '-');
+    if (name == "starts") name = "start";
+    const std::string flag = "--" + name;
+    const CLI::Option* option = known.app.get_option_no_throw(flag);
+    if (option == nullptr || name == "option" || name == "hull") {
+      words.insert(words.end(), {"-O", name + "=" + text(value)});
+    } else if (option->get_type_size() == 0) {  // a flag such as --keep-largest
+      if (value.cast<bool>()) words.push_back(flag);
+    } else if (py::isinstance<py::list>(value)) {
+      for (const auto& item : value.cast<py::list>()) {
+        words.insert(words.end(), {flag, item_text(flag, item)});
+      }
+    } else {
+      words.insert(words.end(), {flag, item_text(flag, value)});
+    }
+  }
+  for (const auto& [key, value] : options) {
+    words.insert(words.end(), {"-O", key.cast<std::string>() + "=" + text(value)});
+  }
+  return words;
+}
+
+cli::MissionArgs parse_mission_words(const std::vector<std::string>& words) {
+  MissionParser parser;
+  std::vector<std::string> reversed(words.rbegin(), words.rend());  // CLI11 takes them reversed
+  try {
+    parser.app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    throw Error(parse_error_message(e));
+  }
+  return parser.args;
+}
+
+}  // namespace hullinspect::python
