@@ -1,5 +1,7 @@
 #include "hullinspect/experiment/csv.hpp"
 
+#include "hullinspect/core/numbers.hpp"
+
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
@@ -91,15 +93,24 @@ CsvTable parse_csv(std::string_view text, const std::string& source) {
     if (line_number == 1) {
       table.header = *fields;
     } else if (fields->size() != table.header.size()) {
-      throw InputError(source, line_number,
-                       fmt::format("has {} fields; the header has {}", fields->size(),
-                                   table.header.size()));
+      throw InputError(
+          source, line_number,
+          fmt::format("has {} fields; the header has {}", fields->size(), table.header.size()));
     } else {
       table.rows.push_back(*fields);
     }
   }
   if (line_number == 0) throw InputError(source, 0, "is empty (no header)");
   return table;
+}
+
+int csv_int(const std::string& field, const std::string& source, int line,
+            const std::string& column, int min, int max) {
+  try {
+    return parse_integer<int>(field, min, max);
+  } catch (const NumberError& e) {
+    throw InputError(source, line, fmt::format("{}: {}", column, e.what()));
+  }
 }
 
 }  // namespace hullinspect::experiment

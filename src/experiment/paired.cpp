@@ -8,8 +8,10 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/random.hpp"
 
 namespace hullinspect::experiment {
@@ -29,29 +31,18 @@ struct Times {
 // Per cell: algorithm → seed → times.
 using CellRuns = std::map<std::string, std::map<std::string, Times>>;
 
-std::optional<double> parse_time(const std::string& s, const std::string& source, int line) {
+std::optional<double> parse_time(const std::string& s, const std::string& source, int line,
+                                 const std::string& column) {
   if (s.empty()) return std::nullopt;
-  int v = 0;
-  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size() || v < 0) {
-    throw InputError(source, line, fmt::format("'{}' is not a time in steps", s));
-  }
-  return v;
+  return csv_int(s, source, line, column);
 }
 
-int parse_int(const std::string& s, const std::string& source, int line) {
-  int v = 0;
-  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size()) {
-    throw InputError(source, line, fmt::format("'{}' is not an integer", s));
-  }
-  return v;
-}
-
-// Algorithms that see the ground truth (an oracle, a bound) are references: compared with the
-// others, never ranked with them and never part of a claim.
-bool is_reference(const std::string& algorithm) {
-  return algorithm.starts_with("oracle") || algorithm.find("bound") != std::string::npos;
+// Algorithms whose planner sees the ground truth (an oracle: its registry entry says
+// sees_truth) are references: compared with the others, never ranked with them and never part of
+// a claim. A label's planner is read from runs.csv's planner column.
+bool sees_truth(const std::string& planner) {
+  const auto& registry = planners::planners();
+  return registry.contains(planner) && registry.get(planner).sees_truth;
 }
 
 PairedDiff compare(const CellKey& cell, const std::string& metric, const std::string& a,
@@ -82,11 +73,12 @@ PairedDiff compare(const CellKey& cell, const std::string& metric, const std::st
 }
 
 CellRanking rank(const CellKey& cell, const std::string& metric, const CellRuns& runs,
+                 const std::set<std::string>& references,
                  const std::vector<std::string>& algorithms) {
   CellRanking r{cell, metric, 0, {}};
   std::vector<std::string> ranked;
   for (const auto& a : algorithms) {
-    if (!is_reference(a) && runs.contains(a)) ranked.push_back(a);
+    if (!references.contains(a) && runs.contains(a)) ranked.push_back(a);
   }
   if (ranked.empty()) return r;
   std::vector<double> rank_sum(ranked.size(), 0), value_sum(ranked.size(), 0);
@@ -182,6 +174,7 @@ PairedAnalysis analyse_pairs(const CsvTable& runs, const std::string& source,
                              const PairedOptions& options) {
   const int c_scenario = runs.column("scenario", source);
   const int c_algorithm = runs.column("algorithm", source);
+  const int c_planner = runs.column("planner", source);
   const int c_s2 = runs.column("s2", source);
   const int c_uavs = runs.column("uavs", source);
   const int c_seed = runs.column("seed", source);
@@ -191,21 +184,24 @@ PairedAnalysis analyse_pairs(const CsvTable& runs, const std::string& source,
   std::vector<CellKey> cell_order;
   std::map<CellKey, CellRuns> data;
   std::vector<std::string> seen;
+  std::set<std::string> references;
   int line = 1;
   for (const auto& r : runs.rows) {
     ++line;
     auto at = [&](int c) -> const std::string& { return r[static_cast<std::size_t>(c)]; };
-    const CellKey key{at(c_scenario), parse_int(at(c_s2), source, line),
-                      parse_int(at(c_uavs), source, line)};
+    const CellKey key{at(c_scenario), csv_int(at(c_s2), source, line, "s2"),
+                      csv_int(at(c_uavs), source, line, "uavs")};
     if (!data.contains(key)) cell_order.push_back(key);
     const auto& algorithm = at(c_algorithm);
     if (std::find(seen.begin(), seen.end(), algorithm) == seen.end()) seen.push_back(algorithm);
+    if (sees_truth(at(c_planner))) references.insert(algorithm);
     data[key][algorithm][at(c_seed)] =
-        Times{parse_time(at(c_tc), source, line), parse_time(at(c_tm), source, line)};
+        Times{parse_time(at(c_tc), source, line, "T_c"), parse_time(at(c_tm), source, line, "T_m")};
   }
 
   PairedAnalysis out;
   out.algorithms = options.algorithms.empty() ? seen : options.algorithms;
+  out.references = references;
   for (const auto& a : out.algorithms) {
     if (std::find(seen.begin(), seen.end(), a) == seen.end()) {
       std::string known;
@@ -217,7 +213,7 @@ PairedAnalysis analyse_pairs(const CsvTable& runs, const std::string& source,
   for (const auto& cell : cell_order) {
     const auto& cr = data.at(cell);
     for (const auto& metric : options.metrics) {
-      out.rankings.push_back(rank(cell, metric, cr, out.algorithms));
+      out.rankings.push_back(rank(cell, metric, cr, out.references, out.algorithms));
       for (std::size_t i = 0; i < out.algorithms.size(); ++i) {
         for (std::size_t j = i + 1; j < out.algorithms.size(); ++j) {
           const auto &a = out.algorithms[i], &b = out.algorithms[j];
@@ -390,7 +386,7 @@ std::string paired_markdown(const PairedAnalysis& an, const std::vector<ClaimChe
       "seed) and the share of seeds where a was faster (ties count one half). The ranking orders "
       "the algorithms by their mean rank over the seeds where all of them reached the time.";
   bool references = false;
-  for (const auto& a : an.algorithms) references = references || is_reference(a);
+  for (const auto& a : an.algorithms) references = references || an.references.contains(a);
   if (references) {
     md += " Algorithms that see the ground truth (oracles, bounds) are compared but not ranked.";
   }

@@ -14,15 +14,6 @@ namespace hullinspect::experiment {
 
 namespace {
 
-int parse_int(const std::string& s, const std::string& source, int line) {
-  int v = 0;
-  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size()) {
-    throw InputError(source, line, fmt::format("'{}' is not an integer", s));
-  }
-  return v;
-}
-
 TimeStats stats(const std::vector<double>& v) {
   TimeStats s;
   s.count = static_cast<int>(v.size());
@@ -102,8 +93,8 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
   for (const auto& r : runs.rows) {
     ++line;
     auto at = [&](int c) -> const std::string& { return r[static_cast<std::size_t>(c)]; };
-    const int s2 = parse_int(at(c_s2), source, line);
-    const int uavs = parse_int(at(c_uavs), source, line);
+    const int s2 = csv_int(at(c_s2), source, line, "s2");
+    const int uavs = csv_int(at(c_uavs), source, line, "uavs");
     const auto key = std::make_tuple(at(c_scenario), s2, uavs, at(c_algorithm));
     auto [it, inserted] = index.emplace(key, rows.size());
     if (inserted) {
@@ -123,10 +114,12 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
     SummaryRow& row = rows[it->second];
     ++row.runs;
     if (at(c_complete) != "1") ++row.incomplete;
-    if (!at(c_tc).empty()) tc[it->second].push_back(parse_int(at(c_tc), source, line));
-    if (!at(c_tm).empty()) tm[it->second].push_back(parse_int(at(c_tm), source, line));
-    if (c_btc >= 0 && !at(c_btc).empty()) btc[it->second].push_back(parse_int(at(c_btc), source, line));
-    if (c_btm >= 0 && !at(c_btm).empty()) btm[it->second].push_back(parse_int(at(c_btm), source, line));
+    if (!at(c_tc).empty()) tc[it->second].push_back(csv_int(at(c_tc), source, line, "T_c"));
+    if (!at(c_tm).empty()) tm[it->second].push_back(csv_int(at(c_tm), source, line, "T_m"));
+    if (c_btc >= 0 && !at(c_btc).empty())
+      btc[it->second].push_back(csv_int(at(c_btc), source, line, "bound_T_c"));
+    if (c_btm >= 0 && !at(c_btm).empty())
+      btm[it->second].push_back(csv_int(at(c_btm), source, line, "bound_T_m"));
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     rows[i].t_c = stats(tc[i]);
@@ -146,14 +139,13 @@ std::string summary_csv(const std::vector<SummaryRow>& rows) {
     return t.count == 0 ? std::string() : fmt::format("{:.3f}", v);
   };
   for (const auto& r : rows) {
-    out += csv_line({r.scenario, r.sweep, r.sweep_value, std::to_string(r.s2),
-                     std::to_string(r.uavs), r.algorithm, std::to_string(r.runs),
-                     std::to_string(r.incomplete), std::to_string(r.t_c.count),
-                     number(r.t_c, r.t_c.mean), number(r.t_c, r.t_c.std),
-                     std::to_string(r.t_m.count), number(r.t_m, r.t_m.mean),
-                     number(r.t_m, r.t_m.std), number(r.bound_t_c, r.bound_t_c.mean),
-                     number(r.bound_t_m, r.bound_t_m.mean)}) +
-           "\n";
+    out +=
+        csv_line({r.scenario, r.sweep, r.sweep_value, std::to_string(r.s2), std::to_string(r.uavs),
+                  r.algorithm, std::to_string(r.runs), std::to_string(r.incomplete),
+                  std::to_string(r.t_c.count), number(r.t_c, r.t_c.mean), number(r.t_c, r.t_c.std),
+                  std::to_string(r.t_m.count), number(r.t_m, r.t_m.mean), number(r.t_m, r.t_m.std),
+                  number(r.bound_t_c, r.bound_t_c.mean), number(r.bound_t_m, r.bound_t_m.mean)}) +
+        "\n";
   }
   return out;
 }

@@ -61,6 +61,19 @@ grid::Cell visit_uncovered(grid::DistanceService& distances, grid::Cell at,
 
 }  // namespace
 
+StripColumns strip_columns(const grid::Grid<std::int16_t>& owner, int uav, int y_begin, int y_end) {
+  StripColumns columns{owner.width(), -1};
+  for (int y = y_begin; y < y_end; ++y) {
+    for (int x = 0; x < owner.width(); ++x) {
+      if (owner(x, y) == uav) {
+        columns.first = std::min(columns.first, x);
+        columns.last = std::max(columns.last, x);
+      }
+    }
+  }
+  return columns;
+}
+
 LawnmowerRoute lawnmower_route_around_no_fly(const grid::Grid<std::int16_t>& owner, int uav, int s1,
                                              int s2, grid::Cell from,
                                              grid::DistanceService& distances,
@@ -73,17 +86,10 @@ LawnmowerRoute lawnmower_route_around_no_fly(const grid::Grid<std::int16_t>& own
   std::vector<std::pair<int, int>> runs;
   for (int y_begin = 0; y_begin < b; y_begin += s1) {
     const int y_end = std::min(b, y_begin + s1);
-    int x_min = owner.width();
-    int x_max = -1;
-    for (int y = y_begin; y < y_end; ++y) {
-      for (int x = 0; x < owner.width(); ++x) {
-        if (owner(x, y) == uav) {
-          x_min = std::min(x_min, x);
-          x_max = std::max(x_max, x);
-        }
-      }
-    }
-    if (x_max < 0) continue;
+    const StripColumns columns = strip_columns(owner, uav, y_begin, y_end);
+    if (columns.empty()) continue;
+    const int x_min = columns.first;
+    const int x_max = columns.last;
     const int row = std::min(y_begin + (s1 - 1) / 2, b - 1);
     // The flight row split into runs of allowed positions; the gaps are flown around.
     runs.clear();

@@ -13,17 +13,10 @@ std::vector<grid::Cell> LawnmowerPlanner::sweep(const grid::Grid<std::int16_t>& 
   grid::Cell at = from;
   for (int y_begin = 0; y_begin < b; y_begin += s1) {
     const int y_end = std::min(b, y_begin + s1);
-    int x_min = owner.width();
-    int x_max = -1;
-    for (int y = y_begin; y < y_end; ++y) {
-      for (int x = 0; x < owner.width(); ++x) {
-        if (owner(x, y) == uav) {
-          x_min = std::min(x_min, x);
-          x_max = std::max(x_max, x);
-        }
-      }
-    }
-    if (x_max < 0) continue;
+    const StripColumns columns = strip_columns(owner, uav, y_begin, y_end);
+    if (columns.empty()) continue;
+    const int x_min = columns.first;
+    const int x_max = columns.last;
     const int row = std::min(y_begin + (s1 - 1) / 2, b - 1);
     grid::Cell left{x_min, row};
     grid::Cell right{x_max, row};
@@ -55,9 +48,9 @@ void LawnmowerPlanner::start(const PlannerContext& context) {
       follower.assign(sweep(partition_->owner, k, context.params.s1, from));
       continue;
     }
-    LawnmowerRoute route = lawnmower_route_around_no_fly(
-        partition_->owner, k, context.params.s1, context.params.s2, from, distances,
-        context.reach->reach);
+    LawnmowerRoute route =
+        lawnmower_route_around_no_fly(partition_->owner, k, context.params.s1, context.params.s2,
+                                      from, distances, context.reach->reach);
     follower.assign(std::move(route.z1));
     climb_[static_cast<std::size_t>(k)] = std::move(route.z2);
   }
@@ -98,8 +91,8 @@ bool LawnmowerPlanner::idle(const sim::PlannerView& view) const {
 void LawnmowerPlanner::annotate(AnnotationSink& sink) const {
   for (std::size_t k = 0; k < followers_.size(); ++k) {
     const auto& f = followers_[k];
-    const bool descending = k < last_.size() && climbed_[k] == 0 &&
-                            (last_[k].z == 2 || last_[k].in_transit());
+    const bool descending =
+        k < last_.size() && climbed_[k] == 0 && (last_[k].z == 2 || last_[k].in_transit());
     const auto plan = f.remaining();
     sink.uav(static_cast<int>(k), descending ? "descend" : (plan.empty() ? "done" : "cover"),
              f.target(), plan);

@@ -2,6 +2,7 @@
 // seed, bootstrap intervals, win rates, rankings and the paper's claims, on small hand-made tables.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,24 +16,27 @@ struct RunRow {
   std::string scenario, algorithm;
   int s2, uavs, seed;
   std::string t_c, t_m;
+  std::string planner = "";  // the registry name behind the label; "" = the label itself
 };
 
 CsvTable table(const std::vector<RunRow>& runs) {
   CsvTable t;
-  t.header = {"scenario", "algorithm", "s2", "uavs", "seed", "T_c", "T_m"};
+  t.header = {"scenario", "algorithm", "planner", "s2", "uavs", "seed", "T_c", "T_m"};
   for (const auto& r : runs) {
-    t.rows.push_back({r.scenario, r.algorithm, std::to_string(r.s2), std::to_string(r.uavs),
-                      std::to_string(r.seed), r.t_c, r.t_m});
+    t.rows.push_back({r.scenario, r.algorithm, r.planner.empty() ? r.algorithm : r.planner,
+                      std::to_string(r.s2), std::to_string(r.uavs), std::to_string(r.seed), r.t_c,
+                      r.t_m});
   }
   return t;
 }
 
 // `algorithm` with T_c = base_c + seed·step and T_m = base_m + seed on seeds 1..seeds.
 void add(std::vector<RunRow>& runs, const std::string& scenario, const std::string& algorithm,
-         int base_c, int base_m, int seeds = 8, int s2 = 7, int uavs = 4, int step = 3) {
+         int base_c, int base_m, int seeds = 8, int s2 = 7, int uavs = 4, int step = 3,
+         const std::string& planner = "") {
   for (int seed = 1; seed <= seeds; ++seed) {
     runs.push_back({scenario, algorithm, s2, uavs, seed, std::to_string(base_c + seed * step),
-                    std::to_string(base_m + seed)});
+                    std::to_string(base_m + seed), planner});
   }
 }
 
@@ -83,10 +87,10 @@ TEST(Paired, DifferencesAreTakenSeedBySeed) {
 
 TEST(Paired, IncompleteAndUnsharedSeedsAreLeftOutTiesCountHalf) {
   std::vector<RunRow> runs = {
-      {"s", "a", 7, 4, 1, "100", "200"}, {"s", "b", 7, 4, 1, "100", "210"},  // tie on T_c
-      {"s", "a", 7, 4, 2, "90", "200"},  {"s", "b", 7, 4, 2, "100", "210"},
-      {"s", "a", 7, 4, 3, "", ""},       {"s", "b", 7, 4, 3, "50", "60"},  // a incomplete
-      {"s", "a", 7, 4, 4, "10", "20"},                                     // b never ran seed 4
+      {"s", "a", 7, 4, 1, "100", "200", ""}, {"s", "b", 7, 4, 1, "100", "210", ""},  // tie on T_c
+      {"s", "a", 7, 4, 2, "90", "200", ""},  {"s", "b", 7, 4, 2, "100", "210", ""},
+      {"s", "a", 7, 4, 3, "", "", ""},       {"s", "b", 7, 4, 3, "50", "60", ""},  // a incomplete
+      {"s", "a", 7, 4, 4, "10", "20", ""},  // b never ran seed 4
   };
   const auto an = analyse_pairs(table(runs), "runs.csv");
   const auto* d = an.find({"s", 7, 4}, "T_c", "a", "b");
@@ -118,13 +122,27 @@ TEST(Paired, RankingOrdersByMeanRankOverCommonSeeds) {
 }
 
 TEST(Paired, OraclesAreComparedButNotRanked) {
+  // Which label is an oracle comes from its planner's registry entry (sees_truth), not its name.
   std::vector<RunRow> runs;
   add(runs, "perfect", "part-tsp", 150, 300);
-  add(runs, "perfect", "oracle", 90, 280);
+  add(runs, "perfect", "bound", 90, 280, 8, 7, 4, 3, "oracle-part-tsp");
+  add(runs, "perfect", "oracle-like", 120, 290, 8, 7, 4, 3, "part-tsp0");
   const auto an = analyse_pairs(table(runs), "runs.csv");
-  ASSERT_NE(an.find({"perfect", 7, 4}, "T_c", "part-tsp", "oracle"), nullptr);
-  ASSERT_EQ(an.rankings[0].order.size(), 1u);
-  EXPECT_EQ(an.rankings[0].order[0].algorithm, "part-tsp");
+  EXPECT_EQ(an.references, (std::set<std::string>{"bound"}));
+  ASSERT_NE(an.find({"perfect", 7, 4}, "T_c", "part-tsp", "bound"), nullptr);
+  ASSERT_EQ(an.rankings[0].order.size(), 2u);
+  EXPECT_EQ(an.rankings[0].order[0].algorithm, "oracle-like");
+  EXPECT_EQ(an.rankings[0].order[1].algorithm, "part-tsp");
+}
+
+TEST(Paired, AMalformedTimeNamesTheFileLineAndColumn) {
+  std::vector<RunRow> runs = {{"s", "a", 7, 4, 1, "1e3", "200", ""}};
+  try {
+    analyse_pairs(table(runs), "runs.csv");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "runs.csv:2: T_c: must be an integer in [0, 1073741824] (got '1e3')");
+  }
 }
 
 TEST(Paired, PlannersChooseAndOrderTheComparison) {

@@ -28,6 +28,11 @@ struct CsvTable {
   int find_column(const std::string& name) const;
 };
 
+/// A field read as an integer in [min, max] through the shared number parser (core/numbers.hpp);
+/// throws InputError naming `source`, the line and `column` otherwise.
+int csv_int(const std::string& field, const std::string& source, int line,
+            const std::string& column, int min = 0, int max = 1 << 30);
+
 /// Parses a complete CSV file (every line ends with a line break). Throws InputError naming
 /// `source` and the line for a malformed row or a row with the wrong number of fields.
 CsvTable parse_csv(std::string_view text, const std::string& source);

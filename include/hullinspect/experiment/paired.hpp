@@ -6,6 +6,7 @@
 // cell; and the paper's claims are checked against these numbers (docs/experiments.md).
 
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -58,8 +59,10 @@ struct PairedOptions {
 
 struct PairedAnalysis {
   std::vector<std::string> algorithms;  ///< compared, in order
-  std::vector<PairedDiff> diffs;        ///< every ordered pair a before b, per cell and metric
-  std::vector<CellRanking> rankings;    ///< per cell and metric
+  /// Labels whose planner sees the ground truth (oracles): compared, never ranked or claimed.
+  std::set<std::string> references;
+  std::vector<PairedDiff> diffs;      ///< every ordered pair a before b, per cell and metric
+  std::vector<CellRanking> rankings;  ///< per cell and metric
   /// The difference a − b for a cell and metric, or nullptr when it was not computed.
   const PairedDiff* find(const CellKey& cell, const std::string& metric, const std::string& a,
                          const std::string& b) const;

@@ -13,6 +13,15 @@
 
 namespace hullinspect::planners {
 
+/// The columns [first, last] of UAV `uav`'s region in the strip of rows [y_begin, y_end); first >
+/// last when the region has no cell there. Both routes (with and without no-fly zones) sweep these.
+struct StripColumns {
+  int first = 0;
+  int last = -1;
+  bool empty() const { return last < first; }
+};
+StripColumns strip_columns(const grid::Grid<std::int16_t>& owner, int uav, int y_begin, int y_end);
+
 struct LawnmowerRoute {
   std::vector<grid::Cell> z1;  ///< waypoints flown at z = 1
   std::vector<grid::Cell> z2;  ///< waypoints flown at z = 2 afterwards (empty: never climbs)
