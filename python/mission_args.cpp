@@ -41,20 +41,6 @@ struct MissionParser {
   }
 };
 
-/// CLI11's "Could not convert: --uavs,-n = abc" as main.cpp prints it.
-std::string parse_error_message(const CLI::ParseError& e) {
-  std::string message = e.what();
-  const std::string prefix = "Could not convert: ";
-  if (message.rfind(prefix, 0) == 0) {
-    const auto eq = message.find(" = ");
-    std::string option = message.substr(prefix.size(), eq - prefix.size());
-    option = option.substr(0, option.find(','));
-    const std::string value = eq == std::string::npos ? "" : message.substr(eq + 3);
-    message = option + ": '" + value + "' is not a valid value";
-  }
-  return message + " (see --help)";
-}
-
 }  // namespace
 
 std::vector<std::string> mission_words(const std::string& algorithm, const py::handle& uavs,
@@ -95,7 +81,7 @@ cli::MissionArgs parse_mission_words(const std::vector<std::string>& words) {
   try {
     parser.app.parse(reversed);
   } catch (const CLI::ParseError& e) {
-    throw Error(parse_error_message(e));
+    throw Error(cli::parse_error_message(e));
   }
   return parser.args;
 }

@@ -14,7 +14,9 @@
 
 namespace hullinspect::cli {
 
-std::string option_name(const std::string& parameter) { return hullinspect::option_name(parameter); }
+std::string option_name(const std::string& parameter) {
+  return hullinspect::option_name(parameter);
+}
 
 namespace {
 
@@ -79,17 +81,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::string message = e.what();
-    // CLI11 says "Could not convert: --uavs,-n = abc"; name the option first like our own errors.
-    const std::string prefix = "Could not convert: ";
-    if (message.rfind(prefix, 0) == 0) {
-      const auto eq = message.find(" = ");
-      std::string option = message.substr(prefix.size(), eq - prefix.size());
-      option = option.substr(0, option.find(','));
-      const std::string value = eq == std::string::npos ? "" : message.substr(eq + 3);
-      message = option + ": '" + value + "' is not a valid value";
-    }
-    std::cerr << "hullinspect: " << cli::one_line(message) << " (see --help)\n";
+    std::cerr << "hullinspect: " << cli::one_line(cli::parse_error_message(e)) << "\n";
     return cli::kExitBadInput;
   }
   try {

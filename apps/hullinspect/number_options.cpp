@@ -71,4 +71,17 @@ grid::Cell parse_xy(const std::string& text, const std::string& option) {
   }
 }
 
+std::string parse_error_message(const CLI::ParseError& e) {
+  std::string message = e.what();
+  const std::string prefix = "Could not convert: ";
+  if (message.rfind(prefix, 0) == 0) {
+    const auto eq = message.find(" = ");
+    std::string option = message.substr(prefix.size(), eq - prefix.size());
+    option = option.substr(0, option.find(','));
+    const std::string value = eq == std::string::npos ? "" : message.substr(eq + 3);
+    message = option + ": '" + value + "' is not a valid value";
+  }
+  return message + " (see --help)";
+}
+
 }  // namespace hullinspect::cli

@@ -27,4 +27,9 @@ void require_exact_numbers(CLI::App& app);
 /// Throws ParameterError(option, …).
 grid::Cell parse_xy(const std::string& text, const std::string& option = "start");
 
+/// A CLI11 parse error as one of our messages: "Could not convert: --uavs,-n = abc" becomes
+/// "--uavs: 'abc' is not a valid value"; every message ends in " (see --help)". The CLI and the
+/// Python module (which parses its keyword arguments as a command line) both print this.
+std::string parse_error_message(const CLI::ParseError& e);
+
 }  // namespace hullinspect::cli

@@ -32,6 +32,8 @@ bool divides_exactly(std::span<const double> desired, double unit) {
 using detail::check_weights;
 using detail::checked_shares;
 using detail::checked_starts;
+using detail::desired_weights;
+using detail::DesiredWeights;
 
 const Params<DarpOptions>& darp_params() {
   static const Params<DarpOptions> params = [] {
@@ -104,23 +106,11 @@ Partition DarpPartitioner::partition(const PartitionRequest& request) const {
   if (weighted) check_weights(hull, request.weights);
   const std::vector<double> shares = checked_shares(request.shares, n);
 
-  // Desired weights, and the weight of "one cell" of tolerance: 1, or the heaviest hull cell.
-  double total = 0;
-  double unit = 1;
-  if (weighted) {
-    unit = 0;
-    for (int i : hull.cells()) {
-      total += request.weights[i];
-      unit = std::max(unit, request.weights[i]);
-    }
-  } else {
-    total = hull.cell_count();
-  }
-  const double share_total = std::accumulate(shares.begin(), shares.end(), 0.0);
+  DesiredWeights want = desired_weights(hull, request.weights, shares);
+  const double total = want.total;
+  const double unit = want.unit;  // one cell of tolerance
   Partition out;
-  out.desired_weight.resize(static_cast<std::size_t>(n));
-  for (std::size_t k = 0; k < shares.size(); ++k)
-    out.desired_weight[k] = total * shares[k] / share_total;
+  out.desired_weight = std::move(want.desired);
   out.owner = grid::Grid<std::int16_t>(hull.width(), hull.height(), -1);
   auto finish = [&]() {
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "hullinspect/core/errors.hpp"
 
@@ -68,6 +70,24 @@ std::vector<double> checked_shares(std::span<const double> shares, int n) {
     }
   }
   return {shares.begin(), shares.end()};
+}
+
+DesiredWeights desired_weights(const world::HullMask& hull, const grid::Grid<double>& weights,
+                               std::span<const double> shares) {
+  DesiredWeights d;
+  if (weights.size() > 0) {
+    d.unit = 0;
+    for (int i : hull.cells()) {
+      d.total += weights[i];
+      d.unit = std::max(d.unit, weights[i]);
+    }
+  } else {
+    d.total = hull.cell_count();
+  }
+  const double share_total = std::accumulate(shares.begin(), shares.end(), 0.0);
+  d.desired.reserve(shares.size());
+  for (const double share : shares) d.desired.push_back(d.total * share / share_total);
+  return d;
 }
 
 }  // namespace hullinspect::partition::detail

@@ -19,4 +19,15 @@ void check_weights(const world::HullMask& hull, const grid::Grid<double>& weight
 /// The shares (equal when empty); a wrong count or a non-positive share is a ParameterError.
 std::vector<double> checked_shares(std::span<const double> shares, int n);
 
+/// What the UAVs should get: the total weight (the cell count when unweighted), each UAV's desired
+/// weight (total · share / Σ shares) and the weight of "one cell" of tolerance (1, or the heaviest
+/// hull cell when weighted).
+struct DesiredWeights {
+  double total = 0;
+  double unit = 1;
+  std::vector<double> desired;
+};
+DesiredWeights desired_weights(const world::HullMask& hull, const grid::Grid<double>& weights,
+                               std::span<const double> shares);
+
 }  // namespace hullinspect::partition::detail

@@ -17,8 +17,8 @@ Partition StripesPartitioner::partition(const PartitionRequest& request) const {
   const int n = static_cast<int>(request.starts.size());
   if (n < 1) throw ParameterError("uavs", "must be at least 1 (got 0)");
   if (n > hull.cell_count()) {
-    throw ParameterError("uavs", fmt::format("must be at most the {} hull cells (got {})",
-                                             hull.cell_count(), n));
+    throw ParameterError(
+        "uavs", fmt::format("must be at most the {} hull cells (got {})", hull.cell_count(), n));
   }
   const bool weighted = request.weights.size() > 0;
   auto weight = [&](int i) { return weighted ? request.weights[i] : 1.0; };
@@ -51,7 +51,8 @@ Partition StripesPartitioner::partition(const PartitionRequest& request) const {
   out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
   out.desired_weight.assign(static_cast<std::size_t>(n), 0.0);
   for (int k = 0; k < n; ++k) {
-    out.desired_weight[static_cast<std::size_t>(k)] = total * shares[static_cast<std::size_t>(k)] / share_total;
+    out.desired_weight[static_cast<std::size_t>(k)] =
+        total * shares[static_cast<std::size_t>(k)] / share_total;
   }
   std::size_t next = 0;
   double cumulative_target = 0;
@@ -60,7 +61,8 @@ Partition StripesPartitioner::partition(const PartitionRequest& request) const {
     const int k = uav_of_band[static_cast<std::size_t>(band)];
     cumulative_target += out.desired_weight[static_cast<std::size_t>(k)];
     const std::size_t remaining_bands = static_cast<std::size_t>(n - band - 1);
-    // Take cells while it brings the band closer to its cumulative target; leave one per later band.
+    // Take cells while it brings the band closer to its cumulative target; leave one per later
+    // band.
     bool took_one = false;
     while (next + remaining_bands < order.size()) {
       const double w = weight(order[next]);
@@ -84,9 +86,10 @@ Partition StripesPartitioner::partition(const PartitionRequest& request) const {
   for (int k = 0; k < n; ++k) {
     for (int i : hull.cells()) in_region[i] = out.owner[i] == k;
     if (grid::label_components(in_region, labels, scratch) != 1) {
-      throw Error(fmt::format("stripes: band of UAV {} is not 4-connected on hull '{}'; use the darp "
-                              "partitioner for this hull",
-                              k, hull.source()));
+      throw Error(
+          fmt::format("stripes: band of UAV {} is not 4-connected on hull '{}'; use the darp "
+                      "partitioner for this hull",
+                      k, hull.source()));
     }
   }
   double worst = 0;

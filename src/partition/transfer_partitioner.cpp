@@ -489,22 +489,11 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   if (weighted) detail::check_weights(hull, request.weights);
   const std::vector<double> shares = detail::checked_shares(request.shares, n);
 
-  double total = 0;
-  double unit = 1;
-  if (weighted) {
-    unit = 0;
-    for (int i : hull.cells()) {
-      total += request.weights[i];
-      unit = std::max(unit, request.weights[i]);
-    }
-  } else {
-    total = hull.cell_count();
-  }
-  const double share_total = std::accumulate(shares.begin(), shares.end(), 0.0);
+  detail::DesiredWeights want = detail::desired_weights(hull, request.weights, shares);
+  const double total = want.total;
+  const double unit = want.unit;  // one cell of tolerance
   Partition out;
-  out.desired_weight.resize(static_cast<std::size_t>(n));
-  for (std::size_t k = 0; k < shares.size(); ++k)
-    out.desired_weight[k] = total * shares[k] / share_total;
+  out.desired_weight = std::move(want.desired);
   // Unweighted: whole-cell targets, met exactly. Weighted: the desired weights, within one unit.
   const std::vector<double> target =
       weighted ? out.desired_weight : whole_cell_targets(out.desired_weight, hull.cell_count());
