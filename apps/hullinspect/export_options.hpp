@@ -14,9 +14,12 @@
 
 namespace hullinspect::cli {
 
+/// The waypoint format when --format is not given (the option, its help and ExportRequest use it).
+inline constexpr io::ExportFormat kDefaultExportFormat = io::ExportFormat::kCsv;
+
 struct ExportArgs {
   std::string dir;
-  std::string format = "csv";
+  std::string format{io::to_string(kDefaultExportFormat)};
   std::string origin;
   std::optional<double> heading;
   std::string geo_file;
@@ -29,7 +32,7 @@ void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_
 /// A checked export request.
 struct ExportRequest {
   std::filesystem::path dir;
-  io::ExportFormat format = io::ExportFormat::kCsv;
+  io::ExportFormat format = kDefaultExportFormat;
   std::optional<io::GeoReference> geo;
 };
 
