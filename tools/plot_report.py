@@ -78,7 +78,7 @@ def number(text):
     return float(text) if text not in ("", None) else math.nan
 
 
-FORMATS = ["png", "pdf"]
+FORMATS = ["png", "pdf"]  # set by main() from --format and --dpi
 DPI = 150
 LABELS = {}
 # Algorithms that ignore the prior: under p_TP / p_FP sweeps their curves coincide.
@@ -304,8 +304,9 @@ def main():
     parser.add_argument("--labels", default="",
                         help="comma-separated ALGORITHM=LABEL pairs for legends")
     parser.add_argument("--format", default="png,pdf",
-                        help="comma-separated file types: png, pdf, svg (default png,pdf)")
-    parser.add_argument("--dpi", type=int, default=150, help="resolution of PNG files (default 150)")
+                        help="comma-separated file types: png, pdf, svg (default %(default)s)")
+    parser.add_argument("--dpi", type=int, default=150,
+                        help="resolution of PNG files (default %(default)s)")
     args = parser.parse_args()
     global DPI, FORMATS
     DPI = args.dpi
