@@ -215,7 +215,8 @@ def plot(trace, until, title, show_partition):
     p = trace.get("parameters", {})
     if title is None:
         fp = trace["footprint"]
-        title = f"{p.get('algorithm', 'mission')}, {n} UAVs, s1 = {fp[0]}, s2 = {fp[1]}"
+        uavs = f"{n} UAV" if n == 1 else f"{n} UAVs"
+        title = f"{p.get('algorithm', 'mission')}, {uavs}, s1 = {fp[0]}, s2 = {fp[1]}"
         if "seed" in p:
             title += f", seed {p['seed']}"
         tc = "—" if r.get("T_c") is None else f"{r['T_c']} s"

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "export_options.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
@@ -65,9 +66,10 @@ int plan(const PlanArgs& args) {
     return t ? fmt::format("{} s", *t) : std::string("—");
   };
   const auto total = result.totals();
-  std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: planned on the prior{}\n",
-                           spec.algorithm, spec.params.uavs, spec.params.s1, spec.params.s2,
-                           spec.seed, result.complete ? "" : " — INCOMPLETE (time limit reached)");
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: planned on the prior{}\n",
+                           spec.algorithm, plural(spec.params.uavs, "UAV"), spec.params.s1,
+                           spec.params.s2, spec.seed,
+                           result.complete ? "" : " — INCOMPLETE (time limit reached)");
   std::cout << fmt::format(
       "  expected T_c = {}   T_m = {}   ({} prior-corroded of {} hull cells)\n", time(result.t_c),
       time(result.t_m), result.corroded_cells, result.hull_cells);
