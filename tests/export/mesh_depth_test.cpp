@@ -30,9 +30,9 @@ class MeshDepthExport : public ::testing::Test {
   std::string dir_;
 };
 
-// Every exported csv waypoint of a Wigley hull (port side, so Y grows outward) is the surface
+// Every exported csv waypoint of a Wigley hull (port and starboard) is the surface
 // point of its cell plus the plane's stand-off along the side's outward direction, and looks
-// along −normal; the csv's cell columns and the trace agree.
+// along −normal, in what `run --export` flew and in what `plan --export` planned.
 TEST_F(MeshDepthExport, WaypointsStandOffFromTheSurfaceAtTheirCell) {
   for (const std::string side : {"port", "starboard"}) {
     SCOPED_TRACE(side);
@@ -48,6 +48,11 @@ TEST_F(MeshDepthExport, WaypointsStandOffFromTheSurfaceAtTheirCell) {
                       "coop-frontier", "-n", "2", "--seed", "4", "--trace", trace_path, "--export",
                       out, "--format", "csv"});
     ASSERT_EQ(r.status, 0) << r.err;
+    // The plan before take-off (`plan --export`) stands off from the surface the same way.
+    r = run_cli({"plan", "--hull", stl.string(), "--cell-size", "1", "--side", side, "-a",
+                 "part-tsp", "-n", "2", "--seed", "4", "--export", out + "-plan", "--format",
+                 "csv"});
+    ASSERT_EQ(r.status, 0) << r.err;
     const auto trace = io::read_trace(trace_path);
     ASSERT_TRUE(trace.contains("ship_frame"));
     const io::ShipFrameSpec spec = io::ship_frame_spec(trace);
@@ -60,8 +65,9 @@ TEST_F(MeshDepthExport, WaypointsStandOffFromTheSurfaceAtTheirCell) {
     EXPECT_EQ(spec.side == io::HullSide::kPort, side == "port");
     const double sign = side == "port" ? 1.0 : -1.0;
     int deep = 0;
-    for (int k = 0; k < 2; ++k) {
-      const auto name = out + "/uav" + std::to_string(k) + ".csv";
+    for (const std::string& name :
+         {out + "/uav0.csv", out + "/uav1.csv", out + "-plan/uav0.csv", out + "-plan/uav1.csv"}) {
+      SCOPED_TRACE(name);
       const auto plan = io::read_export_csv(io::read_file(name), name);
       ASSERT_GT(plan.waypoints.size(), 2u);
       for (const auto& w : plan.waypoints) {
