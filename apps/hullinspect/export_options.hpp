@@ -34,7 +34,7 @@ void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_
 /// A checked export request.
 struct ExportRequest {
   std::filesystem::path dir;
-  io::ExportFormat format = io::ExportFormat::kCsv;
+  io::ExportFormat format = kDefaultExportFormat;
   std::optional<io::GeoReference> geo;
   std::string option;    ///< the directory option without dashes ("out", "export"), for messages
   std::string geo_file;  ///< --geo FILE, an input of the command; empty without one
