@@ -109,6 +109,12 @@ class Fig8(unittest.TestCase):
         legend = [t.get_text() for t in self.panels["sweep of $l_C$"].get_legend().get_texts()]
         self.assertEqual(legend, ["2", "4"])
 
+    def test_the_title_counts_instances(self):
+        self.assertIn("3 instances)", self.fig._suptitle.get_text())
+        plot_report.fig8(made_up_curves(), 5, 4, ["p_tp"], [], self.algorithms, self.colour, 1,
+                         GRID_END, "unused", [])
+        self.assertIn("1 instance)", self.figures[-1][1]._suptitle.get_text())
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -96,16 +96,18 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
   const auto& config = m.at("config");
   std::string md = fmt::format("# Experiment report: {}\n\n", config.value("name", "?"));
   if (!config.value("description", "").empty()) md += config.value("description", "") + "\n\n";
-  md += fmt::format("- Results: `{}` — status {}, {} of {} runs, {} instances per cell\n",
-                    a.results, m.value("status", "?"), m.value("runs_done", 0),
-                    m.value("runs_total", 0), config.at("seeds").size());
+  md += fmt::format("- Results: `{}` — status {}, {} of {}, {} per cell\n", a.results,
+                    m.value("status", "?"), m.value("runs_done", 0),
+                    plural(m.value("runs_total", 0), "run"),
+                    plural(static_cast<long long>(config.at("seeds").size()), "instance"));
   md += fmt::format("- Config: `{}` (fingerprint {}); hullinspect {} (git {})\n",
                     m.value("config_source", "?"), m.value("fingerprint", "?"),
                     m.value("version", "?"), m.value("git_revision", "unknown"));
   md += fmt::format("- Ran from {} to {}\n", m.value("started", "?"), m.value("finished", "?"));
-  md += "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
-        "over the missions that reached the time; \"[k incomplete]\" counts missions stopped by the "
-        "time limit, which are never counted as a number.\n\n";
+  md +=
+      "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
+      "over the missions that reached the time; \"[k incomplete]\" counts missions stopped by the "
+      "time limit, which are never counted as a number.\n\n";
   md += paired;
   md += "## Tables\n\nAlso in `summary.csv`; the paired differences in `paired.csv`.\n\n" + tables;
   if (!figures.empty()) {
@@ -181,7 +183,8 @@ int run(const ReportArgs& a) {
     }
   }
   const auto runs_path = (results / experiment::kRunsFile).string();
-  const auto runs = experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
+  const auto runs =
+      experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
   const auto rows = experiment::summarize_runs(runs, runs_path);
   experiment::PairedOptions paired_options;
   paired_options.algorithms = a.planners;

@@ -70,6 +70,29 @@ TEST(HelpDefaults, MeshOptionsShowWhatAnImportWithoutOptionsUses) {
   fs::remove_all(dir);
 }
 
+// docs/hulls.md's table of options shows the same defaults as --help.
+TEST(HelpDefaults, HullsDocTableShowsTheHelpDefaults) {
+  std::ifstream doc(fs::path(HULLINSPECT_SOURCE_DIR) / "docs" / "hulls.md");
+  ASSERT_TRUE(doc) << "docs/hulls.md";
+  const auto help = run_cli({"hull", "import", "--help"});
+  ASSERT_EQ(help.status, 0) << help.err;
+  int rows = 0;
+  for (std::string line; std::getline(doc, line);) {
+    // | `--side port\|starboard` | starboard | meaning |
+    if (line.rfind("| `--", 0) != 0) continue;
+    const auto name_end = line.find_first_of(" `", 5);
+    const std::string option = line.substr(5, name_end - 5);
+    if (option == "out" || option == "keep-largest") continue;
+    const auto cell = line.find("| ", line.find("` |")) + 2;
+    std::string shown = line.substr(cell, line.find(" |", cell) - cell);
+    shown.erase(std::remove(shown.begin(), shown.end(), '`'), shown.end());
+    const std::string from_help = shown_default(help.out, "--" + option);
+    EXPECT_EQ(shown, from_help.empty() ? "none" : from_help) << "--" << option;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 6);
+}
+
 TEST(HelpDefaults, ExportFormatShownIsTheOneWrittenWithoutFormat) {
   const auto dir = make_temp_dir("help-defaults-export");
   const std::string trace = dir + "/mission.json";

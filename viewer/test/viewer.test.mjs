@@ -864,3 +864,27 @@ test('the hovered cell is marked in yellow, unlike targets (white with a UAV col
   }
   await page.close();
 });
+
+test('16 UAVs packed in the top-left corner: every label placed, none overlapping or clipped', async (t) => {
+  // The 16-UAV lawnmower trace of the test above with its first frame moved: a 4 × 4 block of
+  // UAVs two cells apart in the corner of the top row, where labels have least room.
+  const trace = JSON.parse(fs.readFileSync(path.join(OUT, 'labels-16-lawnmower.json'), 'utf8'));
+  const H = trace.grid.height;
+  const u = trace.frames[0].u;
+  for (let k = 0; k < 16; ++k) {
+    u[5 * k] = 2 * (k % 4);
+    u[5 * k + 1] = H - 1 - 2 * Math.floor(k / 4);
+  }
+  const tracePath = path.join(OUT, 'labels-packed.json');
+  const html = path.join(OUT, 'labels-packed.html');
+  fs.writeFileSync(tracePath, JSON.stringify(trace));
+  execFileSync(CLI, ['view', tracePath, '--out', html]);
+  const {page} = await open(html);
+  await page.setViewportSize({width: 1400, height: 900});
+  await settle(page);
+  const {problems, labels, leaders} = await labelProblems(page, trace, [0]);
+  t.diagnostic(`packed: ${labels} labels, ${leaders} placed away from their UAV`);
+  assert.deepEqual(problems.slice(0, 10), [], `${problems.length} problems`);
+  assert.ok(leaders > 0, 'the crowding needs labels further out');
+  await page.close();
+});
