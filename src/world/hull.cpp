@@ -64,6 +64,9 @@ HullMask::HullMask(grid::Grid<std::uint8_t> is_hull, std::string source)
 }
 
 grid::Cell HullMask::snap(grid::Cell c) const {
+  // A hull cell is its own unique nearest hull cell (distance 0). Every mission snaps its start
+  // cells several times (validation, simulator, bound, partition), and the scan below is O(hull).
+  if (mask_.contains(c) && mask_(c.x, c.y) != 0) return c;
   grid::Cell best{-1, -1};
   int best_d = grid::kUnreachable;
   for (int i : cells_) {  // (y, x) order, so the first strict minimum wins ties
