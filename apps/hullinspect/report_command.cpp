@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <string_view>
 
 #include "experiment_commands.hpp"
 #include "hullinspect/core/errors.hpp"
@@ -103,21 +105,24 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
                     m.value("config_source", "?"), m.value("fingerprint", "?"),
                     m.value("version", "?"), m.value("git_revision", "unknown"));
   md += fmt::format("- Ran from {} to {}\n", m.value("started", "?"), m.value("finished", "?"));
-  md += "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
-        "over the missions that reached the time; \"[k incomplete]\" counts missions stopped by the "
-        "time limit, which are never counted as a number.\n\n";
+  md +=
+      "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
+      "over the missions that reached the time; \"[k incomplete]\" counts missions stopped by the "
+      "time limit, which are never counted as a number.\n\n";
   md += paired;
   md += "## Tables\n\nAlso in `summary.csv`; the paired differences in `paired.csv`.\n\n" + tables;
   if (!figures.empty()) {
     const auto& first = a.formats.front();
     // Name only the kinds of figure that were drawn (fig8 needs sweeps).
     std::vector<std::string> kinds;
-    for (const auto& [prefix, text] : {std::pair{"fig6_", "Fig. 6-style bars (`fig6_*`)"},
-                                       std::pair{"fig7_", "Fig. 7-style curves (`fig7_*`)"},
-                                       std::pair{"fig8_", "Fig. 8-style sweeps (`fig8_*`)"}}) {
+    for (const auto& kind : {std::pair{"fig6_", "Fig. 6-style bars (`fig6_*`)"},
+                             std::pair{"fig7_", "Fig. 7-style curves (`fig7_*`)"},
+                             std::pair{"fig8_", "Fig. 8-style sweeps (`fig8_*`)"}}) {
+      // Not a structured binding: clang 14 (the asan preset) cannot capture one in a lambda.
+      const std::string_view prefix = kind.first;
       if (std::any_of(figures.begin(), figures.end(),
                       [&](const std::string& f) { return f.starts_with(prefix); })) {
-        kinds.emplace_back(text);
+        kinds.emplace_back(kind.second);
       }
     }
     std::string list;
@@ -181,7 +186,8 @@ int run(const ReportArgs& a) {
     }
   }
   const auto runs_path = (results / experiment::kRunsFile).string();
-  const auto runs = experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
+  const auto runs =
+      experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
   const auto rows = experiment::summarize_runs(runs, runs_path);
   experiment::PairedOptions paired_options;
   paired_options.algorithms = a.planners;
