@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Static picture of one mission for papers: the map at the end (or at --time T), each UAV's
-trajectory (solid at z = 1, dashed at z = 2), its plane changes and, for partitioned planners, the
-region outlines. Reads a trace written by `hullinspect run --trace FILE` (docs/trace-format.md).
+trajectory (solid at z = 1, dashed at z = 2), its plane changes, for partitioned planners the
+region outlines, and with no-fly zones the no-fly positions (hatched, outlined) and the hull cells
+no allowed footprint reaches (cross-hatched; docs/model.md "No-fly zones"). Reads a trace written by `hullinspect run --trace FILE` (docs/trace-format.md).
 
 Usage (Debian's Python, which sees python3-matplotlib):
     /usr/bin/python3 tools/plot_mission.py mission.json                 # mission.png + mission.pdf
@@ -20,9 +21,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from matplotlib.collections import LineCollection  # noqa: E402
+from matplotlib.collections import LineCollection, PatchCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
-from matplotlib.patches import Patch  # noqa: E402
+from matplotlib.patches import Patch, Rectangle  # noqa: E402
 
 # Cell colours for print (the viewer's, with white instead of dark grey around the hull).
 NON_HULL = (1.0, 1.0, 1.0)
@@ -36,6 +37,13 @@ REGIONS = [
     (170, 90, 140), (60, 140, 130), (160, 150, 220), (70, 170, 200), (180, 130, 170), (90, 90, 170),
 ]
 REGION_TINT = 0.78
+# No-fly positions: red hatching with a red outline, as the viewer hatches them. Hull cells that no
+# allowed footprint reaches: purple cross-hatching over the cell's colour (its state stays visible);
+# dense for cells no footprint reaches, sparse for those only z = 2 sees.
+NO_FLY = "#b2182b"
+NO_FLY_HATCH = "////"
+UNREACHABLE = "#5e3c99"
+UNREACHABLE_HATCH = {"x": "xxxx", "d": "xx"}
 UAV_FIELDS = 5  # x, y, z, transit_left, active
 # Trajectory colours: no orange or green, which mark corrosion.
 UAV_COLORS = ["#1f77b4", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#555555", "#bcbd22",
@@ -114,6 +122,32 @@ def boundary_segments(labels, different):
     return segments
 
 
+def row_cells(rows, symbol):
+    """Cells (x, y) of rows[y] (y = 0 the bottom) whose character is `symbol`."""
+    return [(x, y) for y, row in enumerate(rows) for x, ch in enumerate(row) if ch == symbol]
+
+
+def cell_runs(cells):
+    """The cells as maximal horizontal runs (x0, y, length), so a zone is a few rectangles."""
+    runs = []
+    for x, y in sorted(cells, key=lambda c: (c[1], c[0])):
+        if runs and runs[-1][1] == y and runs[-1][0] + runs[-1][2] == x:
+            runs[-1] = (runs[-1][0], y, runs[-1][2] + 1)
+        else:
+            runs.append((x, y, 1))
+    return runs
+
+
+def hatched_cells(ax, cells, color, hatch, gid, zorder):
+    """Adds the cells as one collection of hatched rectangles (no fill) named `gid`."""
+    patches = [Rectangle((x - 0.5, y - 0.5), n, 1) for x, y, n in cell_runs(cells)]
+    collection = PatchCollection(patches, facecolor="none", edgecolor=color, hatch=hatch,
+                                 linewidths=0, zorder=zorder)
+    collection.set_gid(gid)
+    ax.add_collection(collection)
+    return collection
+
+
 def uav_tracks(trace, until):
     """Per UAV: array [t, (x, y, z, transit_left, active)] for t = 0..until."""
     frames = trace["frames"][: until + 1]
@@ -177,6 +211,25 @@ def plot(trace, until, title, show_partition):
             boundary_segments(owner, lambda a, b: a >= 0 and b >= 0 and a != b),
             colors="black", linewidths=1.1))
 
+    # No-fly zones (trace `no_fly`, `unreachable`): present only when the mission had some.
+    no_fly = row_cells(trace.get("no_fly") or [], "#")
+    unreachable = {k: row_cells(trace.get("unreachable") or [], k) for k in ("x", "d")}
+    # Unreachable cells lie behind no-fly positions, so they are drawn over them.
+    for k, cells in unreachable.items():
+        if cells:
+            hatched_cells(ax, cells, UNREACHABLE, UNREACHABLE_HATCH[k], f"unreachable-{k}", 2.6)
+    if no_fly:
+        hatched_cells(ax, no_fly, NO_FLY, NO_FLY_HATCH, "no-fly", 2.4)
+        mask = np.zeros((h, w), dtype=bool)
+        for x, y in no_fly:
+            mask[y, x] = True
+        # Padded by one cell so a zone on the grid's edge is closed too, then shifted back.
+        segments = [[(x - 1, y - 1) for x, y in segment]
+                    for segment in boundary_segments(np.pad(mask, 1), lambda a, b: a != b)]
+        outline = LineCollection(segments, colors=NO_FLY, linewidths=1.0, zorder=2.4)
+        outline.set_gid("no-fly-outline")
+        ax.add_collection(outline)
+
     ups, downs = {}, {}
     for k, track in enumerate(tracks):
         xy = track[:, 0:2].astype(float)
@@ -215,7 +268,8 @@ def plot(trace, until, title, show_partition):
     p = trace.get("parameters", {})
     if title is None:
         fp = trace["footprint"]
-        title = f"{p.get('algorithm', 'mission')}, {n} UAVs, s1 = {fp[0]}, s2 = {fp[1]}"
+        uavs = f"{n} UAV" if n == 1 else f"{n} UAVs"
+        title = f"{p.get('algorithm', 'mission')}, {uavs}, s1 = {fp[0]}, s2 = {fp[1]}"
         if "seed" in p:
             title += f", seed {p['seed']}"
         tc = "—" if r.get("T_c") is None else f"{r['T_c']} s"
@@ -243,6 +297,15 @@ def plot(trace, until, title, show_partition):
     ]
     if owner is not None:
         handles.append(Line2D([], [], color="black", lw=1.1, label="region boundary"))
+    if no_fly:
+        handles.append(Patch(fc="none", ec=NO_FLY, hatch=NO_FLY_HATCH,
+                             label=f"no-fly position ({len(no_fly)})"))
+    if unreachable["x"]:
+        handles.append(Patch(fc="none", ec=UNREACHABLE, hatch=UNREACHABLE_HATCH["x"],
+                             label=f"unreachable: no footprint ({len(unreachable['x'])})"))
+    if unreachable["d"]:
+        handles.append(Patch(fc="none", ec=UNREACHABLE, hatch=UNREACHABLE_HATCH["d"],
+                             label=f"unreachable at z = 1: seen from z = 2 only ({len(unreachable['d'])})"))
     legend_ax.legend(handles=handles, loc="center", ncol=min(8, max(4, (len(handles) + 2) // 3)),
                      fontsize=8, frameon=False)
     return fig

@@ -78,11 +78,16 @@ def number(text):
     return float(text) if text not in ("", None) else math.nan
 
 
-FORMATS = ["png", "pdf"]
+FORMATS = ["png", "pdf"]  # set by main() from --format and --dpi
 DPI = 150
 LABELS = {}
 # Algorithms that ignore the prior: under p_TP / p_FP sweeps their curves coincide.
 PRIOR_BLIND = {"lawnmower", "part-tsp0"}
+
+
+def counted(count, noun):
+    """'1 instance', '5 instances'."""
+    return f"{count} {noun}{'' if count == 1 else 's'}"
 
 
 def legend_label(algorithm):
@@ -147,7 +152,7 @@ def fig6(summary, scenario, algorithms, colour, instances, out_dir, written):
             ax.set_title(f"$s_2$ = {s2}")
             ax.grid(axis="x", visible=False)
     fig.suptitle(f"{scenario}: inspection time $T_c$ and mission time $T_m$ "
-                 f"(mean ± std over {instances} instances)")
+                 f"(mean ± std over {counted(instances, 'instance')})")
     algorithm_legend(fig, algorithms, colour)
     fig.tight_layout(rect=(0, 0.05, 1, 1))
     save(fig, out_dir, f"fig6_{safe(scenario)}", written)
@@ -224,7 +229,7 @@ def fig7(curves, scenario, n, algorithms, colour, instances, grid_end, out_dir, 
         for ax in axes[row]:
             ax.set_xlim(0, limit)
     fig.suptitle(f"{scenario}: mean $c(t)$ and $m(t)$ with ±1 std band "
-                 f"({instances} instances, n = {n})")
+                 f"({counted(instances, 'instance')}, n = {n})")
     algorithm_legend(fig, algorithms, colour)
     fig.tight_layout(rect=(0, 0.05, 1, 1))
     save(fig, out_dir, f"fig7_{safe(scenario)}_n{n}", written)
@@ -288,7 +293,7 @@ def fig8(curves, s2, n, sweeps, plain, algorithms, colour, instances, grid_end, 
     for index in range(len(panels), rows * cols):
         axes[index // cols][index % cols].set_visible(False)
     fig.suptitle(f"Mean $c(t)$ under single-parameter sweeps ($s_2$ = {s2}, n = {n}, "
-                 f"{instances} instances)")
+                 f"{counted(instances, 'instance')})")
     algorithm_legend(fig, algorithms, colour)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
     save(fig, out_dir, f"fig8_s2-{s2}_n{n}", written)
@@ -304,8 +309,9 @@ def main():
     parser.add_argument("--labels", default="",
                         help="comma-separated ALGORITHM=LABEL pairs for legends")
     parser.add_argument("--format", default="png,pdf",
-                        help="comma-separated file types: png, pdf, svg (default png,pdf)")
-    parser.add_argument("--dpi", type=int, default=150, help="resolution of PNG files (default 150)")
+                        help="comma-separated file types: png, pdf, svg (default %(default)s)")
+    parser.add_argument("--dpi", type=int, default=150,
+                        help="resolution of PNG files (default %(default)s)")
     args = parser.parse_args()
     global DPI, FORMATS
     DPI = args.dpi

@@ -4,12 +4,15 @@
 'use strict';
 
 (function (hv) {
-  const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, regionColor, regionTint, uavColor, layerColor} =
-      hv.palette;
+  const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, regionColor, regionTint,
+    uavColor, layerColor} = hv.palette;
   const PATH_LENGTH = 40; // steps of recent path drawn behind each UAV
   // Margins around the cells (CSS px), inside the overlay canvas: axes in metres below and left,
   // room above and right so markers and labels of the outer rows are not cut off.
   const PAD = {top: 18, right: 18, bottom: 34, left: 46};
+  const LABEL_FONT = '600 11px system-ui, sans-serif';
+  const LABEL_HALO = 1.5; // half the width of the white stroke around label text
+  const LABEL_RINGS = 6; // rings of places tried further from a UAV before its label is left out
 
   class MapView {
     // The margins around the cells, CSS px.
@@ -199,7 +202,7 @@
         });
       }
       states.forEach((s, k) => this.drawUav(ctx, s, k));
-      if (this.show.labels) this.drawLabels(ctx, states, notes);
+      if (this.show.labels) this.drawLabels(ctx, states, notes); else this.labelBoxes = [];
       if (this.hover) {
         // A yellow ring and a cross-hair along the row and the column: unlike targets (white
         // squares with a UAV's colour).
@@ -251,7 +254,7 @@
           ctx.moveTo(x, y);
           ctx.lineTo(x + cp, y + cp);
         }
-        ctx.strokeStyle = nf ? '#111' : (un === 2 ? '#444' : '#999');
+        ctx.strokeStyle = nf ? NO_FLY_MARK : UNREACHABLE_MARK[un];
         ctx.stroke();
       }
     }
@@ -286,6 +289,13 @@
         }
         return metres;
       };
+      // What is written where (overlay-canvas CSS px, the anchor of each text) is kept in
+      // `axisTexts` for the browser test.
+      this.axisTexts = [];
+      const write = (kind, text, x, y, at = [x, y]) => {
+        ctx.fillText(text, x, y);
+        this.axisTexts.push({kind, text, x: at[0] + PAD.left, y: at[1] + PAD.top});
+      };
       ctx.font = '11px system-ui, sans-serif';
       ctx.fillStyle = '#333';
       ctx.strokeStyle = '#666';
@@ -302,7 +312,7 @@
         const x = (v / m) * cp;
         ctx.moveTo(x, h);
         ctx.lineTo(x, h + 4);
-        ctx.fillText(`${Number(v.toFixed(2))}`, Math.min(Math.max(x, 8), w - 8), h + 5);
+        write('x-tick', `${Number(v.toFixed(2))}`, Math.min(Math.max(x, 8), w - 8), h + 5, [x, h]);
       }
       const sy = step(r.H, h);
       ctx.textAlign = 'right';
@@ -311,68 +321,103 @@
         const y = h - (v / m) * cp;
         ctx.moveTo(-4, y);
         ctx.lineTo(0, y);
-        ctx.fillText(`${Number(v.toFixed(2))}`, -6, Math.min(Math.max(y, 6), h - 4));
+        write('y-tick', `${Number(v.toFixed(2))}`, -6, Math.min(Math.max(y, 6), h - 4), [0, y]);
       }
       ctx.stroke();
       ctx.font = '600 11px system-ui, sans-serif';
       ctx.textBaseline = 'top';
       ctx.textAlign = 'left';
-      ctx.fillText('◀ stern', 0, h + 19);
+      write('stern', '◀ stern', 0, h + 19);
       ctx.textAlign = 'right';
-      ctx.fillText('bow ▶', w, h + 19);
+      write('bow', 'bow ▶', w, h + 19);
       ctx.textAlign = 'center';
-      ctx.fillText(`x (${unit}, along the hull)`, w / 2, h + 19);
+      write('x-title', `x (${unit}, along the hull)`, w / 2, h + 19);
       ctx.save();
       ctx.translate(-34, h / 2);
       ctx.rotate(-Math.PI / 2);
       ctx.textBaseline = 'middle';
-      ctx.fillText(`y (${unit})`, 0, 0);
+      write('y-title', `y (${unit})`, 0, 0, [-34, h / 2]);
       ctx.restore();
       ctx.textAlign = 'left';
     }
 
-    // "k mode" beside each UAV, moved to another corner of the marker when it would cover a label
-    // already placed.
+    // "k mode" beside each UAV where it covers neither a UAV nor another label and stays on the
+    // canvas; else the UAV's number alone beside it; else the number further out, joined to its UAV
+    // by a thin line. The ink boxes placed (overlay-canvas CSS px, stroke halo included) are kept in
+    // `labelBoxes` with the markers' boxes in `markerBoxes`: the browser test checks them.
     drawLabels(ctx, states, notes) {
-      ctx.font = '600 11px system-ui, sans-serif';
+      ctx.font = LABEL_FONT;
       ctx.textBaseline = 'middle';
+      ctx.textAlign = 'left';
       ctx.lineJoin = 'round';
       const rad = this.markerRadius();
-      // Labels may use the margins above and to the right of the cells, never leave the canvas.
-      const minX = -PAD.left + 2;
-      const maxX = this.replay.W * this.cellPx + PAD.right - 2;
-      const minY = -PAD.top + 2;
+      // Labels may use the margins above and to the right of the cells (the axes are below and to
+      // the left), never leave the canvas.
+      const minX = 0;
+      const maxX = this.replay.W * this.cellPx + PAD.right - 1;
+      const minY = -PAD.top + 1;
       const maxY = this.replay.H * this.cellPx;
-      // Markers first: a label covers no UAV.
-      const placed = states.map((s) => {
-        const d = rad + 1;
-        return {x: this.cx(s.x) - d, y: this.cy(s.y) - d, w: 2 * d, h: 2 * d};
-      });
+      const d = rad + 2; // half the side of the box a marker keeps free (its outer ring: rad + 1.75)
+      const markers = states.map((s) => ({x: this.cx(s.x) - d, y: this.cy(s.y) - d, w: 2 * d, h: 2 * d}));
+      const placed = markers.slice(); // markers first: a label covers no UAV
       const overlaps = (b) => placed.some((p) => b.x < p.x + p.w && p.x < b.x + b.w && b.y < p.y + p.h && p.y < b.y + b.h);
-      const boxes = (x, y, w, h) => [
-        [x + rad, y - rad - h], [x + rad, y + rad], [x - rad - w, y - rad - h], [x - rad - w, y + rad],
-        [x + rad + 1, y - h / 2], [x - rad - w - 1, y - h / 2], [x - w / 2, y - rad - h - 1],
-        [x - w / 2, y + rad + 1], [x + rad, y - rad - 2 * h], [x - rad - w, y + rad + h],
-      ].map(([bx, by]) => ({x: Math.max(minX, Math.min(maxX - w, bx)), y: Math.max(minY, Math.min(maxY - h, by)), w, h}));
+      const fits = (b) => b.x >= minX && b.x + b.w <= maxX && b.y >= minY && b.y + b.h <= maxY && !overlaps(b);
+      // Ink box of `text` (halo included) at the candidate places around (x, y): beside the marker,
+      // then (ring > 0) further out in 16 directions.
+      const candidates = (text, x, y, ring) => {
+        const m = ctx.measureText(text);
+        const w = m.actualBoundingBoxLeft + m.actualBoundingBoxRight + 2 * LABEL_HALO;
+        const h = m.actualBoundingBoxAscent + m.actualBoundingBoxDescent + 2 * LABEL_HALO;
+        const box = (bx, by) => ({x: bx, y: by, w, h, text, m});
+        if (ring === 0) { // touching the marker's box: right, left, the corners, above, below
+          return [
+            [x + d, y - h / 2], [x - d - w, y - h / 2], [x + d, y - d - h], [x + d, y + d],
+            [x - d - w, y - d - h], [x - d - w, y + d], [x - w / 2, y - d - h], [x - w / 2, y + d],
+            [x + d, y - d - 2 * h], [x - d - w, y + d + h],
+          ].map(([bx, by]) => box(bx, by));
+        }
+        const out = [];
+        for (let a = 0; a < 16; ++a) {
+          const angle = (a * Math.PI) / 8;
+          const cx = x + Math.cos(angle) * (d + ring * (h + 1) + w / 2);
+          const cy = y - Math.sin(angle) * (d + ring * (h + 1) + h / 2);
+          out.push(box(cx - w / 2, cy - h / 2));
+        }
+        return out;
+      };
+      this.labelBoxes = [];
+      this.markerBoxes = markers.map((b) => ({x: b.x + PAD.left, y: b.y + PAD.top, w: b.w, h: b.h}));
       states.forEach((s, k) => {
         const a = notes[k];
         const x = this.cx(s.x);
         const y = this.cy(s.y);
-        const h = 12;
-        // The full label where it fits; else the UAV's number alone; else its first place.
-        let text = a && a.mode ? `${k} ${a.mode}` : `${k}`;
-        let box = boxes(x, y, ctx.measureText(text).width + 2, h).find((b) => !overlaps(b));
-        if (!box) {
-          text = `${k}`;
-          const candidates = boxes(x, y, ctx.measureText(text).width + 2, h);
-          box = candidates.find((b) => !overlaps(b)) || candidates[0];
+        const full = a && a.mode ? `${k} ${a.mode}` : `${k}`;
+        let box = candidates(full, x, y, 0).find(fits) || candidates(`${k}`, x, y, 0).find(fits);
+        let leader = false;
+        for (let ring = 1; !box && ring <= LABEL_RINGS; ++ring) {
+          box = candidates(`${k}`, x, y, ring).find(fits);
+          leader = true;
         }
+        if (!box) return; // no room anywhere near: the UAV table still names it
         placed.push(box);
+        const tx = box.x + LABEL_HALO + box.m.actualBoundingBoxLeft;
+        const ty = box.y + LABEL_HALO + box.m.actualBoundingBoxAscent;
+        if (leader) {
+          const lx = Math.max(box.x, Math.min(box.x + box.w, x));
+          const ly = Math.max(box.y, Math.min(box.y + box.h, y));
+          ctx.strokeStyle = uavColor(k);
+          ctx.lineWidth = 1;
+          ctx.beginPath();
+          ctx.moveTo(x + ((lx - x) * rad) / Math.hypot(lx - x, ly - y), y + ((ly - y) * rad) / Math.hypot(lx - x, ly - y));
+          ctx.lineTo(lx, ly);
+          ctx.stroke();
+        }
         ctx.strokeStyle = 'rgba(255, 255, 255, 0.9)';
-        ctx.lineWidth = 3;
-        ctx.strokeText(text, box.x + 1, box.y + h / 2);
+        ctx.lineWidth = 2 * LABEL_HALO;
+        ctx.strokeText(box.text, tx, ty);
         ctx.fillStyle = uavColor(k);
-        ctx.fillText(text, box.x + 1, box.y + h / 2);
+        ctx.fillText(box.text, tx, ty);
+        this.labelBoxes.push({k, text: box.text, leader, x: box.x + PAD.left, y: box.y + PAD.top, w: box.w, h: box.h});
       });
     }
 

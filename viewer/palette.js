@@ -16,8 +16,8 @@
   // Purples, teals, pinks, olives: no blue (the footprints), no grey (unknown without regions), no
   // orange, green or light red (corrosion, inspection, frontiers); neighbours differ in hue.
   const REGION_COLORS = [
-    [150, 105, 195], [40, 150, 150], [210, 100, 150], [140, 140, 45], [150, 75, 85], [165, 85, 125],
-    [60, 125, 95], [175, 150, 60], [185, 120, 200], [35, 115, 125], [200, 135, 160], [120, 60, 120],
+    [150, 105, 195], [40, 150, 150], [210, 100, 150], [140, 140, 45], [150, 75, 85], [60, 125, 95],
+    [165, 85, 125], [175, 150, 60], [185, 120, 200], [35, 115, 125], [200, 135, 160], [120, 60, 120],
   ];
   const REGION_TINT = 0.62; // share of white mixed into a region's colour for explored cells
   // UAV k is drawn in a dark shade of region k's colour.
@@ -25,6 +25,9 @@
   const FOOTPRINT_FILL = 'rgba(40, 120, 255, 0.22)';
   const TRUTH_MARK = 'rgb(200, 0, 0)'; // undetected corrosion with "show truth"
   const HOVER_MARK = '#ffd400';
+  // No-fly positions and unreachable hull cells, hatched over the cells (map_view.js drawNoFly).
+  const NO_FLY_MARK = '#111';
+  const UNREACHABLE_MARK = [null, '#999', '#444']; // by kind: 1 only z = 2 sees it, 2 none does
   const LAYER_COLORS = {frontiers: 'rgba(255, 105, 97, 0.62)'};
   const EXTRA_LAYER_COLORS = [
     'rgba(150, 80, 255, 0.45)', 'rgba(0, 190, 220, 0.45)', 'rgba(255, 215, 0, 0.55)',
@@ -44,7 +47,7 @@
   }
 
   hv.palette = {
-    COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, M_NAMES, rgb, regionColor, regionTint, uavColor,
-    layerColor,
+    COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, M_NAMES, rgb,
+    regionColor, regionTint, uavColor, layerColor,
   };
 })(window.hullinspectViewer = window.hullinspectViewer || {});

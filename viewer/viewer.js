@@ -4,8 +4,8 @@
 'use strict';
 
 (function (hv) {
-  const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, M_NAMES, rgb, regionColor, regionTint, uavColor,
-    layerColor} = hv.palette;
+  const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, M_NAMES, rgb,
+    regionColor, regionTint, uavColor, layerColor} = hv.palette;
   const $ = (id) => document.getElementById(id);
 
   class Viewer {
@@ -54,7 +54,8 @@
       $('stat-tm').textContent = time(r.T_m);
       $('stat-mission').textContent =
           `${r.complete ? 'complete' : 'INCOMPLETE (time limit)'} after ${r.steps} steps · ` +
-          `${r.hull_cells} hull cells, ${r.corroded_cells} corroded`;
+          `${r.hull_cells} hull cells, ${r.corroded_cells} corroded` +
+          (r.unreachable_cells ? `, ${r.unreachable_cells} unreachable for close-up (not counted in c(t), m(t))` : '');
       $('stat-counters').textContent =
           `moves ${r.moves} · plane changes ${r.plane_changes} · hovers ${r.hovers} · ` +
           `redundant observations ${r.redundant_observations}`;
@@ -81,6 +82,14 @@
       items.push([cell(COLORS.corrosion), 'corrosion detected (M = 2)']);
       items.push([cell(COLORS.inspected), 'corrosion inspected (M = 3)']);
       items.push([swatch(`background:${FOOTPRINT_FILL};border-color:#2878ff`), 'in sight (footprint)']);
+      // Hatching as map_view.js draws it (drawNoFly): no-fly '/', unreachable '\\'.
+      const hatch = (angle, color) => swatch(`background:repeating-linear-gradient(${angle}deg,` +
+                                             `${color} 0 1.5px,transparent 1.5px 5px),${rgb(COLORS.clean)}`, 'hatch');
+      if (this.replay.noFly) items.push([hatch(-45, NO_FLY_MARK), 'no-fly position (no UAV may be there)']);
+      if (this.replay.unreachable) {
+        items.push([hatch(45, UNREACHABLE_MARK[1]), 'unreachable for close-up: only z = 2 sees it']);
+        items.push([hatch(45, UNREACHABLE_MARK[2]), 'unreachable: no footprint sees it']);
+      }
       this.replay.layerNames.forEach((name, i) => {
         items.push([swatch(`background:${layerColor(name, i)}`), `${name} (planner layer)`]);
       });
@@ -342,6 +351,9 @@
         parts.push(`prior C' = ${r.prior[i]}`);
         if (r.owner && r.owner[i] >= 0) parts.push(`region of UAV ${r.owner[i]}`);
       }
+      if (r.noFly && r.noFly[i]) parts.push('no-fly position');
+      if (r.unreachable && r.unreachable[i] === 1) parts.push('unreachable for close-up (only z = 2 sees it)');
+      if (r.unreachable && r.unreachable[i] === 2) parts.push('unreachable (no footprint sees it)');
       const inLayers = r.layerNames.filter((name) => r.layer(name, r.t).includes(i));
       if (inLayers.length) parts.push(`layer ${inLayers.join(', ')}`);
       const fp = r.trace.footprint;

@@ -78,12 +78,14 @@ int run(const ExperimentArgs& a) {
   for (int p = 0; p < static_cast<int>(plan.runs().size()); ++p)
     in_shard += options.shard.contains(p);
   if (a.dry_run) {
+    const auto count = [](const auto& items, std::string_view noun) {
+      return plural(static_cast<long long>(items.size()), noun);
+    };
     std::cout << fmt::format(
-        "{}: {} scenarios × {} s2 × {} fleet sizes × {} algorithms = {} cells; × {} instances = "
-        "{} runs ({} in shard {})\n",
-        config.name, config.scenarios.size(), config.s2.size(), config.uavs.size(),
-        config.algorithms.size(), plan.cells().size(), config.seeds.size(), plan.runs().size(),
-        in_shard, options.shard.text());
+        "{}: {} × {} s2 × {} × {} = {}; × {} = {} ({} in shard {})\n", config.name,
+        count(config.scenarios, "scenario"), config.s2.size(), count(config.uavs, "fleet size"),
+        count(config.algorithms, "algorithm"), count(plan.cells(), "cell"),
+        count(config.seeds, "instance"), count(plan.runs(), "run"), in_shard, options.shard.text());
     return 0;
   }
   if (a.out.empty()) throw ParameterError("out", "name the results directory with --out DIR");

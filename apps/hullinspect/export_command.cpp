@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "export_options.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 
 namespace hullinspect::cli {
@@ -19,8 +20,16 @@ struct ExportCommandArgs {
 
 int export_trace(const ExportCommandArgs& args) {
   const auto request = resolve_export(args.output, "--out");
+  io::OutputSet outputs;
+  outputs.add_input(args.trace_path, "trace");
+  declare_export_dir(outputs, *request);
+  outputs.check();  // the directory, before reading the trace
   const auto trace = io::read_trace(args.trace_path);
-  const auto names = write_export(trace, *request, {args.trace_path});
+  const auto uavs = trace.at("frames").at(0).at("u").size() / 5;  // 5 fields per UAV (checked)
+  declare_export_files(outputs, *request, static_cast<int>(uavs));
+  outputs.check();
+  const auto names = write_export(trace, *request, outputs);
+  outputs.commit();
   std::cout << fmt::format("wrote {} {} file{} to {}: {}\n", names.size(), args.output.format,
                            names.size() == 1 ? "" : "s", request->dir.string(),
                            fmt::join(names, ", "));

@@ -3,12 +3,7 @@
 #include "number_options.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 #include <yaml-cpp/yaml.h>
-
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 
 #include "hullinspect/core/errors.hpp"
 
@@ -100,75 +95,28 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
                                                "LAT,LON,ALT and --heading DEG (or --geo FILE)",
                                                a.format));
   }
-  std::error_code ec;
-  const auto status = fs::status(r.dir, ec);
-  if (fs::exists(status) && !fs::is_directory(status)) {
-    throw InputError(a.dir, 0, fmt::format("{} must be a directory", dir_option));
-  }
-  if (!fs::exists(status)) {
-    const fs::path parent = r.dir.has_parent_path() ? r.dir.parent_path() : fs::path(".");
-    if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0) {
-      throw InputError(a.dir, 0, fmt::format("cannot create the {} directory", name));
-    }
-  } else if (::access(r.dir.c_str(), W_OK) != 0) {
-    throw InputError(a.dir, 0, "the directory is not writable");
-  }
+  r.option = name;
+  r.geo_file = a.geo_file;
   return r;
 }
 
+void declare_export_dir(io::OutputSet& outputs, const ExportRequest& request) {
+  outputs.add_input(request.geo_file, "geo");
+  outputs.add_output_dir(request.dir, request.option);
+}
+
+void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, int uavs) {
+  for (const auto& name : io::export_file_names(request.format, uavs, request.geo.has_value())) {
+    outputs.add_output(request.dir / name, request.option);
+  }
+}
+
 std::vector<std::string> write_export(const nlohmann::json& trace, const ExportRequest& request,
-                                      const std::vector<fs::path>& inputs) {
-  const auto files = io::export_files(io::export_plan(trace), request.format, request.geo);
-  // Refuse before writing anything: an output that is not a regular file, or one of the inputs.
-  for (const auto& f : files) {
-    const fs::path path = request.dir / f.name;
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (fs::exists(status) && !fs::is_regular_file(status)) {
-      throw InputError(path.string(), 0, "exists and is not a regular file");
-    }
-    for (const auto& in : inputs) {
-      if (fs::exists(status) && fs::equivalent(path, in, ec)) {
-        throw InputError(path.string(), 0, "is an input of this command; choose another directory");
-      }
-    }
-  }
-  const bool created = !fs::exists(request.dir);
-  if (created) {
-    std::error_code ec;
-    fs::create_directory(request.dir, ec);
-    if (ec)
-      throw InputError(request.dir.string(), 0, "cannot create the directory: " + ec.message());
-  }
-  std::vector<fs::path> temporaries;
-  auto abandon = [&] {
-    std::error_code ignored;
-    for (const auto& t : temporaries) fs::remove(t, ignored);
-    if (created) fs::remove(request.dir, ignored);
-  };
-  const std::string suffix = fmt::format(".tmp-{}", static_cast<long>(::getpid()));
-  for (const auto& f : files) {
-    const fs::path tmp = request.dir / (f.name + suffix);
-    temporaries.push_back(tmp);
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(f.content.data(), static_cast<std::streamsize>(f.content.size()));
-    out.flush();
-    if (!out) {
-      const std::string why = std::strerror(errno);
-      abandon();
-      throw InputError((request.dir / f.name).string(), 0, "cannot write: " + why);
-    }
-  }
+                                      io::OutputSet& outputs) {
   std::vector<std::string> names;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    std::error_code ec;
-    fs::rename(temporaries[i], request.dir / files[i].name, ec);
-    if (ec) {
-      abandon();
-      throw InputError((request.dir / files[i].name).string(), 0,
-                       "cannot rename into place: " + ec.message());
-    }
-    names.push_back(files[i].name);
+  for (const auto& f : io::export_files(io::export_plan(trace), request.format, request.geo)) {
+    outputs.write(request.dir / f.name, f.content);
+    names.push_back(f.name);
   }
   return names;
 }

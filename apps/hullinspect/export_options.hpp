@@ -1,6 +1,7 @@
 #pragma once
 // Waypoint-export options shared by `export`, `run --export` and `plan --export` (docs/export.md),
-// checked before any mission runs, and the writer that commits every UAV's file together.
+// checked before any mission runs, and the writer of every UAV's file through the command's
+// io::OutputSet.
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -11,12 +12,16 @@
 #include <vector>
 
 #include "hullinspect/io/export.hpp"
+#include "hullinspect/io/output_set.hpp"
 
 namespace hullinspect::cli {
 
+/// The waypoint format when --format is not given (the option, its help and ExportRequest use it).
+inline constexpr io::ExportFormat kDefaultExportFormat = io::ExportFormat::kCsv;
+
 struct ExportArgs {
   std::string dir;
-  std::string format = "csv";
+  std::string format{io::to_string(kDefaultExportFormat)};
   std::string origin;
   std::optional<double> heading;
   std::string geo_file;
@@ -29,18 +34,28 @@ void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_
 /// A checked export request.
 struct ExportRequest {
   std::filesystem::path dir;
-  io::ExportFormat format = io::ExportFormat::kCsv;
+  io::ExportFormat format = kDefaultExportFormat;
   std::optional<io::GeoReference> geo;
+  std::string option;    ///< the directory option without dashes ("out", "export"), for messages
+  std::string geo_file;  ///< --geo FILE, an input of the command; empty without one
 };
 
-/// Checks the options (format, geo-reference, the directory) before anything runs; nullopt when
-/// no directory was given. Throws ParameterError / InputError with one line.
+/// Checks the options (format, geo-reference) before anything runs; nullopt when no directory
+/// was given. Throws ParameterError / InputError with one line.
 std::optional<ExportRequest> resolve_export(const ExportArgs& args, const std::string& dir_option);
 
-/// Writes the export of `trace` into the request's directory: every file is written under a
-/// temporary name first and renamed only when all were written; none may be a directory, a device
-/// or one of `inputs`. Returns the file names written.
+/// Declares the export in the command's OutputSet before anything runs: the directory (created if
+/// missing) and the --geo file as an input (declare_export_dir), then, once the fleet size is
+/// known, the file of each of `uavs` UAVs (declare_export_files, io::export_file_names). The set's
+/// check() then refuses a directory that is a file, an output that is a device, FIFO or directory,
+/// or one that is the same file as an input; its commit() puts every file in place with the
+/// command's other outputs, and a failure before that leaves nothing behind.
+void declare_export_dir(io::OutputSet& outputs, const ExportRequest& request);
+void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, int uavs);
+
+/// Writes the export of `trace` into the declared outputs (committed by the command). Returns the
+/// file names.
 std::vector<std::string> write_export(const nlohmann::json& trace, const ExportRequest& request,
-                                      const std::vector<std::filesystem::path>& inputs);
+                                      io::OutputSet& outputs);
 
 }  // namespace hullinspect::cli

@@ -1,27 +1,41 @@
 #include "mesh_options.hpp"
 
+#include <fmt/format.h>
+
 #include <iostream>
 
 namespace hullinspect::cli {
 
 void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
   const char* group = "Mesh hulls (see docs/hulls.md)";
-  cmd.add_option("--side", a.side, "Side inspected: port or starboard (default starboard)")
+  // The defaults shown are those of MeshImportOptions itself (declared once, in mesh_hull.hpp):
+  // the options are optional here so that a named mesh hull can start from its own.
+  const world::MeshImportOptions d;
+  const auto number = [](double v) { return fmt::format("{}", v); };
+  cmd.add_option("--side", a.side, "Side inspected: port or starboard")
+      ->default_str(std::string(world::to_string(d.side)))
       ->group(group);
-  cmd.add_option("--cell-size", a.cell_size, "Cell side in metres (default 0.5)")->group(group);
-  cmd.add_option("--scale", a.scale, "Uniform scale applied to the file's coordinates (default 1)")
+  cmd.add_option("--cell-size", a.cell_size, "Cell side in metres")
+      ->default_str(number(d.cell_size))
+      ->group(group);
+  cmd.add_option("--scale", a.scale, "Uniform scale applied to the file's coordinates")
+      ->default_str(number(d.scale))
       ->group(group);
   cmd.add_option("--axes", a.axes,
-                 "Ship x,y,z (stern→bow, to port, up) as signed file axes, e.g. x,-z,y (default "
-                 "x,y,z)")
+                 "Ship x,y,z (stern→bow, to port, up) as signed file axes, e.g. x,-z,y")
+      ->default_str(d.axes.to_string())
       ->group(group);
-  cmd.add_option("--waterline", a.waterline,
-                 "Ship-frame Z in metres below which cells are not hull (default: none)")
-      ->group(group)
-      ->type_name("Z");
+  auto* waterline = cmd.add_option("--waterline", a.waterline,
+                                   "Ship-frame Z in metres below which cells are not hull");
+  waterline->group(group)->type_name("Z");
+  if (d.waterline) {
+    waterline->default_str(number(*d.waterline));
+  } else {
+    waterline->description(waterline->get_description() + " (default: none, a hull in dry dock)");
+  }
   cmd.add_option("--min-coverage", a.min_coverage,
-                 "Fraction of a cell that must be surface for it to be hull, in (0, 1] (default "
-                 "0.5)")
+                 "Fraction of a cell that must be surface for it to be hull, in (0, 1]")
+      ->default_str(number(d.min_coverage))
       ->group(group);
   cmd.add_flag("--keep-largest", a.keep_largest,
                "Keep the largest 4-connected part of the projection (else an error)")

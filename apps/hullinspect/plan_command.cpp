@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "export_options.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
@@ -31,11 +32,16 @@ int plan(const PlanArgs& args) {
   io::OutputSet outputs;
   if (args.mission.hull != "default") outputs.add_input(args.mission.hull, "hull");
   outputs.add_output(args.trace_path, "trace");
-  outputs.check();
   const auto export_request = resolve_export(args.output, "--export");
+  if (export_request) declare_export_dir(outputs, *export_request);
+  outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
+  if (export_request) {  // its files are known now: one per UAV
+    declare_export_files(outputs, *export_request, spec.params.uavs);
+    outputs.check();
+  }
   auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
   world::apply(spec.maps, instance);  // the user's --prior, if given
   instance.truth = instance.prior;    // the world as known before take-off
@@ -48,7 +54,7 @@ int plan(const PlanArgs& args) {
   const auto trace = recorder.finish(result);
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   std::vector<std::string> written;
-  if (export_request) written = write_export(trace, *export_request, {args.mission.hull});
+  if (export_request) written = write_export(trace, *export_request, outputs);
   outputs.commit();
   if (args.json) {
     auto j = io::result_json(spec, result);
@@ -60,9 +66,10 @@ int plan(const PlanArgs& args) {
     return t ? fmt::format("{} s", *t) : std::string("—");
   };
   const auto total = result.totals();
-  std::cout << fmt::format("{} with {} UAVs, s1 = {}, s2 = {}, seed {}: planned on the prior{}\n",
-                           spec.algorithm, spec.params.uavs, spec.params.s1, spec.params.s2,
-                           spec.seed, result.complete ? "" : " — INCOMPLETE (time limit reached)");
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: planned on the prior{}\n",
+                           spec.algorithm, plural(spec.params.uavs, "UAV"), spec.params.s1,
+                           spec.params.s2, spec.seed,
+                           result.complete ? "" : " — INCOMPLETE (time limit reached)");
   std::cout << fmt::format(
       "  expected T_c = {}   T_m = {}   ({} prior-corroded of {} hull cells)\n", time(result.t_c),
       time(result.t_m), result.corroded_cells, result.hull_cells);

@@ -98,9 +98,10 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
   const auto& config = m.at("config");
   std::string md = fmt::format("# Experiment report: {}\n\n", config.value("name", "?"));
   if (!config.value("description", "").empty()) md += config.value("description", "") + "\n\n";
-  md += fmt::format("- Results: `{}` — status {}, {} of {} runs, {} instances per cell\n",
-                    a.results, m.value("status", "?"), m.value("runs_done", 0),
-                    m.value("runs_total", 0), config.at("seeds").size());
+  md += fmt::format("- Results: `{}` — status {}, {} of {}, {} per cell\n", a.results,
+                    m.value("status", "?"), m.value("runs_done", 0),
+                    plural(m.value("runs_total", 0), "run"),
+                    plural(static_cast<long long>(config.at("seeds").size()), "instance"));
   md += fmt::format("- Config: `{}` (fingerprint {}); hullinspect {} (git {})\n",
                     m.value("config_source", "?"), m.value("fingerprint", "?"),
                     m.value("version", "?"), m.value("git_revision", "unknown"));

@@ -74,11 +74,16 @@ int run(const RunArgs& args) {
   if (args.mission.hull != "default") outputs.add_input(args.mission.hull, "hull");
   outputs.add_output(args.trace_path, "trace");
   outputs.add_output(args.html_path, "html");
-  outputs.check();
   const auto export_request = resolve_export(args.output, "--export");
+  if (export_request) declare_export_dir(outputs, *export_request);
+  outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
   planners::validate(spec, hull);
+  if (export_request) {  // its files are known now: one per UAV
+    declare_export_files(outputs, *export_request, spec.params.uavs);
+    outputs.check();
+  }
   auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
   world::apply(spec.maps, instance);
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
@@ -96,8 +101,7 @@ int run(const RunArgs& args) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
     if (!args.html_path.empty()) outputs.write(args.html_path, io::viewer_html(trace));
-    // The export commits its own files (all or none); the trace and HTML follow it.
-    if (export_request) write_export(trace, *export_request, {args.mission.hull});
+    if (export_request) write_export(trace, *export_request, outputs);
     outputs.commit();
   }
   if (args.json) {

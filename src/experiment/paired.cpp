@@ -11,6 +11,7 @@
 #include <set>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/random.hpp"
 
@@ -395,7 +396,7 @@ std::string paired_markdown(const PairedAnalysis& an, const std::vector<ClaimChe
     md += fmt::format("### {}\n\n", cell_name(cell));
     for (const auto& r : an.rankings) {
       if (!(r.cell == cell) || r.order.empty()) continue;
-      md += fmt::format("- {} ranking ({} seeds): ", r.metric, r.seeds);
+      md += fmt::format("- {} ranking ({}): ", r.metric, plural(r.seeds, "seed"));
       for (std::size_t i = 0; i < r.order.size(); ++i) {
         md += fmt::format("{}{} (mean rank {:.2f}, {} s)", i == 0 ? "" : " < ",
                           r.order[i].algorithm, r.order[i].mean_rank, seconds(r.order[i].mean));

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 
 namespace hullinspect::experiment {
 
@@ -178,8 +179,8 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
       runs = std::max(runs, r.runs);
     }
     for (const bool mission : {false, true}) {
-      out += fmt::format("### {}{} — {} (s), mean ± std over {} instances\n\n",
-                         is_sweep ? "sweep of " : "", group, mission ? "T_m" : "T_c", runs);
+      out += fmt::format("### {}{} — {} (s), mean ± std over {}\n\n", is_sweep ? "sweep of " : "",
+                         group, mission ? "T_m" : "T_c", plural(runs, "instance"));
       std::vector<std::vector<std::string>> t;
       std::vector<std::string> header;
       if (is_sweep) header.push_back(group);

@@ -70,6 +70,33 @@ double hold_seconds(const ExportWaypoint& w, const ExportWaypoint& previous, dou
   return std::max(0.0, w.grid.duration - flight);
 }
 
+namespace {
+
+std::string uav_file_name(ExportFormat format, int uav) {
+  switch (format) {
+    case ExportFormat::kCsv:
+      return fmt::format("uav{}.csv", uav);
+    case ExportFormat::kQgc:
+      return fmt::format("uav{}.plan", uav);
+    case ExportFormat::kWpl:
+      return fmt::format("uav{}.waypoints", uav);
+    case ExportFormat::kPath:
+      return fmt::format("uav{}.path.yaml", uav);
+  }
+  return {};
+}
+
+constexpr const char* kHullToMap = "hull_to_map.yaml";
+
+}  // namespace
+
+std::vector<std::string> export_file_names(ExportFormat format, int uavs, bool geo_referenced) {
+  std::vector<std::string> names;
+  for (int k = 0; k < uavs; ++k) names.push_back(uav_file_name(format, k));
+  if (format == ExportFormat::kPath && geo_referenced) names.emplace_back(kHullToMap);
+  return names;
+}
+
 std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format,
                                      const std::optional<GeoReference>& geo) {
   if ((format == ExportFormat::kQgc || format == ExportFormat::kWpl) && !geo) {
@@ -79,23 +106,24 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
   }
   std::vector<ExportFile> files;
   for (const auto& u : plan.uavs) {
+    const std::string name = uav_file_name(format, u.uav);
     switch (format) {
       case ExportFormat::kCsv:
-        files.push_back({fmt::format("uav{}.csv", u.uav), detail::write_csv(plan, u, geo)});
+        files.push_back({name, detail::write_csv(plan, u, geo)});
         break;
       case ExportFormat::kQgc:
-        files.push_back({fmt::format("uav{}.plan", u.uav), detail::write_qgc_plan(plan, u, *geo)});
+        files.push_back({name, detail::write_qgc_plan(plan, u, *geo)});
         break;
       case ExportFormat::kWpl:
-        files.push_back({fmt::format("uav{}.waypoints", u.uav), detail::write_wpl(plan, u, *geo)});
+        files.push_back({name, detail::write_wpl(plan, u, *geo)});
         break;
       case ExportFormat::kPath:
-        files.push_back({fmt::format("uav{}.path.yaml", u.uav), detail::write_path_yaml(plan, u)});
+        files.push_back({name, detail::write_path_yaml(plan, u)});
         break;
     }
   }
   if (format == ExportFormat::kPath && geo) {
-    files.push_back({"hull_to_map.yaml", detail::write_hull_to_map_yaml(*geo)});
+    files.push_back({kHullToMap, detail::write_hull_to_map_yaml(*geo)});
   }
   return files;
 }

@@ -86,6 +86,16 @@ OutputSet::~OutputSet() {
   for (const auto& out : outputs_) {
     if (!out.temporary.empty()) ::unlink(out.temporary.c_str());
   }
+  // Directories write() created for a command that failed: innermost first (empty by now).
+  for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it) ::rmdir(it->c_str());
+}
+
+const OutputSet::Entry* OutputSet::declared_parent_dir(const fs::path& path) const {
+  const fs::path parent = parent_of(path);
+  for (const auto& out : outputs_) {
+    if (out.directory && resolved(out.path) == resolved(parent)) return &out;
+  }
+  return nullptr;
 }
 
 void OutputSet::add_input(const fs::path& path, std::string option) {
@@ -123,7 +133,13 @@ void OutputSet::check() const {
       throw ParameterError(
           out.option, fmt::format("cannot use '{}': {}", shown(out.path), std::strerror(errno)));
     }
-    if (!out.directory || ::stat(out.path.c_str(), &st) != 0) check_parent(out.path, out.option, out.directory);
+    // A file in a declared output directory that does not exist yet: that directory's own check
+    // (with its parents) covers where it goes.
+    const bool in_new_dir = !out.directory && ::stat(parent_of(out.path).c_str(), &st) != 0 &&
+                            declared_parent_dir(out.path) != nullptr;
+    if (!in_new_dir && (!out.directory || ::stat(out.path.c_str(), &st) != 0)) {
+      check_parent(out.path, out.option, out.directory);
+    }
     for (const Entry& in : inputs_) {
       if (same_file(out.path, in.path)) {
         throw ParameterError(out.option,
@@ -149,6 +165,22 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
   }
   if (entry == nullptr)
     throw LogicError(fmt::format("output '{}' was not declared", path.string()));
+  if (struct stat st{};
+      ::stat(parent_of(path).c_str(), &st) != 0 && declared_parent_dir(path) != nullptr) {
+    // The declared output directory and its missing parents, outermost first.
+    std::vector<fs::path> missing;
+    for (fs::path d = parent_of(path); ::stat(d.c_str(), &st) != 0 && d.has_relative_path();
+         d = d.parent_path()) {
+      missing.push_back(d);
+    }
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+      if (::mkdir(it->c_str(), 0777) != 0 && errno != EEXIST) {
+        throw InputError(it->string(), 0,
+                         fmt::format("cannot create the directory: {}", std::strerror(errno)));
+      }
+      created_dirs_.push_back(*it);
+    }
+  }
   if (entry->temporary.empty()) {
     entry->temporary =
         parent_of(path) / fmt::format(".{}.tmp-{}-{}", path.filename().string(),
@@ -184,6 +216,7 @@ void OutputSet::commit() {
     }
     out.temporary.clear();
   }
+  created_dirs_.clear();  // they hold the outputs now
 }
 
 }  // namespace hullinspect::io

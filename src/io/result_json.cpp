@@ -31,11 +31,13 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   j["tsp_max_seconds"] = r.planner.tsp_max_seconds;
   j["tsp_unproven"] = r.planner.tsp_unproven;
   j["tsp_fallbacks"] = r.planner.tsp_fallbacks;
+  j["partition_fallbacks"] = r.planner.partition_fallbacks;
   j["replans"] = r.planner.replans;
   j["assignments"] = r.planner.assignments;
   j["failed_uavs"] = r.failed_uavs;
   json failed_at = json::array();
-  for (const auto& u : r.uavs) failed_at.push_back(u.failed_at >= 0 ? json(u.failed_at) : json(nullptr));
+  for (const auto& u : r.uavs)
+    failed_at.push_back(u.failed_at >= 0 ? json(u.failed_at) : json(nullptr));
   j["failed_at"] = std::move(failed_at);
   return j;
 }

@@ -77,6 +77,28 @@ ShipFrameSpec ship_frame_spec(const nlohmann::json& trace) {
              p != trace.at("parameters").end() && p->is_number()) {
     s.theta_deg = p->get<double>();
   }
+  // A hull imported from a mesh (docs/trace-format.md): the waypoints stand off from its surface.
+  if (auto f = trace.find("ship_frame"); f != trace.end()) {
+    s.x0 = f->at("origin").at(0).get<double>();
+    s.z0 = f->at("origin").at(1).get<double>();
+    s.ys = f->at("side_plane_y").get<double>();
+    s.side = f->at("side") == "port" ? HullSide::kPort : HullSide::kStarboard;
+    const int width = grid.at("width").get<int>();
+    const int height = grid.at("height").get<int>();
+    s.depth = grid::Grid<double>(width, height, 0.0);
+    s.normal = grid::Grid<std::array<double, 3>>(width, height);
+    const auto& depth = f->at("depth");
+    const auto& normal = f->at("normal");
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const auto ux = static_cast<std::size_t>(x);
+        const auto uy = static_cast<std::size_t>(y);
+        s.depth(x, y) = depth.at(uy).at(ux).get<double>();
+        const auto& n = normal.at(uy).at(ux);
+        s.normal(x, y) = {n.at(0).get<double>(), n.at(1).get<double>(), n.at(2).get<double>()};
+      }
+    }
+  }
   return s;
 }
 

@@ -187,6 +187,54 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
 }  // namespace
 
+// The optional `ship_frame` of a hull imported from a mesh: origin [X0, Z0], side_plane_y, side,
+// and `height` rows of `width` depths (metres ≥ 0) and unit normals [nx, ny, nz].
+void check_ship_frame(const TraceChecker& check, const json& frame, int width, int height) {
+  check.object(frame, "ship_frame");
+  const auto finite = [&](const json& v, const std::string& where) {
+    if (!v.is_number() || !std::isfinite(v.get<double>())) check.fail(where, "expected metres");
+    return v.get<double>();
+  };
+  const auto& origin = check.array(check.field(frame, "ship_frame", "origin"), "ship_frame.origin");
+  if (origin.size() != 2) check.fail("ship_frame.origin", "expected [X0, Z0] in metres");
+  finite(origin[0], "ship_frame.origin[0]");
+  finite(origin[1], "ship_frame.origin[1]");
+  finite(check.field(frame, "ship_frame", "side_plane_y"), "ship_frame.side_plane_y");
+  const auto& side = check.field(frame, "ship_frame", "side");
+  if (side != "port" && side != "starboard") {
+    check.fail("ship_frame.side", "expected \"port\" or \"starboard\"");
+  }
+  // Checks `name` as rows of cells and each cell with `cell`.
+  const auto grid_rows = [&](const char* name, auto cell) {
+    const std::string where = std::string("ship_frame.") + name;
+    const auto& rows = check.array(check.field(frame, "ship_frame", name), where);
+    if (rows.size() != static_cast<std::size_t>(height)) {
+      check.fail(where,
+                 fmt::format("expected {} rows (the grid height), got {}", height, rows.size()));
+    }
+    for (std::size_t y = 0; y < rows.size(); ++y) {
+      const auto at = fmt::format("{}[{}]", where, y);
+      const auto& row = check.array(rows[y], at);
+      if (row.size() != static_cast<std::size_t>(width)) {
+        check.fail(at,
+                   fmt::format("expected {} values (the grid width), got {}", width, row.size()));
+      }
+      for (std::size_t x = 0; x < row.size(); ++x) cell(row[x], fmt::format("{}[{}]", at, x));
+    }
+  };
+  grid_rows("depth", [&](const json& v, const std::string& at) {
+    if (finite(v, at) < 0) check.fail(at, "expected metres >= 0");
+  });
+  grid_rows("normal", [&](const json& v, const std::string& at) {
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
+        !v[2].is_number()) {
+      check.fail(at, "expected a unit vector [nx, ny, nz]");
+    }
+    const double length = std::hypot(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+    if (!(std::abs(length - 1.0) < 1e-3)) check.fail(at, "expected a unit vector [nx, ny, nz]");
+  });
+}
+
 void validate_trace(const json& trace, const std::string& source) {
   const TraceChecker check(source);
   check.object(trace, "trace");
@@ -235,6 +283,7 @@ void validate_trace(const json& trace, const std::string& source) {
     check.rows(partition, "partition", width, height, ".0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ");
   }
 
+  if (trace.contains("ship_frame")) check_ship_frame(check, trace["ship_frame"], width, height);
   if (trace.contains("no_fly")) check.rows(trace["no_fly"], "no_fly", width, height, ".#");
   if (trace.contains("unreachable")) {
     check.rows(trace["unreachable"], "unreachable", width, height, ".dx");

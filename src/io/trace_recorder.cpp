@@ -1,6 +1,7 @@
 #include "hullinspect/io/trace_recorder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include "hullinspect/io/trace_reader.hpp"
@@ -23,6 +24,36 @@ json rows(const grid::Grid<T>& m, F symbol) {
     out.push_back(std::move(row));
   }
   return out;
+}
+
+// Metres and unit vectors to the precision of a hull JSON (0.1 mm, 1e-6): enough to place a
+// waypoint to the export's 0.1 mm, and short enough for a 50 000-cell hull.
+// (Divided, not multiplied, by the scale: 0.09 prints as 0.09, not 0.09000000000000001.)
+double rounded(double v, double scale) {
+  return std::round(v * scale) / scale;
+}
+
+// Where a hull imported from a mesh sits in the ship frame (docs/trace-format.md `ship_frame`):
+// the grid's origin, the side plane, and per cell the surface's depth and outward normal.
+json ship_frame(const world::HullGeometry& g) {
+  json depth = json::array();
+  json normal = json::array();
+  for (int y = 0; y < g.height(); ++y) {
+    json d = json::array();
+    json n = json::array();
+    for (int x = 0; x < g.width(); ++x) {
+      d.push_back(rounded(g.depth(x, y), 1e4));
+      const world::Normal v = g.normal(x, y);
+      n.push_back({rounded(v.x, 1e6), rounded(v.y, 1e6), rounded(v.z, 1e6)});
+    }
+    depth.push_back(std::move(d));
+    normal.push_back(std::move(n));
+  }
+  return {{"origin", {g.x0, g.z0}},
+          {"side_plane_y", g.side_plane_y},
+          {"side", world::to_string(g.side)},
+          {"depth", std::move(depth)},
+          {"normal", std::move(normal)}};
 }
 
 char matrix_symbol(std::int8_t v) {
@@ -124,6 +155,9 @@ void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner&
   trace_["footprint"] = {sim.params().s1, sim.params().s2};
   // The aperture places the planes in metres (stand-off ζ_z, docs/export.md).
   trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};
+  // A hull from a mesh: its surface stands out from the side plane by depth(x, y), which exports
+  // add to the stand-off (docs/model.md "Frames and exports"). Absent for a plain mask.
+  if (const auto* g = hull.geometry()) trace_["ship_frame"] = ship_frame(*g);
   trace_["truth"] = rows(instance_.truth, matrix_symbol);
   trace_["prior"] = rows(instance_.prior, matrix_symbol);
   if (const auto* p = planner.partition()) {

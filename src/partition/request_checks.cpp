@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 
 namespace hullinspect::partition::detail {
 
@@ -60,7 +61,10 @@ void check_weights(const world::HullMask& hull, const grid::Grid<double>& weight
 std::vector<double> checked_shares(std::span<const double> shares, int n) {
   if (shares.empty()) return std::vector<double>(static_cast<std::size_t>(n), 1.0);
   if (static_cast<int>(shares.size()) != n) {
-    throw ParameterError("shares", fmt::format("gives {} shares for {} UAVs", shares.size(), n));
+    throw ParameterError(
+        "shares",
+        fmt::format("gives {} for {}", plural(static_cast<long long>(shares.size()), "share"),
+                    plural(n, "UAV")));
   }
   for (std::size_t k = 0; k < shares.size(); ++k) {
     if (!(shares[k] > 0) || !std::isfinite(shares[k])) {

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "hullinspect/partition/fallback.hpp"
 #include "hullinspect/sim/lower_bound.hpp"
 
 namespace hullinspect::planners {
@@ -14,13 +15,15 @@ double seconds_since(Clock::time_point t0) {
 }  // namespace
 
 std::shared_ptr<const partition::Partition> DirectPartitionSource::get(
-    std::string_view partitioner, const OptionMap& options, const partition::PartitionRequest& request) {
-  auto p = partition::make_partitioner(partitioner, options);
-  return std::make_shared<const partition::Partition>(p->partition(request));
+    std::string_view partitioner, const OptionMap& options,
+    const partition::PartitionRequest& request) {
+  return std::make_shared<const partition::Partition>(
+      partition::partition_with_fallback(partitioner, options, request));
 }
 
 void add_no_fly(partition::PartitionRequest& request, const PlannerContext& context) {
-  if (context.reach != nullptr && context.reach->any_no_fly) request.allowed = context.reach->flyable;
+  if (context.reach != nullptr && context.reach->any_no_fly)
+    request.allowed = context.reach->flyable;
 }
 
 grid::DistanceService& distances_of(const PlannerContext& context,
@@ -40,7 +43,8 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
     const auto times =
         world::failure_times(options.failures, params.uavs, instance.seed, params.time_limit);
     for (int k = 0; k < params.uavs; ++k) {
-      if (times[static_cast<std::size_t>(k)] >= 0) sim.fail_uav_at(k, times[static_cast<std::size_t>(k)]);
+      if (times[static_cast<std::size_t>(k)] >= 0)
+        sim.fail_uav_at(k, times[static_cast<std::size_t>(k)]);
     }
   }
 
@@ -84,6 +88,9 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
   result.bound_t_m = bound.t_m;
   result.planner_seconds = planner_seconds;
   result.planner = planner.stats();
+  if (const partition::Partition* p = planner.partition(); p != nullptr && !p->fallback.empty()) {
+    result.planner.partition_fallbacks = 1;
+  }
   return result;
 }
 

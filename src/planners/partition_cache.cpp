@@ -6,6 +6,8 @@
 #include <cstring>
 #include <functional>
 
+#include "hullinspect/partition/fallback.hpp"
+
 namespace hullinspect::planners {
 
 namespace {
@@ -34,7 +36,8 @@ std::string request_key(std::string_view partitioner, const OptionMap& options,
 }  // namespace
 
 std::shared_ptr<const partition::Partition> PartitionCache::get(
-    std::string_view partitioner, const OptionMap& options, const partition::PartitionRequest& request) {
+    std::string_view partitioner, const OptionMap& options,
+    const partition::PartitionRequest& request) {
   const std::string key = request_key(partitioner, options, request);
   std::shared_ptr<Entry> entry;
   {
@@ -45,8 +48,8 @@ std::shared_ptr<const partition::Partition> PartitionCache::get(
   }
   std::call_once(entry->once, [&] {
     const auto t0 = std::chrono::steady_clock::now();
-    auto p = partition::make_partitioner(partitioner, options);
-    entry->partition = std::make_shared<const partition::Partition>(p->partition(request));
+    entry->partition = std::make_shared<const partition::Partition>(
+        partition::partition_with_fallback(partitioner, options, request));
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::lock_guard lock(mutex_);
     ++computed_;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
 
 namespace hullinspect::world {
@@ -85,7 +86,9 @@ void validate(const MissionParams& p, const HullMask& hull) {
   }
   if (!p.starts.empty() && static_cast<int>(p.starts.size()) != p.uavs) {
     throw ParameterError("starts",
-                         fmt::format("gives {} start cells for {} UAVs", p.starts.size(), p.uavs));
+                         fmt::format("gives {} for {}",
+                                     plural(static_cast<long long>(p.starts.size()), "start cell"),
+                                     plural(p.uavs, "UAV")));
   }
   for (const auto& c : p.starts) {
     if (!hull.mask().contains(c)) {
@@ -102,9 +105,9 @@ void validate(const MissionParams& p, const HullMask& hull) {
     int allowed_hull = 0;
     for (int i : hull.cells()) allowed_hull += (*p.no_fly)[i] == 0 ? 1 : 0;
     if (allowed_hull < p.uavs) {
-      throw ParameterError("no-fly", fmt::format("leaves {} hull cells outside no-fly zones for {} "
-                                                 "UAVs to start on",
-                                                 allowed_hull, p.uavs));
+      throw ParameterError("no-fly",
+                           fmt::format("leaves {} outside no-fly zones for {} to start on",
+                                       plural(allowed_hull, "hull cell"), plural(p.uavs, "UAV")));
     }
     for (const auto& c : start_cells(p, hull)) {
       if ((*p.no_fly)[c] != 0) {

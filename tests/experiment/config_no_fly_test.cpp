@@ -52,8 +52,9 @@ TEST(NoFlyConfig, BoxesInMetresBecomeCells) {
 TEST(NoFlyConfig, MaskFileIsReadBesideTheConfig) {
   ScratchDir dir("mask");
   std::ofstream(dir / "zones.txt") << "....\n.X..\n";
-  const auto c = parse_config("hull: rectangle\ngrid: {width: 4, height: 2}\nno-fly: {file: zones.txt}\n",
-                              "nf.yaml", dir.path());
+  const auto c =
+      parse_config("hull: rectangle\ngrid: {width: 4, height: 2}\nno-fly: {file: zones.txt}\n",
+                   "nf.yaml", dir.path());
   ASSERT_TRUE(c.no_fly);
   EXPECT_EQ((*c.no_fly)(1, 0), 1);
   EXPECT_EQ((*c.no_fly)(1, 1), 0);
@@ -82,7 +83,7 @@ TEST(NoFlyConfig, BadInputNamesFileLineAndKey) {
             "nf.yaml:4: no-fly.boxes-m: expected a list of [x0, y0, x1, y1] boxes in metres");
   // Zones over every hull cell leave no start: found when the plan's cells are validated.
   EXPECT_EQ(error_of(grid + "uavs: 1\nno-fly:\n  boxes-m: [[0, 0, 10, 5]]\n"),
-            "nf.yaml:5: no-fly: leaves 0 hull cells outside no-fly zones for 1 UAVs to start on");
+            "nf.yaml:5: no-fly: leaves 0 hull cells outside no-fly zones for 1 UAV to start on");
 }
 
 }  // namespace

@@ -77,14 +77,22 @@ INSTANTIATE_TEST_SUITE_P(
             {"--geo", "/dev/null", "--origin", "1,2,3"},
             "hullinspect: --geo: give either --geo FILE or --origin and --heading, not both"}));
 
-TEST_F(ExportCli, RefusesAnOutDirectoryThatIsAFileOrMissingItsParent) {
+// The export's outputs go through io::OutputSet like every command's (docs/reliability.md): the
+// directory is created with its missing parents, and a directory that is a file, an output that
+// is not a regular file, or one that is the trace itself is refused before anything is written.
+TEST_F(ExportCli, RefusesAnOutDirectoryThatIsAFile) {
   auto r = run_cli({"export", trace_, "--out", trace_});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + trace_ + ": --out must be a directory\n");
-  r = run_cli({"export", trace_, "--out", dir_ + "/no/such/dir"});
+  EXPECT_EQ(r.err,
+            "hullinspect: --out: '" + trace_ + "' is a regular file, expected a directory\n");
+  r = run_cli({"export", trace_, "--out", trace_ + "/sub"});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + dir_ + "/no/such/dir: cannot create the out directory\n");
-  EXPECT_FALSE(fs::exists(dir_ + "/no"));
+  EXPECT_EQ(r.err, "hullinspect: --out: cannot use '" + trace_ + "/sub': Not a directory\n");
+  // A missing parent is created, as for every output directory.
+  r = run_cli({"export", trace_, "--out", dir_ + "/new/deep/dir"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ + "/new/deep/dir/uav1.csv"));
+  fs::remove_all(dir_ + "/new");
 }
 
 TEST_F(ExportCli, RefusesAnOutputThatIsADirectoryWritingNothing) {
@@ -92,7 +100,9 @@ TEST_F(ExportCli, RefusesAnOutputThatIsADirectoryWritingNothing) {
   fs::create_directories(out + "/uav1.csv");
   const auto r = run_cli({"export", trace_, "--out", out});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + out + "/uav1.csv: exists and is not a regular file\n");
+  EXPECT_EQ(r.err, "hullinspect: --out: '" + out +
+                       "/uav1.csv' is a directory; an output must be a regular file or a new "
+                       "path\n");
   EXPECT_FALSE(fs::exists(out + "/uav0.csv"));  // all or nothing
   fs::remove_all(out);
 }
@@ -103,8 +113,8 @@ TEST_F(ExportCli, RefusesToOverwriteTheTrace) {
   fs::create_hard_link(trace_, out + "/uav0.csv");
   const auto r = run_cli({"export", trace_, "--out", out});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + out +
-                       "/uav0.csv: is an input of this command; choose another directory\n");
+  EXPECT_EQ(r.err, "hullinspect: --out: '" + out + "/uav0.csv' is the same file as the trace '" +
+                       trace_ + "'; it would be overwritten\n");
   EXPECT_NO_THROW(io::read_trace(trace_));  // untouched
   EXPECT_FALSE(fs::exists(out + "/uav1.csv"));
   fs::remove_all(out);

@@ -97,6 +97,43 @@ TEST(OutputSet, RefusesAMissingDirectoryBeforeAnythingIsWritten) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
+// Files in a declared output directory that does not exist yet (an export's uav<k> files):
+// write() creates the directory with its missing parents; abandoned, the set removes them again.
+TEST(OutputSet, CreatesADeclaredDirectoryForItsFilesAndRemovesItWhenAbandoned) {
+  const fs::path dir = testing::make_temp_dir("output_set_new_dir");
+  const fs::path out = dir / "plans" / "today";
+  const auto declare = [&](OutputSet& set) {
+    set.add_output_dir(out, "export");
+    set.add_output(out / "uav0.csv", "export");
+    set.add_output(out / "uav1.csv", "export");
+  };
+  {
+    OutputSet set;
+    declare(set);
+    EXPECT_EQ(problem(set), "ok");
+    EXPECT_FALSE(fs::exists(dir / "plans"));  // nothing made by check()
+    set.write(out / "uav0.csv", "0");
+    EXPECT_TRUE(fs::is_directory(out));
+    EXPECT_FALSE(fs::exists(out / "uav0.csv"));  // only its temporary
+  }                                              // abandoned
+  EXPECT_TRUE(fs::is_empty(dir));
+  OutputSet set;
+  declare(set);
+  set.check();
+  set.write(out / "uav0.csv", "0");
+  set.write(out / "uav1.csv", "1");
+  set.commit();
+  EXPECT_EQ(read_file(out / "uav0.csv"), "0");
+  EXPECT_EQ(read_file(out / "uav1.csv"), "1");
+  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator{}), 2);
+  // A file outside any declared directory still needs its directory to exist.
+  OutputSet other;
+  other.add_output(dir / "elsewhere" / "x.csv", "trace");
+  EXPECT_EQ(problem(other), "trace: cannot write '" + (dir / "elsewhere" / "x.csv").string() +
+                                "': directory '" + (dir / "elsewhere").string() +
+                                "' does not exist");
+}
+
 TEST(OutputSet, CommitsTogetherAndLeavesNothingWhenAbandoned) {
   const fs::path dir = testing::make_temp_dir("output_set_commit");
   put(dir / "a.txt", "old a");

@@ -229,5 +229,51 @@ TEST(TraceReader, AcceptsOptionalAnnotationsAndLayers) {
   EXPECT_EQ(problem_after([](json& t) { t["version"] = 1; }), "(accepted)");
 }
 
+// A `ship_frame` (a hull from a mesh, docs/trace-format.md) on the 230 × 30 default-hull trace:
+// 1 m of depth everywhere, normals toward starboard.
+void add_ship_frame(json& t) {
+  const json depth_row(std::vector<double>(230, 1.0));
+  const json normal_row(std::vector<json>(230, json{0, -1, 0}));
+  t["ship_frame"] = {{"origin", {-2.5, 0.25}},
+                     {"side_plane_y", -4.0},
+                     {"side", "starboard"},
+                     {"depth", std::vector<json>(30, depth_row)},
+                     {"normal", std::vector<json>(30, normal_row)}};
+}
+
+TEST(TraceReader, ChecksTheShipFrameOfAMeshHull) {
+  EXPECT_EQ(problem_after(add_ship_frame), "(accepted)");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_ship_frame(t);
+              t["ship_frame"]["side"] = "aft";
+            }),
+            "mission.json: ship_frame.side: expected \"port\" or \"starboard\"");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_ship_frame(t);
+              t["ship_frame"].erase("origin");
+            }),
+            "mission.json: ship_frame.origin: missing");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_ship_frame(t);
+              t["ship_frame"]["depth"].erase(0);
+            }),
+            "mission.json: ship_frame.depth: expected 30 rows (the grid height), got 29");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_ship_frame(t);
+              t["ship_frame"]["depth"][3][7] = -0.5;
+            }),
+            "mission.json: ship_frame.depth[3][7]: expected metres >= 0");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_ship_frame(t);
+              t["ship_frame"]["normal"][2][9] = {0, 2, 0};
+            }),
+            "mission.json: ship_frame.normal[2][9]: expected a unit vector [nx, ny, nz]");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_ship_frame(t);
+              t["ship_frame"]["normal"][2].erase(0);
+            }),
+            "mission.json: ship_frame.normal[2]: expected 230 values (the grid width), got 229");
+}
+
 }  // namespace
 }  // namespace hullinspect::io

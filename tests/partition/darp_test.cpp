@@ -311,7 +311,7 @@ TEST(Darp, BadRequestsAreRejected) {
   shares.shares = {1, 0};
   expect_error(shares, "shares: share of UAV 1 is 0; shares must be finite and > 0");
   shares.shares = {1};
-  expect_error(shares, "shares: gives 1 shares for 2 UAVs");
+  expect_error(shares, "shares: gives 1 share for 2 UAVs");
   auto weights = request_for(hull, {{40, 15}, {90, 15}});
   weights.weights = grid::Grid<double>(3, 3, 1.0);
   expect_error(weights, "weights: grid is 3 × 3 but the hull is 230 × 30");

@@ -181,7 +181,7 @@ TEST_F(PartitionCli, BadInputIsOneLineAndExitTwo) {
       {"--uavs 2 --start 40:15 --start 1,1", "hullinspect: --start: expects X,Y (got '40:15')"},
       {"--uavs 2 --start 400,15 --start 1,1",
        "hullinspect: --start: start cell (400, 15) is outside the 230 × 30 grid"},
-      {"--uavs 2 --start 40,15", "hullinspect: --start: gives 1 start cells for 2 UAVs"},
+      {"--uavs 2 --start 40,15", "hullinspect: --start: gives 1 start cell for 2 UAVs"},
       {"--uavs 2 -O cc=5",
        "hullinspect: --option: darp.cc: must be a number in [0, 0.5] (got '5')"},
       {"--uavs 2 -O cc", "hullinspect: --option: expects KEY=VALUE (got 'cc')"},

@@ -64,7 +64,7 @@ TEST(MissionParams, ValidationNamesFieldAndRange) {
   EXPECT_EQ(with([](auto& q) { q.theta_deg = 0; }), "theta: must be in (0, 180) degrees, exclusive (got 0)");
   EXPECT_EQ(with([](auto& q) { q.start_z = 3; }), "start_z: must be 1 or 2 (got 3)");
   EXPECT_EQ(with([](auto& q) { q.time_limit = 0; }), "time_limit: must be at least 1 step (got 0)");
-  EXPECT_EQ(with([](auto& q) { q.starts = {{1, 1}}; }), "starts: gives 1 start cells for 4 UAVs");
+  EXPECT_EQ(with([](auto& q) { q.starts = {{1, 1}}; }), "starts: gives 1 start cell for 4 UAVs");
   EXPECT_EQ(with([](auto& q) {
               q.uavs = 1;
               q.starts = {{300, 1}};

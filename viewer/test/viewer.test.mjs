@@ -25,8 +25,8 @@ const CORROSION = [245, 140, 40];
 const PRIOR_ONLY = [255, 196, 128];
 const INSPECTED = [46, 160, 67];
 const REGIONS = [
-  [150, 105, 195], [40, 150, 150], [210, 100, 150], [140, 140, 45], [150, 75, 85], [165, 85, 125],
-  [60, 125, 95], [175, 150, 60], [185, 120, 200], [35, 115, 125], [200, 135, 160], [120, 60, 120],
+  [150, 105, 195], [40, 150, 150], [210, 100, 150], [140, 140, 45], [150, 75, 85], [60, 125, 95],
+  [165, 85, 125], [175, 150, 60], [185, 120, 200], [35, 115, 125], [200, 135, 160], [120, 60, 120],
 ];
 const tint = (c) => c.map((v) => Math.round(v * (1 - 0.62) + 255 * 0.62));
 
@@ -163,13 +163,16 @@ async function pixelOfCell(page, x, y) {
   }, {x, y});
 }
 
-// A few cells of every state present at time t, plus random ones.
-function sampleCells(trace, map, seed) {
+// A few cells of every state present at time t (corrosion known only from the prior apart from
+// detected corrosion), plus random ones.
+const stateOf = (map, seen, i) => (map[i] === 2 && !seen[i] ? 'prior-only' : map[i]);
+function sampleCells(trace, map, seen, seed) {
   const W = trace.grid.width;
   const byState = new Map();
   map.forEach((v, i) => {
-    if (!byState.has(v)) byState.set(v, []);
-    byState.get(v).push(i);
+    const s = stateOf(map, seen, i);
+    if (!byState.has(s)) byState.set(s, []);
+    byState.get(s).push(i);
   });
   const random = prng(seed);
   const cells = [];
@@ -188,8 +191,8 @@ async function checkCellsAt(page, trace, t) {
   const {map} = mapAt(trace, t);
   const seen = seenBy(trace, t);
   const states = new Set();
-  for (const {i, x, y} of sampleCells(trace, map, t + 1)) {
-    states.add(map[i]);
+  for (const {i, x, y} of sampleCells(trace, map, seen, t + 1)) {
+    states.add(stateOf(map, seen, i));
     assert.deepEqual(await pixelOfCell(page, x, y), expectedColor(trace, map, i, seen),
                      `cell (${x}, ${y}) at t = ${t}, M = ${map[i]}`);
   }
@@ -232,8 +235,10 @@ test('seeking draws the map of that time (forwards, backwards, across keyframes)
   for (const t of [37, 120, last, 5, 0, Math.floor(last / 2)]) {
     for (const s of await checkCellsAt(page, trace, t)) states.add(s);
   }
-  // Every cell state was among the checked pixels.
-  assert.deepEqual([...states].sort(), [-1, 0, 1, 2, 3]);
+  // Every cell state was among the checked pixels, corrosion known only from the prior (drawn
+  // lighter) apart from detected corrosion.
+  assert.deepEqual([...states].sort(), [-1, 0, 1, 2, 3, 'prior-only']);
+  assert.ok(Math.hypot(...PRIOR_ONLY.map((v, i) => v - CORROSION[i])) > 80);
   await page.close();
 });
 
@@ -468,4 +473,418 @@ test('screenshots of 4 and 8 UAVs match the references', async () => {
   await settle(eight);
   await compareWithReference(eight, 'viewer-8-part-tsp');
   await eight.close();
+});
+
+// Label geometry at every checked time of a mission: the map's label ink boxes (map_view.js keeps
+// them, stroke halo included) against each other, against every UAV marker (placed here from the
+// trace's positions) and against the part of the page where the map is visible.
+async function labelProblems(page, trace, times) {
+  return page.evaluate(({frames, times}) => {
+    const v = window.hullViewer.viewer;
+    const r = v.replay;
+    const grid = document.getElementById('grid-canvas').getBoundingClientRect();
+    const overlay = document.getElementById('overlay-canvas').getBoundingClientRect();
+    const scroll = document.getElementById('map-scroll').getBoundingClientRect();
+    const cell = grid.width / r.W;
+    // A marker's ink: its disc, the ring around a UAV at z = 1 (radius + 1.25, 1 px wide).
+    const rad = v.map.markerRadius() + 1.75;
+    const problems = [];
+    let labels = 0;
+    let leaders = 0;
+    const intersect = (a, b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+    for (const t of times) {
+      v.replay.seek(t);
+      v.draw();
+      // Page coordinates.
+      const boxes = v.map.labelBoxes.map((b) => ({...b, x: b.x + overlay.left, y: b.y + overlay.top}));
+      const u = frames[t].u;
+      const markers = [];
+      for (let o = 0; o < u.length; o += 5) {
+        markers.push({x: grid.left + (u[o] + 0.5) * cell - rad, y: grid.top + (r.H - 1 - u[o + 1] + 0.5) * cell - rad,
+                      w: 2 * rad, h: 2 * rad});
+      }
+      if (boxes.length !== markers.length) problems.push(`t = ${t}: ${boxes.length} labels for ${markers.length} UAVs`);
+      labels += boxes.length;
+      boxes.forEach((b, i) => {
+        if (b.leader) ++leaders;
+        if (!b.text.startsWith(`${b.k}`)) problems.push(`t = ${t}: label '${b.text}' of UAV ${b.k}`);
+        const where = `t = ${t}: label '${b.text}' [${b.x.toFixed(1)}, ${b.y.toFixed(1)}, ${b.w.toFixed(1)} × ${b.h.toFixed(1)}]`;
+        for (const [name, area] of [['the overlay canvas', overlay], ['the visible map', scroll]]) {
+          if (b.x < area.left - 1e-6 || b.y < area.top - 1e-6 || b.x + b.w > area.right + 1e-6 ||
+              b.y + b.h > area.bottom + 1e-6) problems.push(`${where} is clipped by ${name}`);
+        }
+        for (let j = 0; j < i; ++j) {
+          if (intersect(b, boxes[j])) problems.push(`${where} overlaps label '${boxes[j].text}'`);
+        }
+        markers.forEach((m, k) => { if (intersect(b, m)) problems.push(`${where} covers UAV ${k}`); });
+      });
+    }
+    return {problems, labels, leaders};
+  }, {frames: trace.frames, times});
+}
+
+test('mode labels of 4, 8 and 16 UAVs neither overlap nor are clipped, top row included', async (t) => {
+  for (const [uavs, algorithm] of [[4, 'coop-frontier'], [8, 'part-tsp'], [16, 'coop-frontier'], [16, 'lawnmower']]) {
+    const name = `labels-${uavs}-${algorithm}`;
+    const tracePath = path.join(OUT, `${name}.json`);
+    const html = path.join(OUT, `${name}.html`);
+    const run = cli(['run', '-a', algorithm, '--uavs', String(uavs), '--seed', '5', '--trace', tracePath,
+                     '--html', html]);
+    assert.equal(run.status, 0, run.stderr);
+    const trace = JSON.parse(fs.readFileSync(tracePath, 'utf8'));
+    const {page} = await open(html);
+    await page.setViewportSize({width: 1400, height: 900});
+    await settle(page);
+    const last = trace.frames.length - 1;
+    const stride = Math.max(1, Math.floor(last / 300));
+    const times = [];
+    for (let time = 0; time <= last; time += stride) times.push(time);
+    // The top row is where labels were clipped: every time a UAV is on it is checked.
+    const top = trace.grid.height - 1;
+    trace.frames.forEach((f, time) => {
+      for (let o = 1; o < f.u.length; o += 5) if (f.u[o] === top && time % stride) times.push(time);
+    });
+    const {problems, labels, leaders} = await labelProblems(page, trace, times);
+    t.diagnostic(`${name}: ${times.length} times, ${labels} labels, ${leaders} placed away from their UAV`);
+    measurements[`${name}_labels_with_leader_share`] = Number((leaders / labels).toFixed(4));
+    assert.deepEqual(problems.slice(0, 10), [], `${problems.length} problems`);
+    await page.close();
+  }
+});
+
+// The obstacles preset's no-fly zones (presets/obstacles.yaml: four mooring lines and a gangway,
+// there in metres) as cell boxes, corners inclusive.
+const OBSTACLE_BOXES = [[20, 10, 20, 29], [40, 10, 40, 29], [190, 10, 190, 29], [210, 10, 210, 29],
+  [110, 18, 117, 29]];
+const NO_FLY_MARK = [17, 17, 17];
+const UNREACHABLE_MARK = [null, [153, 153, 153], [68, 68, 68]]; // 'd' only z = 2 sees it, 'x' none
+
+async function obstaclesMission() {
+  const tracePath = path.join(OUT, 'obstacles.json');
+  const html = path.join(OUT, 'obstacles.html');
+  const run = cli(['run', '-a', 'part-tsp', '--uavs', '8', '--seed', '3', '--scenario', 'imperfect',
+                   ...OBSTACLE_BOXES.flatMap((b) => ['--no-fly-box', b.join(',')]), '--trace', tracePath,
+                   '--html', html]);
+  assert.equal(run.status, 0, run.stderr);
+  return {trace: JSON.parse(fs.readFileSync(tracePath, 'utf8')), html};
+}
+
+test('no-fly zones are hatched exactly at their positions, unreachable cells marked, both in the legend', async () => {
+  const {trace, html} = await obstaclesMission();
+  const {width: W, height: H} = trace.grid;
+  // The trace's no-fly layer is the boxes given.
+  const noFly = new Uint8Array(W * H);
+  for (const [x0, y0, x1, y1] of OBSTACLE_BOXES) {
+    for (let y = y0; y <= y1; ++y) for (let x = x0; x <= x1; ++x) noFly[y * W + x] = 1;
+  }
+  const unreachable = new Uint8Array(W * H);
+  for (let y = 0; y < H; ++y) {
+    for (let x = 0; x < W; ++x) {
+      assert.equal(trace.no_fly[y][x] === '#', noFly[y * W + x] === 1, `no_fly at (${x}, ${y})`);
+      unreachable[y * W + x] = {d: 1, x: 2}[trace.unreachable[y][x]] || 0;
+    }
+  }
+  const kinds = [0, 0, 0];
+  unreachable.forEach((u) => ++kinds[u]);
+  assert.ok(kinds[1] > 0 && kinds[2] > 0, `unreachable cells of both kinds: ${kinds}`);
+  assert.equal(kinds[1] + kinds[2], trace.result.unreachable_cells);
+
+  const {page} = await open(html);
+  await page.setViewportSize({width: 1400, height: 900});
+  // Everything but the cells, the hatching and the UAVs off; 16 px cells so one hatch line
+  // crosses known pixels: '/' (no-fly) the pixel (4, 11) of a cell, '\' (unreachable) (4, 4).
+  await page.evaluate(() => {
+    for (const name of ['footprints', 'paths', 'plans', 'targets', 'layers', 'labels']) {
+      const box = document.getElementById(`show-${name}`);
+      box.checked = false;
+      box.dispatchEvent(new Event('change'));
+    }
+  });
+  await page.selectOption('#zoom', '16');
+  await page.evaluate(() => window.hullViewer.seek(100));
+  await settle(page);
+  const wrong = await page.evaluate(({noFly, unreachable, NO_FLY_MARK, UNREACHABLE_MARK}) => {
+    const v = window.hullViewer.viewer;
+    const r = v.replay;
+    const cp = v.map.cellPx;
+    const pad = window.hullinspectViewer.MapView.padding;
+    const canvas = document.getElementById('overlay-canvas');
+    const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+    const at = (px, py) => {
+      const o = (py * canvas.width + px) * 4;
+      return [data[o], data[o + 1], data[o + 2], data[o + 3]];
+    };
+    const near = (p, c) => p[3] > 160 && c.every((v, i) => Math.abs(p[i] - v) <= 40);
+    const rad = v.map.markerRadius() + 3;
+    const uavs = [];
+    for (let k = 0; k < r.uavCount; ++k) uavs.push(r.uavState(r.t, k));
+    const out = [];
+    let checked = 0;
+    for (let y = 0; y < r.H; ++y) {
+      for (let x = 0; x < r.W; ++x) {
+        const ox = Math.round(pad.left + x * cp);
+        const oy = Math.round(pad.top + (r.H - 1 - y) * cp);
+        // Pixels a UAV marker may cover are not checked.
+        if (uavs.some((s) => Math.hypot((s.x - x) * cp, (s.y - y) * cp) < rad + cp)) continue;
+        ++checked;
+        const i = y * r.W + x;
+        const slash = at(ox + 4, oy + 11);
+        const backslash = at(ox + 4, oy + 4);
+        if (noFly[i] ? !near(slash, NO_FLY_MARK) : slash[3] !== 0) out.push(`(${x}, ${y}) '/' ${slash}`);
+        const u = unreachable[i];
+        const want = u ? (noFly[i] ? NO_FLY_MARK : UNREACHABLE_MARK[u]) : null;
+        if (want ? !near(backslash, want) : backslash[3] !== 0) out.push(`(${x}, ${y}) '\\' ${backslash}`);
+      }
+    }
+    return {out, checked};
+  }, {noFly: [...noFly], unreachable: [...unreachable], NO_FLY_MARK, UNREACHABLE_MARK});
+  assert.ok(wrong.checked > 0.95 * W * H, `${wrong.checked} cells checked`);
+  assert.deepEqual(wrong.out.slice(0, 10), [], `${wrong.out.length} cells hatched wrongly`);
+
+  const legend = await page.$$eval('#legend li', (items) => items.map((li) => li.textContent));
+  for (const text of ['no-fly position (no UAV may be there)', 'unreachable for close-up: only z = 2 sees it',
+    'unreachable: no footprint sees it']) {
+    assert.ok(legend.includes(text), `legend lacks '${text}': ${legend.join(' | ')}`);
+  }
+  assert.match(await page.textContent('#stat-mission'),
+               new RegExp(`, ${trace.result.unreachable_cells} unreachable for close-up`));
+  // The hover line names them.
+  const box = await page.locator('#grid-canvas').boundingBox();
+  const hover = async (x, y) => {
+    await page.mouse.move(box.x + (x + 0.5) * 16, box.y + (H - 1 - y + 0.5) * 16);
+    await settle(page);
+    return page.textContent('#hover-info');
+  };
+  await page.evaluate(() => document.getElementById('map-scroll').scrollTo(0, 0));
+  assert.match(await hover(20, 15), /no-fly position/);
+  const d = unreachable.indexOf(1);
+  await page.evaluate((x) => document.getElementById('map-scroll').scrollTo(Math.max(0, x * 16 - 400), 0), d % W);
+  const scrolled = await page.evaluate(() => document.getElementById('map-scroll').scrollLeft);
+  await page.mouse.move(box.x - scrolled + (d % W + 0.5) * 16, box.y + (H - 1 - Math.floor(d / W) + 0.5) * 16);
+  await settle(page);
+  assert.match(await page.textContent('#hover-info'), /unreachable for close-up \(only z = 2 sees it\)/);
+  await page.close();
+
+  // Without no-fly zones there is no hatching entry.
+  const plain = await open(mission.html);
+  const plainLegend = await plain.page.$$eval('#legend li', (items) => items.map((li) => li.textContent).join(' | '));
+  assert.doesNotMatch(plainLegend, /no-fly|unreachable/);
+  await plain.page.close();
+});
+
+test('screenshot with no-fly zones matches the reference', async () => {
+  const args = ['-a', 'part-tsp', '--uavs', '8', '--seed', '3', '--scenario', 'imperfect',
+                ...OBSTACLE_BOXES.flatMap((b) => ['--no-fly-box', b.join(',')])];
+  const page = await missionPage('viewer-8-obstacles', args, 100);
+  await compareWithReference(page, 'viewer-8-obstacles');
+  await page.close();
+});
+
+test('region colours and tints are neither the footprint blue nor the unknown grey', async () => {
+  const {page} = await open(mission.html);
+  const fill = await page.evaluate(() => window.hullinspectViewer.palette.FOOTPRINT_FILL);
+  await page.close();
+  const [fr, fg, fb, fa] = fill.match(/[\d.]+/g).map(Number);
+  const overUnknown = UNKNOWN.map((v, i) => Math.round(v * (1 - fa) + [fr, fg, fb][i] * fa));
+  const hue = ([r, g, b]) => {
+    const max = Math.max(r, g, b);
+    const c = max - Math.min(r, g, b);
+    const h = max === r ? ((g - b) / c) % 6 : max === g ? (b - r) / c + 2 : (r - g) / c + 4;
+    return (h * 60 + 360) % 360;
+  };
+  const distance = (a, b) => Math.hypot(...a.map((v, i) => v - b[i]));
+  const footprintHue = hue([fr, fg, fb]);
+  // Neighbouring regions (k and k + 1 usually share a boundary) differ clearly; with 8 UAVs no two
+  // regions are alike.
+  REGIONS.forEach((c, k) => {
+    for (const shown of [c, tint(c)]) {
+      assert.ok(distance(shown, UNKNOWN) >= 50, `region ${k} ${shown} near the unknown grey`);
+      assert.ok(distance(shown, overUnknown) >= 50, `region ${k} ${shown} near a footprint over unknown`);
+      assert.ok(Math.abs(hue(shown) - footprintHue) >= 30, `region ${k} ${shown}: hue ${hue(shown)} is the footprint's`);
+    }
+    assert.ok(Math.max(...c) - Math.min(...c) >= 60, `region ${k} ${c} is greyish`);
+    if (k > 0) assert.ok(distance(c, REGIONS[k - 1]) >= 60, `regions ${k - 1} and ${k} alike`);
+    if (k < 8) {
+      for (let j = 0; j < k; ++j) assert.ok(distance(c, REGIONS[j]) >= 35, `regions ${j} and ${k} alike`);
+    }
+  });
+});
+
+test('the axes are in metres along the hull, stern on the left and bow on the right', async () => {
+  const {page} = await open(mission.html);
+  const {texts, cellPx} = await page.evaluate(() => ({texts: window.hullViewer.viewer.map.axisTexts,
+    cellPx: window.hullViewer.viewer.map.cellPx}));
+  await page.close();
+  const {width: W, height: H, cell_size_m: m} = mission.trace.grid;
+  assert.ok(m > 0);
+  const one = (kind) => {
+    const found = texts.filter((t) => t.kind === kind);
+    assert.equal(found.length, 1, kind);
+    return found[0];
+  };
+  assert.equal(one('x-title').text, 'x (m, along the hull)');
+  assert.equal(one('y-title').text, 'y (m)');
+  assert.equal(one('stern').text, '◀ stern');
+  assert.equal(one('bow').text, 'bow ▶');
+  assert.ok(one('stern').x < one('x-title').x && one('x-title').x < one('bow').x);
+  // Ticks: at their value in metres, from 0 to the hull's length (height), evenly spaced.
+  for (const [kind, extent, position] of [['x-tick', W, (v) => 46 + (v / m) * cellPx],
+    ['y-tick', H, (v) => 18 + (H - v / m) * cellPx]]) {
+    const ticks = texts.filter((t) => t.kind === kind);
+    assert.ok(ticks.length >= 3, kind);
+    const values = ticks.map((t) => Number(t.text));
+    assert.equal(values[0], 0);
+    const step = values[1] - values[0];
+    values.forEach((v, i) => assert.ok(Math.abs(v - i * step) < 1e-9, `${kind} ${values}`));
+    assert.ok(values.at(-1) <= extent * m + 1e-9 && values.at(-1) + step > extent * m, `${kind} ${values}`);
+    ticks.forEach((t, i) => {
+      const at = kind === 'x-tick' ? t.x : t.y;
+      assert.ok(Math.abs(at - position(values[i])) < 0.01, `${kind} ${t.text} at ${at}`);
+    });
+  }
+});
+
+// Overlay pixel (RGBA) at CSS px (x, y) of the overlay canvas.
+async function overlayPixels(page, points) {
+  return page.evaluate((points) => {
+    const c = document.getElementById('overlay-canvas');
+    const dpr = c.width / c.getBoundingClientRect().width;
+    const ctx = c.getContext('2d');
+    return points.map(([x, y]) => Array.from(ctx.getImageData(Math.floor(x * dpr), Math.floor(y * dpr), 1, 1).data));
+  }, points);
+}
+
+async function onlyCellsAndUavs(page) {
+  await page.evaluate(() => {
+    for (const name of ['footprints', 'paths', 'plans', 'targets', 'layers', 'labels']) {
+      const box = document.getElementById(`show-${name}`);
+      box.checked = false;
+      box.dispatchEvent(new Event('change'));
+    }
+  });
+}
+
+test('"show truth" marks exactly the corroded cells not detected yet, and only when on', async () => {
+  // An imperfect prior: corroded cells the prior misses stay unknown (M = 0) until detected.
+  const tracePath = path.join(OUT, 'truth.json');
+  const html = path.join(OUT, 'truth.html');
+  const run = cli(['run', '--uavs', '8', '--seed', '3', '--scenario', 'imperfect', '--trace', tracePath,
+                   '--html', html]);
+  assert.equal(run.status, 0, run.stderr);
+  const trace = JSON.parse(fs.readFileSync(tracePath, 'utf8'));
+  const {page} = await open(html);
+  await onlyCellsAndUavs(page);
+  const {width: W, height: H} = trace.grid;
+  const t = 40;
+  await page.evaluate((t) => window.hullViewer.seek(t), t);
+  await settle(page);
+  const {map} = mapAt(trace, t);
+  const {cellPx: cp, rad} = await page.evaluate(() => ({cellPx: window.hullViewer.viewer.map.cellPx,
+    rad: window.hullViewer.viewer.map.markerRadius()}));
+  const uavs = [];
+  for (let o = 0; o < trace.frames[t].u.length; o += 5) uavs.push(trace.frames[t].u.slice(o, o + 2));
+  const cells = [];
+  const kinds = {undetected: 0, detected: 0, clean: 0};
+  for (let y = 0; y < H; ++y) {
+    for (let x = 0; x < W; ++x) {
+      const i = y * W + x;
+      if (map[i] < 0 || uavs.some(([ux, uy]) => Math.hypot(ux - x, uy - y) * cp < rad + 2 * cp)) continue;
+      const truth = Number(trace.truth[y][x]);
+      const kind = truth === 1 ? (map[i] === 0 ? 'undetected' : 'detected') : 'clean';
+      if (kinds[kind] >= 60) continue;
+      ++kinds[kind];
+      cells.push({kind, x, y, at: [46 + (x + 0.5) * cp, 18 + (H - 1 - y + 0.5) * cp]});
+    }
+  }
+  assert.ok(kinds.undetected > 10 && kinds.detected > 10, JSON.stringify(kinds));
+  const off = await overlayPixels(page, cells.map((c) => c.at));
+  off.forEach((p, j) => assert.equal(p[3], 0, `truth off: (${cells[j].x}, ${cells[j].y}) ${p}`));
+  await page.check('#show-truth');
+  await settle(page);
+  const on = await overlayPixels(page, cells.map((c) => c.at));
+  on.forEach((p, j) => {
+    const want = cells[j].kind === 'undetected' ? [200, 0, 0, 255] : [0, 0, 0, 0];
+    assert.deepEqual(p, want, `truth on: ${cells[j].kind} (${cells[j].x}, ${cells[j].y})`);
+  });
+  const legend = await page.$$eval('#legend li', (items) => items.map((li) => li.textContent));
+  assert.ok(legend.includes('corrosion not detected yet (truth; planners do not see it)'));
+  await page.close();
+});
+
+test('the hovered cell is marked in yellow, unlike targets (white with a UAV colour)', async () => {
+  const html = path.join(OUT, 'viewer-8-part-tsp.html');
+  if (!fs.existsSync(html)) {
+    assert.equal(cli(['run', '-a', 'part-tsp', '--uavs', '8', '--seed', '3', '--scenario', 'imperfect',
+                      '--html', html]).status, 0);
+  }
+  const {page} = await open(html);
+  await page.selectOption('#zoom', '16');
+  await page.evaluate(() => window.hullViewer.seek(90));
+  await settle(page);
+  const info = await page.evaluate(() => {
+    const v = window.hullViewer.viewer;
+    const r = v.replay;
+    const targets = [];
+    for (let k = 0; k < r.uavCount; ++k) {
+      const a = r.annotation(k, r.t);
+      if (a && a.target) targets.push({k, x: a.target[0], y: a.target[1], colour: window.hullinspectViewer.palette.uavColor(k)});
+    }
+    return {targets, H: r.H, hover: window.hullinspectViewer.palette.HOVER_MARK};
+  });
+  assert.ok(info.targets.length > 0, 'a UAV with a target at t = 90');
+  const cp = 16;
+  const {H} = info;
+  const topLeft = (x, y) => [46 + x * cp, 18 + (H - 1 - y) * cp];
+  const target = info.targets[0];
+  const [tx, ty] = topLeft(target.x, target.y);
+  const uavRgb = target.colour.match(/\d+/g).map(Number);
+  // The target: white inside, the UAV's colour on its border (2 px line around the padded cell).
+  const [inside, border] = await overlayPixels(page, [[tx + cp / 2, ty + cp / 2], [tx - 2.4 - 0.5, ty + cp / 2]]);
+  assert.deepEqual(inside, [255, 255, 255, 255]);
+  assert.deepEqual(border.slice(0, 3), uavRgb);
+  // Hover a cell away from the targets: a yellow ring 2.5 px outside the cell.
+  const hx = (target.x + 20) % 200;
+  const hy = 10;
+  const box = await page.locator('#grid-canvas').boundingBox();
+  await page.evaluate((x) => document.getElementById('map-scroll').scrollTo(Math.max(0, x * 16 - 400), 0), hx);
+  const scrolled = await page.evaluate(() => document.getElementById('map-scroll').scrollLeft);
+  await page.mouse.move(box.x - scrolled + (hx + 0.5) * cp, box.y + (H - 1 - hy + 0.5) * cp);
+  await settle(page);
+  assert.match(await page.textContent('#hover-info'), new RegExp(`^cell \\(${hx}, ${hy}\\)`));
+  const [hxPx, hyPx] = topLeft(hx, hy);
+  const [ring] = await overlayPixels(page, [[hxPx - 2.5, hyPx + cp / 2]]);
+  const yellow = [255, 212, 0];
+  assert.equal(info.hover, '#ffd400');
+  assert.ok(ring.slice(0, 3).every((v, i) => Math.abs(v - yellow[i]) <= 10), `hover ring ${ring}`);
+  const distance = (a, b) => Math.hypot(...a.map((v, i) => v - b[i]));
+  assert.ok(distance(yellow, [255, 255, 255]) > 150);
+  for (let k = 0; k < 8; ++k) {
+    const c = await page.evaluate((k) => window.hullinspectViewer.palette.uavColor(k), k);
+    assert.ok(distance(yellow, c.match(/\d+/g).map(Number)) > 150, `UAV ${k} colour ${c} near the hover yellow`);
+  }
+  await page.close();
+});
+
+test('16 UAVs packed in the top-left corner: every label placed, none overlapping or clipped', async (t) => {
+  // The 16-UAV lawnmower trace of the test above with its first frame moved: a 4 × 4 block of
+  // UAVs two cells apart in the corner of the top row, where labels have least room.
+  const trace = JSON.parse(fs.readFileSync(path.join(OUT, 'labels-16-lawnmower.json'), 'utf8'));
+  const H = trace.grid.height;
+  const u = trace.frames[0].u;
+  for (let k = 0; k < 16; ++k) {
+    u[5 * k] = 2 * (k % 4);
+    u[5 * k + 1] = H - 1 - 2 * Math.floor(k / 4);
+  }
+  const tracePath = path.join(OUT, 'labels-packed.json');
+  const html = path.join(OUT, 'labels-packed.html');
+  fs.writeFileSync(tracePath, JSON.stringify(trace));
+  execFileSync(CLI, ['view', tracePath, '--out', html]);
+  const {page} = await open(html);
+  await page.setViewportSize({width: 1400, height: 900});
+  await settle(page);
+  const {problems, labels, leaders} = await labelProblems(page, trace, [0]);
+  t.diagnostic(`packed: ${labels} labels, ${leaders} placed away from their UAV`);
+  assert.deepEqual(problems.slice(0, 10), [], `${problems.length} problems`);
+  assert.ok(leaders > 0, 'the crowding needs labels further out');
+  await page.close();
 });

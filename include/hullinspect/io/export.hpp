@@ -49,6 +49,10 @@ struct ExportFile {
   std::string content;
 };
 
+/// The names of the files export_files writes for `uavs` UAVs, known before any mission runs (so
+/// a command can check its outputs first).
+std::vector<std::string> export_file_names(ExportFormat format, int uavs, bool geo_referenced);
+
 /// The files of one format: `uav<k>.csv`, `uav<k>.plan` (qgc), `uav<k>.waypoints` (wpl),
 /// `uav<k>.path.yaml` (path; plus `hull_to_map.yaml` when geo-referenced). qgc and wpl need a
 /// geo-reference: without one this throws ParameterError("origin").

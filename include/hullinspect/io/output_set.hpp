@@ -9,6 +9,9 @@
 //   2. write() puts each output's content into a temporary beside it;
 //   3. commit() renames all temporaries into place together at the end; if the command fails
 //      before commit(), the destructor removes the temporaries and nothing was touched.
+// Files inside a declared output directory (add_output_dir, then add_output of DIR/NAME) may be
+// declared before the directory exists: write() creates it (with its missing parents) and, if the
+// command fails before commit(), the destructor removes what it created.
 // Standard output is checked by main() (a failed write or flush is an error, e.g. > /dev/full).
 
 #include <filesystem>
@@ -46,8 +49,11 @@ class OutputSet {
     bool directory = false;
     std::filesystem::path temporary;  // empty until written
   };
+  // The declared output directory that is `path`'s parent, or nullptr.
+  const Entry* declared_parent_dir(const std::filesystem::path& path) const;
   std::vector<Entry> inputs_;
   std::vector<Entry> outputs_;
+  std::vector<std::filesystem::path> created_dirs_;  // by write(), outermost first
 };
 
 /// True if `a` and `b` name the same existing file (same device and inode), or, when either does

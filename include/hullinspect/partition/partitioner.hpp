@@ -36,9 +36,12 @@ struct Partition {
   std::vector<double> desired_weight;  ///< what each UAV should get
   int iterations = 0;                  ///< partitioner iterations (0 for one-shot partitioners)
   bool converged = true;               ///< met its balance goal with connected regions
-  double tolerance = 0;                ///< balance tolerance reached (weight units; cells if unweighted)
+  double tolerance = 0;  ///< balance tolerance reached (weight units; cells if unweighted)
   double seconds = 0;
-  std::vector<std::string> warnings;   ///< e.g. "returned the best connected partition found"
+  std::vector<std::string> warnings;  ///< e.g. "returned the best connected partition found"
+  /// Set by partition_with_fallback() (partition/fallback.hpp): the partitioner that produced this
+  /// partition after the requested one (DARP) did not converge; empty otherwise.
+  std::string fallback;
 };
 
 class Partitioner {

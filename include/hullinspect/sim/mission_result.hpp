@@ -10,7 +10,7 @@ struct UavCounters {
   int moves = 0;
   int hovers = 0;
   int plane_changes = 0;
-  int steps_z1 = 0;       ///< steps ending on plane 1 (not in transit)
+  int steps_z1 = 0;  ///< steps ending on plane 1 (not in transit)
   int steps_z2 = 0;
   int steps_transit = 0;  ///< steps spent changing plane
   int failed_at = -1;     ///< step at whose start the UAV failed; −1 never
@@ -25,21 +25,24 @@ struct PlannerStats {
   long long tsp_fallbacks = 0;  ///< TSP solves whose solver gave up on its method (a defect)
   long long replans = 0;
   long long assignments = 0;  ///< frontier assignments (Coop-Frontier)
+  /// 1 when the mission's partition came from the fallback partitioner because DARP did not
+  /// converge (partition/fallback.hpp, docs/model.md); 0 otherwise.
+  long long partition_fallbacks = 0;
 };
 
 struct MissionResult {
-  bool complete = false;   ///< m reached 100 before the time limit
-  std::optional<int> t_c;  ///< first t with c(t) = 100; empty if never reached
-  std::optional<int> t_m;  ///< first t with m(t) = 100; empty when incomplete
-  int steps = 0;           ///< last simulated t
-  int failed_uavs = 0;     ///< UAVs that failed during the mission
+  bool complete = false;      ///< m reached 100 before the time limit
+  std::optional<int> t_c;     ///< first t with c(t) = 100; empty if never reached
+  std::optional<int> t_m;     ///< first t with m(t) = 100; empty when incomplete
+  int steps = 0;              ///< last simulated t
+  int failed_uavs = 0;        ///< UAVs that failed during the mission
   bool stopped_idle = false;  ///< ended incomplete because no working UAV had anything left to do
-  int bound_t_c = 0;  ///< analytic lower bound on T_c for this instance (docs/beyond.md)
-  int bound_t_m = 0;  ///< analytic lower bound on T_m
+  int bound_t_c = 0;          ///< analytic lower bound on T_c for this instance (docs/beyond.md)
+  int bound_t_m = 0;          ///< analytic lower bound on T_m
   /// Hull cells counted in m(t): those that can reach their final state (all of them without
   /// no-fly zones; docs/model.md).
   int hull_cells = 0;
-  int corroded_cells = 0;  ///< #{C = 1} counted in c(t): those a z = 1 footprint can reach
+  int corroded_cells = 0;        ///< #{C = 1} counted in c(t): those a z = 1 footprint can reach
   int unreachable_cells = 0;     ///< hull cells no allowed z = 1 footprint contains
   int unreachable_z2_cells = 0;  ///< hull cells no allowed z = 2 footprint contains
   /// Per t = 0..steps: corroded cells inspected and hull cells known (M ∈ {1, 3}).
@@ -49,7 +52,7 @@ struct MissionResult {
   long long observations = 0;            ///< hull-cell readings
   long long redundant_observations = 0;  ///< readings that changed nothing and detected nothing
   long long detections = 0;
-  double planner_seconds = 0;            ///< CPU time in the planner (start + decide)
+  double planner_seconds = 0;  ///< CPU time in the planner (start + decide)
   PlannerStats planner;
 
   double c_percent(int t) const;  ///< c(t), 100 when there is no corrosion

@@ -1,0 +1,43 @@
+#include "hullinspect/partition/fallback.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace hullinspect::partition {
+
+namespace {
+
+// The largest |weight − desired| over the regions.
+double largest_imbalance(const Partition& p) {
+  double worst = 0;
+  for (std::size_t k = 0; k < p.region_weight.size() && k < p.desired_weight.size(); ++k) {
+    worst = std::max(worst, std::abs(p.region_weight[k] - p.desired_weight[k]));
+  }
+  return worst;
+}
+
+}  // namespace
+
+Partition partition_with_fallback(std::string_view name, const OptionMap& options,
+                                  const PartitionRequest& request) {
+  Partition first = make_partitioner(name, options)->partition(request);
+  if (first.converged || name != "darp") return first;
+  Partition second = make_partitioner(kFallbackPartitioner)->partition(request);
+  const double darp_worst = largest_imbalance(first);
+  const double transfer_worst = largest_imbalance(second);
+  if (!second.converged && transfer_worst >= darp_worst) return first;
+  std::vector<std::string> warnings = std::move(first.warnings);
+  warnings.push_back(fmt::format(
+      "darp did not converge (largest imbalance {:g}); the mission uses the {} partitioner's "
+      "partition ({}, largest imbalance {:g})",
+      darp_worst, kFallbackPartitioner, second.converged ? "converged" : "not converged",
+      transfer_worst));
+  for (auto& w : second.warnings) warnings.push_back(std::move(w));
+  second.warnings = std::move(warnings);
+  second.seconds += first.seconds;
+  second.fallback = std::string(kFallbackPartitioner);
+  return second;
+}
+
+}  // namespace hullinspect::partition

@@ -1,0 +1,46 @@
+// Counted nouns in what the commands print agree with their counts ("1 UAV", "2 UAVs").
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/cli_runner.hpp"
+
+namespace hullinspect::testing {
+namespace {
+
+TEST(Wording, OneUavIsSingular) {
+  const auto plan = run_cli({"plan", "--uavs", "1", "--seed", "1"});
+  ASSERT_EQ(plan.status, 0) << plan.err;
+  EXPECT_EQ(plan.out.substr(0, plan.out.find('\n')),
+            "lawnmower with 1 UAV, s1 = 5, s2 = 7, seed 1: planned on the prior");
+  const auto starts = run_cli({"run", "--uavs", "1", "--start", "1,1", "--start", "2,2"});
+  EXPECT_EQ(starts.status, 2);
+  EXPECT_EQ(starts.err, "hullinspect: --start: gives 2 start cells for 1 UAV\n");
+}
+
+TEST(Wording, ExperimentDryRunCountsOneOfEach) {
+  const auto dir = make_temp_dir("wording");
+  const std::string config = dir + "/one.yaml";
+  std::ofstream(config) << "name: one\nhull: hull.txt\nscenarios: [perfect]\ns2: 7\nuavs: 1\n"
+                           "algorithms: [lawnmower]\ninstances: 1\n";
+  std::ofstream(dir + "/hull.txt") << "XXXXXXXXXXXX\nXXXXXXXXXXXX\nXXXXXXXXXXXX\n";
+  const auto one = run_cli({"experiment", "--dry-run", "--config", config});
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_EQ(one.out,
+            "one: 1 scenario × 1 s2 × 1 fleet size × 1 algorithm = 1 cell; × 1 instance = 1 run "
+            "(1 in shard 1/1)\n");
+  std::ofstream(config) << "name: two\nhull: hull.txt\nscenarios: [perfect, imperfect]\n"
+                           "s2: [7, 9]\nuavs: [1, 2]\nalgorithms: [lawnmower, part-tsp]\n"
+                           "instances: 2\n";
+  const auto two = run_cli({"experiment", "--dry-run", "--config", config});
+  ASSERT_EQ(two.status, 0) << two.err;
+  EXPECT_EQ(two.out,
+            "two: 2 scenarios × 2 s2 × 2 fleet sizes × 2 algorithms = 16 cells; × 2 instances = "
+            "32 runs (32 in shard 1/1)\n");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace hullinspect::testing
