@@ -6,6 +6,7 @@
 //   build/release/bench/transfer_bench --benchmark_filter=Default --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true   (one command line)
 //   build/release/bench/transfer_bench --benchmark_filter=RandomStarts
+//   build/release/bench/transfer_bench --benchmark_filter=FreshStarts
 //
 // Counters: rounds (transfer rounds), converged (1/0, or how many of 10 start sets), imbalance
 // (largest |cells − desired| of the last partition, or the worst over the start sets).
@@ -68,14 +69,17 @@ void BM_TransferDefaultStarts(benchmark::State& state) {
   state.counters["imbalance"] = imbalance(result);
 }
 
-// Args: hull, n. One iteration partitions all 10 start sets; the time is for the ten.
-void BM_TransferRandomStarts(benchmark::State& state) {
+// Args: hull, n. One iteration partitions all 10 start sets; the time is for the ten. Seeds
+// 1000 n + draw (RandomStarts) or, for start sets nothing was tuned on, 7919 n + 777777 + draw
+// (FreshStarts).
+void random_start_sets(benchmark::State& state, std::uint64_t multiplier, std::uint64_t offset) {
   const auto& hull = hull_by_index(static_cast<int>(state.range(0)));
   const int n = static_cast<int>(state.range(1));
   std::vector<partition::PartitionRequest> requests(10);
   for (std::size_t draw = 0; draw < requests.size(); ++draw) {
     requests[draw].hull = &hull;
-    requests[draw].starts = random_starts(hull, n, 1000 * static_cast<std::uint64_t>(n) + draw);
+    requests[draw].starts =
+        random_starts(hull, n, multiplier * static_cast<std::uint64_t>(n) + offset + draw);
   }
   const partition::TransferPartitioner transfer;
   int converged = 0;
@@ -96,6 +100,12 @@ void BM_TransferRandomStarts(benchmark::State& state) {
   state.counters["imbalance"] = worst;
   state.counters["slowest_s"] = slowest;
 }
+void BM_TransferRandomStarts(benchmark::State& state) {
+  random_start_sets(state, 1000, 0);
+}
+void BM_TransferFreshStarts(benchmark::State& state) {
+  random_start_sets(state, 7919, 777777);
+}
 
 void all_sizes(benchmark::internal::Benchmark* b) {
   for (int hull = 0; hull <= 1; ++hull) {
@@ -105,6 +115,7 @@ void all_sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_TransferDefaultStarts)->Apply(all_sizes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TransferRandomStarts)->Apply(all_sizes)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_TransferFreshStarts)->Apply(all_sizes)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

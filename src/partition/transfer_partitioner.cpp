@@ -146,7 +146,7 @@ class TransferWorkspace {
   // `from`'s start and its removal keeps `from` 4-connected (local test below); it joins `to`
   // through a neighbour `to` holds, so `to` stays connected. Cells closest to `to`'s start relative
   // to `from`'s go first, which keeps the boundary where the distance fields put it.
-  double transfer(int from, int to, double amount) {
+  double transfer(int from, int to, double amount, bool overshoot) {
     heap_.clear();
     for (int i : hull_.cells()) {
       if (owner_[static_cast<std::size_t>(i)] == from && touches(i, to))
@@ -175,7 +175,7 @@ class TransferWorkspace {
       if (heap_.empty()) {
         // The local test found nothing: ask the exact one (articulation points of `from`), which
         // also frees cells beside holes and around loops of the region.
-        const int cell = best_exact_move(from, to, from_start, amount - moved);
+        const int cell = best_exact_move(from, to, from_start, amount - moved, overshoot);
         if (cell < 0) break;
         move(cell);
         // Cells the move cut off from `from`'s start follow it into `to` (they touch it through
@@ -204,10 +204,11 @@ class TransferWorkspace {
   // The best cell of `from` beside `to` (smallest transfer key, never the start) that can move
   // together with the cells its removal cuts off from the start (found with an iterative Tarjan
   // search from the start: the DFS subtrees below it whose low point does not climb above it)
-  // without the moved weight exceeding `room`. -1 when there is none. O(region) per call; used only
+  // without the moved weight exceeding `room`; with `overshoot`, when there is none, the one that
+  // moves the least weight beyond `room`. -1 when there is none. O(region) per call; used only
   // when the local test finds nothing, e.g. beside holes, around loops, or along one-cell-wide
   // arms.
-  int best_exact_move(int from, int to, int root, double room) {
+  int best_exact_move(int from, int to, int root, double room, bool overshoot) {
     ++epoch_;
     int timer = 0;
     dfs_.clear();
@@ -237,17 +238,26 @@ class TransferWorkspace {
     }
     int best = -1;
     long long best_key = std::numeric_limits<long long>::max();
+    int lightest = -1;  // overshoot: the move of least weight beyond the room
+    double lightest_weight = std::numeric_limits<double>::infinity();
     for (int i : hull_.cells()) {
       if (seen_[static_cast<std::size_t>(i)] != epoch_ || i == root) continue;
       const double weight = cell_weight(i) + cut_off_[static_cast<std::size_t>(i)];
-      if (weight > room + 1e-9 || !touches(i, to)) continue;
+      if (!touches(i, to)) continue;
+      if (weight > room + 1e-9) {
+        if (overshoot && weight < lightest_weight) {
+          lightest_weight = weight;
+          lightest = i;
+        }
+        continue;
+      }
       const long long key = transfer_key(i, from, to);
       if (key < best_key) {
         best_key = key;
         best = i;
       }
     }
-    return best;
+    return best >= 0 ? best : lightest;
   }
   // Gives the cells marked kMark that are 4-connected to `start` through marked cells back to
   // `region` (the start itself belongs to it already).
@@ -414,6 +424,9 @@ class TransferWorkspace {
       dfs_;  // larger than any distance: orders transfer keys by difference first
 };
 
+// Escape rounds (moves beyond the amount asked) per UAV and attempt.
+constexpr int kEscapesPerUav = 1;
+
 // Whole-cell targets summing to the hull's cell count: floors of the desired counts, the remaining
 // cells to the largest remainders (ties lowest UAV id).
 std::vector<double> whole_cell_targets(std::span<const double> desired, int cells) {
@@ -555,6 +568,7 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
     };
 
     std::vector<std::uint8_t> stuck(static_cast<std::size_t>(n), 0);
+    int escapes = 0;  // escape rounds in this attempt
     double last_imbalance = imbalance();
     while (!converged) {
       if (rounds >= options_.round_limit) {
@@ -577,6 +591,26 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
         converged = true;
         break;
       }
+      bool overshoot = false;
+      if (worst < 0 && escapes < kEscapesPerUav * n) {
+        // Every unbalanced region is stuck. Seen on the default hull with random starts: a region
+        // whose cells beside its neighbours are all necks of a long arm grown by earlier rounds
+        // (the rest of the region lies beyond them), so no move fits the amount asked and every
+        // path to the under-full regions is blocked. One escape round lets the worst region's path
+        // move whole arms, beyond the amount, and passes the surplus on along the path; the
+        // regions that received it shed it in ordinary rounds. Bounded per attempt.
+        ++escapes;
+        overshoot = true;
+        ws.clear_blocks();
+        std::fill(stuck.begin(), stuck.end(), 0);
+        for (int r = 0; r < n; ++r) {
+          const double e = std::abs(excess(r));
+          if (e > goal && e > worst_excess) {
+            worst = r;
+            worst_excess = e;
+          }
+        }
+      }
       if (worst < 0) break;  // every unbalanced region is stuck: nothing movable on any path
       ++rounds;
       ws.rebuild_adjacency();
@@ -595,7 +629,7 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
       for (std::size_t e = 1; e < path.size() && amount > 1e-9; ++e) {
         const int from = path[e - 1];
         const int to = path[e];
-        const double moved = ws.transfer(from, to, amount);
+        const double moved = ws.transfer(from, to, amount, overshoot);
         if (moved < amount - 1e-9) ws.block(from, to);
         amount = moved;
       }

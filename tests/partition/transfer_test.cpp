@@ -95,6 +95,21 @@ TEST(Transfer, RandomStartsOnTheDefaultHull) {
   }
 }
 
+TEST(Transfer, EscapeRoundsFreeRegionsStuckBehindArms) {
+  // bench/transfer_bench's start sets for n = 24 … 27 on the default hull: one set of each got
+  // stuck (regions whose only cells beside the under-full ones were necks of long arms) before the
+  // escape rounds, in all 8 attempts; now all ten of each balance.
+  const auto& hull = world::default_hull();
+  const TransferPartitioner transfer;
+  for (int n : {24, 25, 26, 27}) {
+    for (std::uint64_t draw = 0; draw < 10; ++draw) {
+      SCOPED_TRACE(::testing::Message() << "n " << n << ", draw " << draw);
+      const auto request = request_for(hull, testing::random_starts(hull, n, 1000 * n + draw));
+      expect_balanced(request, transfer.partition(request));
+    }
+  }
+}
+
 TEST(Transfer, RandomHullsWithRandomStarts) {
   const TransferPartitioner transfer;
   int runs = 0;
