@@ -9,13 +9,13 @@ endif()
 if(HULLINSPECT_WERROR)
   target_compile_options(hullinspect_warnings INTERFACE -Werror)
 endif()
+# The asan preset and the fuzz preset build with clang and libFuzzer: every object is instrumented
+# for coverage-guided fuzzing (fuzz/ links the fuzzer's main into its targets only), so one
+# sanitizer build serves both the test suite and the fuzzers.
 if(HULLINSPECT_FUZZ)
-  # Every object is instrumented for coverage-guided fuzzing; fuzz/ links the fuzzer's main.
-  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
-                      -fno-omit-frame-pointer)
-  add_link_options(-fsanitize=address,undefined)
+  add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
-if(HULLINSPECT_SANITIZE)
+if(HULLINSPECT_SANITIZE OR HULLINSPECT_FUZZ)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)
 endif()

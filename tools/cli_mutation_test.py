@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Whole-CLI mutation test (run by scripts/long-test, normally on the ASan/UBSan build).
 
-Mutates seed inputs of every file format (text and PGM hull masks, YAML experiment configs, TSP
-instances, mission traces) with a seeded random stream and feeds each to the command that reads it.
+Mutates seed inputs of every file format the CLI reads (text and PGM hull masks, hull JSON, meshes,
+YAML experiment configs, TSP instances, mission traces) with a seeded random stream and feeds each to the command that reads it.
 Every run must end with exit status 0, 2 (bad input; exactly one stderr line "hullinspect: ...") or
 3 (a valid but unfinished mission), never 1, a signal, a time-out or a sanitizer report. Failing
 inputs are copied to OUT/findings/. Prints a summary; exit status 0 when nothing was found.
@@ -42,21 +42,33 @@ def mutate(data, rng):
     return bytes(data)
 
 
+# The command that reads each format of the seed directory. The exported waypoint files have no
+# CLI reader (only the round-trip tests read them back), so fuzz_export_readers covers them alone.
 def command(fmt, path, work):
-    if fmt in ("text_mask", "pgm"):
+    if fmt in ("text_mask", "pgm", "hull_json"):
         return ["run", "--hull", path, "-n", "2", "--time-limit", "300", "--json"]
+    if fmt == "mesh":
+        return ["hull", "import", path, "--out", os.path.join(work, "imported"), "--cell-size", "0.25"]
     if fmt == "yaml_config":
         return ["experiment", "--dry-run", "--config", path]
     if fmt == "tsp_json":
         return ["tsp", "--time-limit", "2", path]
-    return ["view", path, "--out", os.path.join(work, "out.html")]
+    if fmt == "trace_json":
+        return ["view", path, "--out", os.path.join(work, "out.html")]
+    return None
 
 
-def check(cli, fmt, index, data, base):
+def input_name(fmt, seed_name):
+    """The mutated input keeps its seed's file name suffix: the mesh reader picks the format by it."""
+    if fmt == "mesh":
+        return "input" + seed_name[seed_name.index("."):]
+    return "input" + {"text_mask": ".txt", "pgm": ".pgm", "yaml_config": ".yaml"}.get(fmt, ".json")
+
+
+def check(cli, fmt, name, index, data, base):
     work = os.path.join(base, f"case-{index}")
     os.makedirs(work)
-    suffix = {"text_mask": ".txt", "pgm": ".pgm", "yaml_config": ".yaml"}.get(fmt, ".json")
-    path = os.path.join(work, "input" + suffix)
+    path = os.path.join(work, input_name(fmt, name))
     with open(path, "wb") as f:
         f.write(data)
     env = dict(os.environ, ASAN_OPTIONS="detect_leaks=1", UBSAN_OPTIONS="print_stacktrace=1")
@@ -91,21 +103,23 @@ def main():
     seeds = []
     for fmt in sorted(os.listdir(args.seeds)):
         d = os.path.join(args.seeds, fmt)
+        if command(fmt, "", "") is None:
+            continue
         for name in sorted(os.listdir(d)):
             with open(os.path.join(d, name), "rb") as f:
-                seeds.append((fmt, f.read()))
+                seeds.append((fmt, name, f.read()))
     cases = []
     for i in range(args.count):
-        fmt, data = seeds[i % len(seeds)]
-        cases.append((fmt, i, mutate(data, rng)))
+        fmt, name, data = seeds[i % len(seeds)]
+        cases.append((fmt, name, i, mutate(data, rng)))
     base = tempfile.mkdtemp(prefix="hullinspect-mutation-")
     findings = os.path.join(args.out, "findings")
     os.makedirs(findings, exist_ok=True)
     statuses = {}
     found = 0
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        futures = {pool.submit(check, args.cli, fmt, i, data, base): (fmt, i, data)
-                   for fmt, i, data in cases}
+        futures = {pool.submit(check, args.cli, fmt, name, i, data, base): (fmt, i, data)
+                   for fmt, name, i, data in cases}
         for fut in concurrent.futures.as_completed(futures):
             fmt, i, data = futures[fut]
             problem, status, err = fut.result()

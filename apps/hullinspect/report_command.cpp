@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <string_view>
 
 #include "experiment_commands.hpp"
 #include "hullinspect/core/errors.hpp"
@@ -114,12 +116,14 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
     const auto& first = a.formats.front();
     // Name only the kinds of figure that were drawn (fig8 needs sweeps).
     std::vector<std::string> kinds;
-    for (const auto& [prefix, text] : {std::pair{"fig6_", "Fig. 6-style bars (`fig6_*`)"},
-                                       std::pair{"fig7_", "Fig. 7-style curves (`fig7_*`)"},
-                                       std::pair{"fig8_", "Fig. 8-style sweeps (`fig8_*`)"}}) {
+    for (const auto& kind : {std::pair{"fig6_", "Fig. 6-style bars (`fig6_*`)"},
+                             std::pair{"fig7_", "Fig. 7-style curves (`fig7_*`)"},
+                             std::pair{"fig8_", "Fig. 8-style sweeps (`fig8_*`)"}}) {
+      // Not a structured binding: clang 14 (the asan preset) cannot capture one in a lambda.
+      const std::string_view prefix = kind.first;
       if (std::any_of(figures.begin(), figures.end(),
                       [&](const std::string& f) { return f.starts_with(prefix); })) {
-        kinds.emplace_back(text);
+        kinds.emplace_back(kind.second);
       }
     }
     std::string list;

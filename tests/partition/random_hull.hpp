@@ -28,7 +28,11 @@ inline world::HullMask random_hull(std::uint64_t seed, int width, int height) {
   for (int k = 0; k < holes; ++k) {  // strictly inside: holes, not notches
     const int w = 2 + below(std::max(1, width / 5));
     const int h = 2 + below(std::max(1, height / 4));
-    clear(1 + below(std::max(1, width - w - 2)), 1 + below(std::max(1, height - h - 2)), w, h);
+    // Named draws: the order of a call's arguments is unspecified (GCC and clang differ); y is
+    // drawn first, the order the shapes were first drawn in.
+    const int y0 = 1 + below(std::max(1, height - h - 2));
+    const int x0 = 1 + below(std::max(1, width - w - 2));
+    clear(x0, y0, w, h);
   }
   const int bites = 2 + below(4);
   for (int k = 0; k < bites; ++k) {  // from the border: makes the outline non-convex

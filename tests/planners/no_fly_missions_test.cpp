@@ -102,7 +102,10 @@ std::vector<Layout> layouts() {
     for (int b = 0; b < 6; ++b) {
       const int x0 = below(hull.width() - 6);
       const int y0 = below(hull.height() - 4);
-      box(m, x0, y0, x0 + below(6), y0 + below(4));
+      // Named draws (argument order is unspecified; this is the order the boxes were drawn in).
+      const int dy = below(4);
+      const int dx = below(6);
+      box(m, x0, y0, x0 + dx, y0 + dy);
     }
     for (int x : {7, 22, 37, 52}) m(x, 10) = 0;  // keep the default starts free
     out.push_back({fmt::format("random-{}", seed), std::move(m)});

@@ -133,7 +133,10 @@ TEST(DualSimplex, MatchesClpThroughWarmStarts) {
       EXPECT_EQ(lp.add_row(columns, size / 2), row);
       expect_same(lp, model, lp.solve(1'000'000), "after a cut");
       // A new column.
-      add_column(below(random, n), below(random, n));
+      // Named draws (argument order is unspecified; this is the order first used).
+      const int to = below(random, n);
+      const int from = below(random, n);
+      add_column(from, to);
       expect_same(lp, model, lp.solve(1'000'000), "after a column");
       // Branch on a column, try both sides from one snapshot, keep one.
       const int j = below(random, lp.columns());
