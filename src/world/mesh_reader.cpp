@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cctype>
+#include <string>
+#include <string_view>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
@@ -56,6 +58,23 @@ std::string inflate_gzip(std::string_view bytes, const std::string& source) {
   return out;
 }
 
+// Assimp 5.2's PLY reader never returns on a header without an `end_header` line (found by
+// fuzz_mesh: one changed byte in "end_header"), so such a header is refused before Assimp sees it.
+void check_ply_header(std::string_view bytes, const std::string& source) {
+  std::size_t pos = 0;
+  while (pos < bytes.size()) {
+    std::size_t end = bytes.find('\n', pos);
+    if (end == std::string_view::npos) end = bytes.size();
+    std::string_view line = bytes.substr(pos, end - pos);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) {
+      line.remove_suffix(1);
+    }
+    if (line == "end_header") return;
+    pos = end + 1;
+  }
+  throw InputError(source, 0, "not a readable ply mesh (its header has no end_header line)");
+}
+
 }  // namespace
 
 std::vector<MeshTriangle> read_mesh(std::string_view bytes, std::string_view hint,
@@ -76,6 +95,7 @@ std::vector<MeshTriangle> read_mesh(std::string_view bytes, std::string_view hin
     throw InputError(source, 0,
                      fmt::format("unknown mesh format '{}'; expected stl, obj or ply", format));
   }
+  if (format == "ply" || bytes.starts_with("ply")) check_ply_header(bytes, source);
   Assimp::Importer importer;
   // Only the geometry matters: no normals, materials or vertex joining (speed).
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
