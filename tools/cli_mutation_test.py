@@ -58,17 +58,17 @@ def command(fmt, path, work):
     return None
 
 
-def input_name(fmt, seed_name):
-    """The mutated input keeps its seed's file name suffix: the mesh reader picks the format by it."""
+def input_name(fmt, hint):
+    """The mesh reader picks the format by the file name's suffix: the fuzz corpus's hint byte."""
     if fmt == "mesh":
-        return "input" + seed_name[seed_name.index("."):]
+        return "input" + (".stl", ".obj", ".ply")[hint % 3]
     return "input" + {"text_mask": ".txt", "pgm": ".pgm", "yaml_config": ".yaml"}.get(fmt, ".json")
 
 
-def check(cli, fmt, name, index, data, base):
+def check(cli, fmt, hint, index, data, base):
     work = os.path.join(base, f"case-{index}")
     os.makedirs(work)
-    path = os.path.join(work, input_name(fmt, name))
+    path = os.path.join(work, input_name(fmt, hint))
     with open(path, "wb") as f:
         f.write(data)
     env = dict(os.environ, ASAN_OPTIONS="detect_leaks=1", UBSAN_OPTIONS="print_stacktrace=1")
@@ -107,19 +107,24 @@ def main():
             continue
         for name in sorted(os.listdir(d)):
             with open(os.path.join(d, name), "rb") as f:
-                seeds.append((fmt, name, f.read()))
+                data = f.read()
+            # A mesh seed of fuzz/corpus starts with fuzz_mesh's format-hint byte, not file bytes.
+            hint = 0
+            if fmt == "mesh" and data:
+                hint, data = data[0], data[1:]
+            seeds.append((fmt, hint, data))
     cases = []
     for i in range(args.count):
-        fmt, name, data = seeds[i % len(seeds)]
-        cases.append((fmt, name, i, mutate(data, rng)))
+        fmt, hint, data = seeds[i % len(seeds)]
+        cases.append((fmt, hint, i, mutate(data, rng)))
     base = tempfile.mkdtemp(prefix="hullinspect-mutation-")
     findings = os.path.join(args.out, "findings")
     os.makedirs(findings, exist_ok=True)
     statuses = {}
     found = 0
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        futures = {pool.submit(check, args.cli, fmt, name, i, data, base): (fmt, i, data)
-                   for fmt, name, i, data in cases}
+        futures = {pool.submit(check, args.cli, fmt, hint, i, data, base): (fmt, i, data)
+                   for fmt, hint, i, data in cases}
         for fut in concurrent.futures.as_completed(futures):
             fmt, i, data = futures[fut]
             problem, status, err = fut.result()
