@@ -13,7 +13,7 @@
 namespace hullinspect::planners {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) || defined(HULLINSPECT_SANITIZED)
 constexpr int kSeeds = 1;
 #else
 constexpr int kSeeds = 3;

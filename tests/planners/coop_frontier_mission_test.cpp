@@ -18,7 +18,7 @@ namespace {
 
 using Mode = CoopFrontierPlanner::Mode;
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) || defined(HULLINSPECT_SANITIZED)
 constexpr int kSeedsPerCell = 3;  // sanitizer builds run ~10× slower: fewer seeds, same coverage
 #else
 constexpr int kSeedsPerCell = 20;

@@ -60,7 +60,7 @@ class PlanInRegionChecker final : public planners::MissionObserver {
 
 // Under AddressSanitizer every step costs about ten times more: the sweep then runs 3 seeds per
 // cell instead of 20 (the release build runs all 20).
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) || defined(HULLINSPECT_SANITIZED)
 constexpr bool kSanitized = true;
 #else
 constexpr bool kSanitized = false;

@@ -20,7 +20,7 @@ namespace {
 using testing::random_strip_instance;
 using testing::valid_solution;
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) || defined(HULLINSPECT_SANITIZED)
 constexpr double kSanitizerSlack = 0.5;  // every step is several times slower under ASan
 #else
 constexpr double kSanitizerSlack = 0.0;
