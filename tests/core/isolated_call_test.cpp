@@ -95,6 +95,13 @@ TEST(IsolatedCall, AHangIsCutOffAtTheLimit) {
 TEST(IsolatedCall, CallsFromSeveralThreadsAtOnceGetTheirOwnOutputs) {
   // Each thread's pipe must not be held open by another thread's child, and each result must be
   // the one its own child sent.
+#if defined(__SANITIZE_ADDRESS__) || defined(HULLINSPECT_SANITIZED)
+  // clang-14's ASan allocator has no fork handlers: a child forked while another thread holds
+  // its lock never gets memory and ends at the time limit ("did not finish"; seen here). That is
+  // the caveat of core/isolated_call.hpp, which hullinspect avoids by importing meshes before it
+  // starts threads; glibc's malloc (every other build) is reset in the child.
+  GTEST_SKIP() << "ASan's allocator is not fork-safe with threads (clang 14)";
+#endif
   std::vector<std::string> got(4);
   std::vector<std::string> failures(4);
   {

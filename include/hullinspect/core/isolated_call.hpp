@@ -9,9 +9,11 @@
 // crash signals have their default action, so a crash reads the same in every build.
 //
 // Threads: fork copies only the calling thread. `work` must need no lock that another thread of
-// the parent might hold at the fork (glibc's malloc is safe: it is reset in the child); a child
-// stalled on such a lock ends at the time limit as "did not finish", never as a hang. hullinspect
-// calls it before it starts any worker thread (meshes are imported while a config is read).
+// the parent might hold at the fork (glibc's malloc is safe: it is reset in the child; clang-14's
+// ASan allocator is not); a child stalled on such a lock ends at the time limit as "did not
+// finish", never as a hang. hullinspect calls it before it starts any worker thread (meshes are
+// imported while a config is read), so only a program embedding the library (the Python module)
+// that imports a mesh while its own threads allocate can meet this.
 
 #include <chrono>
 #include <functional>
