@@ -8,7 +8,6 @@
 #include <string_view>
 
 #include "commands.hpp"
-#include "mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
@@ -17,6 +16,7 @@
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
+#include "mesh_options.hpp"
 #include "mission_options.hpp"
 #include "number_options.hpp"
 
@@ -142,9 +142,10 @@ void print_summary(const PartitionArgs& args, const world::HullMask& hull,
   }
   const bool split = reach.flight_components > 1;
   if (split) {
-    std::cout << fmt::format("  the no-fly zones cut the flight space into {} parts; each part's "
-                             "cells go to its own UAVs:\n",
-                             reach.flight_components);
+    std::cout << fmt::format(
+        "  the no-fly zones cut the flight space into {} parts; each part's "
+        "cells go to its own UAVs:\n",
+        reach.flight_components);
     for (int c = 0; c < reach.flight_components; ++c) {
       int seen = 0;
       for (int i : hull.cells()) seen += reach.seen_from[i] == c ? 1 : 0;
@@ -191,16 +192,16 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
     if (flight.reach.any_no_fly) regions.back()["flight_component"] = flight.component[k];
   }
   nlohmann::json out = {{"partitioner", args.partitioner},
-          {"hull", hull.source()},
-          {"hull_cells", hull.cell_count()},
-          {"uavs", args.uavs},
-          {"seed", args.seed},
-          {"iterations", p.iterations},
-          {"converged", p.converged},
-          {"tolerance", p.tolerance},
-          {"seconds", p.seconds},
-          {"regions", regions},
-          {"warnings", p.warnings}};
+                        {"hull", hull.source()},
+                        {"hull_cells", hull.cell_count()},
+                        {"uavs", args.uavs},
+                        {"seed", args.seed},
+                        {"iterations", p.iterations},
+                        {"converged", p.converged},
+                        {"tolerance", p.tolerance},
+                        {"seconds", p.seconds},
+                        {"regions", regions},
+                        {"warnings", p.warnings}};
   if (flight.reach.any_no_fly) {
     out["flight_components"] = flight.reach.flight_components;
     out["unreachable_cells"] = flight.reach.unreachable_z1;

@@ -100,9 +100,10 @@ Partition partition_per_flight_component(const PartitionRequest& request,
   for (int k = 0; k < n; ++k) {
     const int c = component[static_cast<std::size_t>(k)];
     if (c < 0) {
-      throw LogicError(fmt::format("partition request: the start of UAV {} is seen from no flight "
-                                   "component",
-                                   k));
+      throw LogicError(
+          fmt::format("partition request: the start of UAV {} is seen from no flight "
+                      "component",
+                      k));
     }
     components = std::max(components, c + 1);
   }
@@ -117,9 +118,9 @@ Partition partition_per_flight_component(const PartitionRequest& request,
   grid::Grid<int> parts;  // flight parts of the allowed positions
   grid::BfsScratch scratch;
   if (request.allowed.size() > 0) grid::label_components(request.allowed, parts, scratch);
-  grid::DistanceService flights =
-      request.allowed.size() > 0 ? grid::DistanceService(request.allowed, /*cached_fields=*/1)
-                                 : grid::DistanceService(hull.width(), hull.height());
+  grid::DistanceService flights = request.allowed.size() > 0
+                                      ? grid::DistanceService(request.allowed, /*cached_fields=*/1)
+                                      : grid::DistanceService(hull.width(), hull.height());
 
   Partition out;
   out.owner = grid::Grid<std::int16_t>(hull.width(), hull.height(), -1);
