@@ -2,22 +2,15 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
+#include "request_checks.hpp"
 
 #include "hullinspect/partition/flight_split.hpp"
 
 namespace hullinspect::partition {
 
-namespace {
+using detail::largest_imbalance;
 
-// The largest |weight − desired| over the regions.
-double largest_imbalance(const Partition& p) {
-  double worst = 0;
-  for (std::size_t k = 0; k < p.region_weight.size() && k < p.desired_weight.size(); ++k) {
-    worst = std::max(worst, std::abs(p.region_weight[k] - p.desired_weight[k]));
-  }
-  return worst;
-}
+namespace {
 
 // The fallback rule on a request that lies in one flight space.
 Partition partition_one_with_fallback(std::string_view name, const OptionMap& options,
