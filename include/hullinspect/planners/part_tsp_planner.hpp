@@ -1,6 +1,6 @@
 #pragma once
-// Part-TSP and Part-TSP₀ (model.md §5.3, paper Section IV-A): a partition at t = 0, a local map per UAV
-// fed only by its own readings, the plane-change FSM of Fig. 3, and plans that cover (z = 2) or
+// Part-TSP and Part-TSP₀ (model.md §5.3, paper Section IV-A): a partition at t = 0, a local map per
+// UAV fed only by its own readings, the plane-change FSM of Fig. 3, and plans that cover (z = 2) or
 // inspect (z = 1) the UAV's region segment by segment in the order of a segment TSP.
 // docs/part-tsp.md describes the behaviour, the path and transit rules and the options.
 
@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/part_tsp_fsm.hpp"
 #include "hullinspect/planners/part_tsp_local_map.hpp"
 #include "hullinspect/planners/part_tsp_path.hpp"
@@ -25,7 +26,7 @@ struct PartTspOptions {
   bool use_prior = true;  ///< false: Part-TSP₀ (local maps start without the prior's 2s)
   bool oracle = false;    ///< oracle-part-tsp: the local maps start from the truth C, not C'
 
-  int r1 = 2;             ///< steps since the last detection before descending
+  int r1 = 2;  ///< steps since the last detection before descending
   int r2 = 0;  ///< steps since the last inspection (or arrival at z = 1) before ascending
   std::string tsp_solver{tsp::kDefaultTspSolver};  ///< segment-TSP solver by name ("exact")
   OptionMap tsp_solver_options;
@@ -90,6 +91,7 @@ class PartTspPlanner final : public Planner {
   sim::PlannerStats stats_;
   grid::DistanceService* distances_ = nullptr;  // the mission's, or own_distances_
   grid::DistanceService own_distances_;
+  FlightDistances flights_;  // per UAV: the service of its flight component (distances_ if one)
   // Scratch reused by every plan.
   std::vector<part_tsp::StripSegment> segments_;
   std::vector<std::pair<grid::Cell, grid::Cell>> ends_;
