@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/planners/prior_weights.hpp"
 
 namespace hullinspect::planners {
 
@@ -37,12 +38,15 @@ void PartTspPlanner::start(const PlannerContext& context) {
   request.starts.assign(context.starts.begin(), context.starts.end());
   request.seed = options_.partition_seed;
   add_no_fly(request, context);
+  add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
-  if (options_.oracle && !context.truth) throw LogicError("oracle-part-tsp started without the truth");
+  if (options_.oracle && !context.truth)
+    throw LogicError("oracle-part-tsp started without the truth");
   const auto& prior = options_.oracle ? *context.truth : context.prior;
-  maps_ = std::make_unique<LocalMaps>(partition_->owner, prior, options_.use_prior || options_.oracle, n,
-                                      context.params.s1, context.params.s2);
+  maps_ =
+      std::make_unique<LocalMaps>(partition_->owner, prior, options_.use_prior || options_.oracle,
+                                  n, context.params.s1, context.params.s2);
   distances_ = &distances_of(context, own_distances_);
   if (context.reach != nullptr && context.reach->any_no_fly) maps_->write_off(context.reach->reach);
   problem_.distances = distances_;
@@ -133,7 +137,8 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   if (segments_.size() == 1) {
     // One segment: the optimal open path enters at the nearer end (the left one on a tie).
     const auto& [left, right] = ends_.front();
-    order_.push_back(tsp::Visit{0, distances_->distance(pos, right) < distances_->distance(pos, left)});
+    order_.push_back(
+        tsp::Visit{0, distances_->distance(pos, right) < distances_->distance(pos, left)});
   } else if (segments_.size() > 1) {
     problem_.start = pos;
     problem_.segments.clear();

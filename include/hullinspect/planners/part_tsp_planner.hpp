@@ -1,6 +1,6 @@
 #pragma once
-// Part-TSP and Part-TSP₀ (model.md §5.3, paper Section IV-A): a partition at t = 0, a local map per UAV
-// fed only by its own readings, the plane-change FSM of Fig. 3, and plans that cover (z = 2) or
+// Part-TSP and Part-TSP₀ (model.md §5.3, paper Section IV-A): a partition at t = 0, a local map per
+// UAV fed only by its own readings, the plane-change FSM of Fig. 3, and plans that cover (z = 2) or
 // inspect (z = 1) the UAV's region segment by segment in the order of a segment TSP.
 // docs/part-tsp.md describes the behaviour, the path and transit rules and the options.
 
@@ -25,7 +25,7 @@ struct PartTspOptions {
   bool use_prior = true;  ///< false: Part-TSP₀ (local maps start without the prior's 2s)
   bool oracle = false;    ///< oracle-part-tsp: the local maps start from the truth C, not C'
 
-  int r1 = 2;             ///< steps since the last detection before descending
+  int r1 = 2;  ///< steps since the last detection before descending
   int r2 = 0;  ///< steps since the last inspection (or arrival at z = 1) before ascending
   std::string tsp_solver{tsp::kDefaultTspSolver};  ///< segment-TSP solver by name ("exact")
   OptionMap tsp_solver_options;
@@ -35,6 +35,9 @@ struct PartTspOptions {
   // Refinements beyond the paper, off by default (their measured effect: docs/part-tsp.md).
   bool skip_resolved = false;  ///< drop plan segments whose targets are all resolved already
   bool trim_ends = false;      ///< fly segments between ends pulled in by the footprint half-width
+  // Beyond the paper, off by default (prior_weights.hpp, docs/beyond.md).
+  bool prior_weights = false;    ///< partition weighted by the expected work per cell
+  bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
 };
 
 class PartTspPlanner final : public Planner {
