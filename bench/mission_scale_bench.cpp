@@ -9,7 +9,7 @@
 //   /usr/bin/python3 tools/plot_mission_scale.py scale.json docs/img/mission_scale.png
 //   build/release/bench/mission_scale_bench --benchmark_filter='Hull700x70/16/'
 //
-// Counters: T_m (mission time in steps: the last step of a complete mission; 0 if incomplete),
+// Counters: T_m (the mission's T_m in steps; 0 if incomplete),
 // complete (1/0), hull_cells, area (hull cells ÷ the default hull's), tsp_solves.
 
 #include <benchmark/benchmark.h>
@@ -56,10 +56,14 @@ void BM_Mission(benchmark::State& state) {
   sim::MissionResult r;
   for (auto _ : state) {
     r = planners::run_mission(spec, hull);
-    benchmark::DoNotOptimize(r.t_m);
+    // Not DoNotOptimize(r.t_m): Google Benchmark 1.7.1's non-const DoNotOptimize lets GCC pass a
+    // small object through a register ("+m,r") and corrupted the std::optional (t_m came back
+    // empty or garbage on complete missions: google/benchmark#1340, #1424). An int is safe.
+    benchmark::DoNotOptimize(r.steps);
   }
+  if (r.complete != r.t_m.has_value()) state.SkipWithError("complete and T_m disagree");
   state.SetLabel(algorithm);
-  state.counters["T_m"] = r.complete ? r.steps : 0;  // a complete mission ends at T_m
+  state.counters["T_m"] = r.t_m.value_or(0);
   state.counters["complete"] = r.complete ? 1 : 0;
   state.counters["hull_cells"] = r.hull_cells;
   state.counters["area"] =

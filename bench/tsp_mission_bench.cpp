@@ -27,10 +27,10 @@
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/partition_cache.hpp"
-#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/tsp/segment_tsp.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/scenario.hpp"
 
 namespace {
 
@@ -48,7 +48,11 @@ class RecordingSolver final : public tsp::TspSolver {
   RecordingSolver(std::unique_ptr<tsp::TspSolver> inner, std::vector<tsp::SegmentTsp>& out)
       : inner_(std::move(inner)), out_(out) {}
   tsp::TspSolution solve(const tsp::SegmentTsp& problem) override {
+    // The mission's distance service dies with the mission, before the recorded instances are
+    // solved again. These missions have no no-fly zones, so its distances are Manhattan: record
+    // the instance without it (it used to keep the dangling pointer and crashed).
     out_.push_back(problem);
+    out_.back().distances = nullptr;
     return inner_->solve(problem);
   }
 
@@ -169,6 +173,8 @@ int run(int argc, char** argv) {
       "| solver | solves | proven | median ms | p99 ms | max ms (g) | mission total: median ms | "
       "max ms |\n|---|---|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> per_solve(solvers.size());
+  // Every proven optimum of an instance must be the same length whichever solver proved it.
+  std::vector<long long> optimum(total, -1);
   for (std::size_t k = 0; k < solvers.size(); ++k) {
     const SolverSpec spec = solver_spec(solvers[k]);
     auto solver = tsp::make_tsp_solver(spec.name, spec.options);
@@ -177,12 +183,19 @@ int run(int argc, char** argv) {
     long long proven = 0;
     double worst = 0;
     std::size_t worst_g = 0;
+    std::size_t instance = 0;
     for (const auto& m : missions) {
       double sum = 0;
       for (const auto& p : m.solves) {
         const double t0 = thread_cpu_seconds();
         const tsp::TspSolution s = solver->solve(p);
         const double t = thread_cpu_seconds() - t0;
+        long long& known = optimum[instance++];
+        if (s.optimal && known >= 0 && s.length != known) {
+          throw std::runtime_error(fmt::format("{} proved length {} where another solver proved {}",
+                                               spec.label, s.length, known));
+        }
+        if (s.optimal) known = s.length;
         times.push_back(t);
         sum += t;
         proven += s.optimal ? 1 : 0;

@@ -2,22 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
+#include "request_checks.hpp"
 
 namespace hullinspect::partition {
 
-namespace {
-
-// The largest |weight − desired| over the regions.
-double largest_imbalance(const Partition& p) {
-  double worst = 0;
-  for (std::size_t k = 0; k < p.region_weight.size() && k < p.desired_weight.size(); ++k) {
-    worst = std::max(worst, std::abs(p.region_weight[k] - p.desired_weight[k]));
-  }
-  return worst;
-}
-
-}  // namespace
+using detail::largest_imbalance;
 
 Partition partition_with_fallback(std::string_view name, const OptionMap& options,
                                   const PartitionRequest& request) {

@@ -76,6 +76,14 @@ std::vector<double> checked_shares(std::span<const double> shares, int n) {
   return {shares.begin(), shares.end()};
 }
 
+double largest_imbalance(const Partition& p) {
+  double worst = 0;
+  for (std::size_t k = 0; k < p.region_weight.size() && k < p.desired_weight.size(); ++k) {
+    worst = std::max(worst, std::abs(p.region_weight[k] - p.desired_weight[k]));
+  }
+  return worst;
+}
+
 DesiredWeights desired_weights(const world::HullMask& hull, const grid::Grid<double>& weights,
                                std::span<const double> shares) {
   DesiredWeights d;

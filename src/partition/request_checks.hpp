@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hullinspect/grid/grid.hpp"
+#include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/hull.hpp"
 
 namespace hullinspect::partition::detail {
@@ -29,5 +30,8 @@ struct DesiredWeights {
 };
 DesiredWeights desired_weights(const world::HullMask& hull, const grid::Grid<double>& weights,
                                std::span<const double> shares);
+
+/// The largest |region weight − desired weight| over the regions of `p`.
+double largest_imbalance(const Partition& p);
 
 }  // namespace hullinspect::partition::detail

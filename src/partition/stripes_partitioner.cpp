@@ -8,6 +8,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "request_checks.hpp"
 
 namespace hullinspect::partition {
 
@@ -92,12 +93,7 @@ Partition StripesPartitioner::partition(const PartitionRequest& request) const {
                       k, hull.source()));
     }
   }
-  double worst = 0;
-  for (int k = 0; k < n; ++k) {
-    worst = std::max(worst, std::abs(out.region_weight[static_cast<std::size_t>(k)] -
-                                     out.desired_weight[static_cast<std::size_t>(k)]));
-  }
-  out.tolerance = worst;
+  out.tolerance = detail::largest_imbalance(out);
   out.converged = true;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -657,7 +657,6 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   out.owner = grid::Grid<std::int16_t>(hull.width(), hull.height(), -1);
   out.region_cells.assign(static_cast<std::size_t>(n), 0);
   out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
-  double worst = 0;
   for (int i : hull.cells()) {
     const int r = best_owner.empty() ? 0 : best_owner[static_cast<std::size_t>(i)];
     out.owner[i] = static_cast<std::int16_t>(r);
@@ -666,8 +665,8 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   for (int r = 0; r < n; ++r) {
     const double w = n == 1 ? total : best_weight[static_cast<std::size_t>(r)];
     out.region_weight[static_cast<std::size_t>(r)] = w;
-    worst = std::max(worst, std::abs(w - out.desired_weight[static_cast<std::size_t>(r)]));
   }
+  const double worst = detail::largest_imbalance(out);
   out.iterations = rounds;
   out.converged = converged;
   if (converged) {

@@ -9,138 +9,19 @@
 #include <numeric>
 #include <vector>
 
+#include "dfj_program.hpp"
 #include "end_costs.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/tsp/heuristic_solver.hpp"
 
 namespace hullinspect::tsp {
 
+using detail::build_program;
+using detail::column;
+using detail::components;
+using detail::PaperGraph;
+
 namespace {
-
-/// Column of e_{i,j}, i > j, in the paper's numbering.
-int column(int i, int j) {
-  return i * (i - 1) / 2 + j;
-}
-
-/// The paper's nodes: 0 = UAV, 2l+1 / 2l+2 = first / second end of segment l, 2g+1 = artificial.
-struct PaperGraph {
-  int g = 0;
-  int nodes = 0;
-  std::vector<grid::Cell> at;
-  const SegmentTsp* problem = nullptr;
-
-  explicit PaperGraph(const SegmentTsp& p)
-      : g(static_cast<int>(p.segments.size())),
-        nodes(2 * g + 2),
-        at(static_cast<std::size_t>(nodes)),
-        problem(&p) {
-    at[0] = p.start;
-    for (int l = 0; l < g; ++l) {
-      at[static_cast<std::size_t>(2 * l + 1)] = p.segments[static_cast<std::size_t>(l)].first;
-      at[static_cast<std::size_t>(2 * l + 2)] = p.segments[static_cast<std::size_t>(l)].second;
-    }
-  }
-  int artificial() const { return 2 * g + 1; }
-  /// d_{i,j}: the problem's distance, 0 to the artificial node (eq. 11; its forced edge to 0
-  /// costs 0 too).
-  double cost(int i, int j) const {
-    if (i == artificial() || j == artificial()) return 0.0;
-    return node_distance(*problem, at[static_cast<std::size_t>(i)],
-                         at[static_cast<std::size_t>(j)]);
-  }
-  /// Eqs. 9 and 10.
-  bool forced(int i, int j) const {
-    if (i < j) std::swap(i, j);
-    if (i == artificial()) return j == 0;
-    return j >= 1 && (j % 2) == 1 && i == j + 1;
-  }
-};
-
-/// Eqs. 6, 7, 9, 10, 12: the program without any subtour constraint.
-void build_program(const PaperGraph& graph, OsiClpSolverInterface& solver) {
-  const int n = graph.nodes;
-  const int columns = n * (n - 1) / 2;
-  std::vector<CoinBigIndex> starts(static_cast<std::size_t>(columns) + 1);
-  std::vector<int> rows(2 * static_cast<std::size_t>(columns));
-  std::vector<double> objective(static_cast<std::size_t>(columns));
-  std::vector<double> lower(static_cast<std::size_t>(columns));
-  for (int i = 1; i < n; ++i) {
-    for (int j = 0; j < i; ++j) {
-      const auto c = static_cast<std::size_t>(column(i, j));
-      starts[c] = static_cast<CoinBigIndex>(2 * c);
-      rows[2 * c] = i;
-      rows[2 * c + 1] = j;
-      objective[c] = graph.cost(i, j);
-      lower[c] = graph.forced(i, j) ? 1.0 : 0.0;
-    }
-  }
-  starts[static_cast<std::size_t>(columns)] = 2 * columns;
-  const std::vector<double> ones(2 * static_cast<std::size_t>(columns), 1.0);
-  const std::vector<double> upper(static_cast<std::size_t>(columns), 1.0);
-  const std::vector<double> degree(static_cast<std::size_t>(n), 2.0);
-  solver.messageHandler()->setLogLevel(0);
-  solver.getModelPtr()->setLogLevel(0);
-  solver.setHintParam(OsiDoReducePrint, true, OsiHintTry);
-  solver.loadProblem(columns, n, starts.data(), rows.data(), ones.data(), lower.data(),
-                     upper.data(), objective.data(), degree.data(), degree.data());
-  std::vector<int> all(static_cast<std::size_t>(columns));
-  std::iota(all.begin(), all.end(), 0);
-  solver.setInteger(all.data(), columns);
-}
-
-/// Labels the connected components of the chosen edges; returns how many there are.
-int components(const PaperGraph& graph, const double* x, std::vector<int>& label) {
-  const int n = graph.nodes;
-  label.assign(static_cast<std::size_t>(n), -1);
-  int count = 0;
-  std::vector<int> stack;
-  for (int root = 0; root < n; ++root) {
-    if (label[static_cast<std::size_t>(root)] >= 0) continue;
-    label[static_cast<std::size_t>(root)] = count;
-    stack.assign(1, root);
-    while (!stack.empty()) {
-      const int i = stack.back();
-      stack.pop_back();
-      for (int j = 0; j < n; ++j) {
-        if (j == i || label[static_cast<std::size_t>(j)] >= 0) continue;
-        if (x[column(std::max(i, j), std::min(i, j))] > 0.5) {
-          label[static_cast<std::size_t>(j)] = count;
-          stack.push_back(j);
-        }
-      }
-    }
-    ++count;
-  }
-  return count;
-}
-
-/// The visiting order of a single tour, dropping the artificial node (entry ends, see
-/// end_costs.hpp).
-std::vector<int> tour_entries(const PaperGraph& graph, const double* x) {
-  const int n = graph.nodes;
-  auto neighbour_except = [&](int i, int avoid) {
-    for (int j = 0; j < n; ++j) {
-      if (j != i && j != avoid && x[column(std::max(i, j), std::min(i, j))] > 0.5) return j;
-    }
-    throw LogicError("dfj-iterative: a node of the tour has fewer than two edges");
-  };
-  std::vector<int> entries;
-  int at = neighbour_except(0, graph.artificial());
-  while (at != graph.artificial()) {
-    if (static_cast<int>(entries.size()) >= graph.g) {
-      throw LogicError("dfj-iterative: the tour does not close at the artificial node");
-    }
-    const int l = (at - 1) / 2;
-    const bool entered_second = at % 2 == 0;
-    entries.push_back(2 * l + (entered_second ? 1 : 0));
-    const int other_end = entered_second ? at - 1 : at + 1;
-    at = neighbour_except(other_end, at);
-  }
-  if (static_cast<int>(entries.size()) != graph.g) {
-    throw LogicError("dfj-iterative: the tour misses segments");
-  }
-  return entries;
-}
 
 /// Stops CBC at the next node once the wall-clock deadline has passed: CBC's own
 /// setMaximumSeconds is checked less often, which let a solve run to 2.7× its limit.
@@ -213,7 +94,8 @@ TspSolution DfjIterativeSolver::solve(const SegmentTsp& problem) {
     const double* x = model.bestSolution();
     const int count = components(graph, x, label);
     if (count == 1) {
-      return detail::make_solution(problem, tour_entries(graph, x), true, started);
+      return detail::make_solution(problem, detail::tour_entries(graph, x, "dfj-iterative"), true,
+                                   started);
     }
     // Eq. 8 for every subtour of this answer.
     for (int c = 0; c < count; ++c) {

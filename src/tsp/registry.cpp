@@ -1,4 +1,5 @@
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/tsp/cbc_cut_solver.hpp"
 #include "hullinspect/tsp/dfj_iterative_solver.hpp"
 #include "hullinspect/tsp/exact_solver.hpp"
 #include "hullinspect/tsp/heuristic_solver.hpp"
@@ -18,6 +19,12 @@ void add_builtins(TspSolverRegistry& r) {
       "the paper's reference: DFJ integer program on CBC, subtour constraints added iteratively",
       DfjIterativeSolver::params(),
       [](const DfjIterativeOptions& o) { return std::make_unique<DfjIterativeSolver>(o); }));
+  r.add_builtin(make_entry<TspSolver, CbcCutOptions>(
+      "cbc-cut",
+      "the same integer program solved once by CBC's branch-and-cut, subtour constraints as lazy "
+      "cuts, seeded with the heuristic's tour",
+      CbcCutSolver::params(),
+      [](const CbcCutOptions& o) { return std::make_unique<CbcCutSolver>(o); }));
   r.add_builtin(make_entry<TspSolver, HeuristicOptions>(
       "heuristic",
       "nearest neighbour + 2-opt/Or-opt with segment flips + double-bridge kicks; no proof",

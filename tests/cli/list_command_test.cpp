@@ -32,7 +32,7 @@ TEST(ListCommand, JsonListsEveryPlannerWithItsDeclaredOptions) {
                             {"default", "2"},
                             {"range", "[0, 1048576]"},
                             {"description", "steps since the last detection before descending"}}));
-  EXPECT_EQ(part_tsp["options"].at(2)["range"], "exact|dfj-iterative|heuristic");
+  EXPECT_EQ(part_tsp["options"].at(2)["range"], "exact|dfj-iterative|cbc-cut|heuristic");
 }
 
 TEST(ListCommand, EveryKindIsListed) {

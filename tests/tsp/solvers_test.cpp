@@ -28,13 +28,14 @@ std::vector<Config> exact_configs() {
   return {{"exact", {}, "exact"},
           {"exact", {{"dp-max-segments", "0"}}, "exact (branch-and-cut only)"},
           {"exact", {{"dp-max-segments", "16"}}, "exact (dynamic program only)"},
-          {"dfj-iterative", {}, "dfj-iterative"}};
+          {"dfj-iterative", {}, "dfj-iterative"},
+          {"cbc-cut", {}, "cbc-cut"}};
 }
 
-TEST(TspSolvers, RegistryListsTheThreeSolvers) {
+TEST(TspSolvers, RegistryListsTheFourSolvers) {
   std::vector<std::string> names;
   for (const auto& info : tsp_solver_registry()) names.push_back(info.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"exact", "dfj-iterative", "heuristic"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"exact", "dfj-iterative", "cbc-cut", "heuristic"}));
   EXPECT_EQ(std::string(kDefaultTspSolver), "exact");
 }
 
@@ -43,8 +44,9 @@ TEST(TspSolvers, UnknownSolverOrOptionIsAParameterError) {
     make_tsp_solver("lkh");
     FAIL();
   } catch (const ParameterError& e) {
-    EXPECT_STREQ(e.what(),
-                 "tsp-solver: unknown TSP solver 'lkh' (known: exact, dfj-iterative, heuristic)");
+    EXPECT_STREQ(
+        e.what(),
+        "tsp-solver: unknown TSP solver 'lkh' (known: exact, dfj-iterative, cbc-cut, heuristic)");
   }
   try {
     make_tsp_solver("exact", {{"timelimit", "3"}});
@@ -115,6 +117,7 @@ TEST(TspSolvers, AllOptimalSolversAgreeOnLargerInstances) {
   auto dp = make_tsp_solver("exact", {{"dp-max-segments", "12"}});
   auto cut = make_tsp_solver("exact", {{"dp-max-segments", "0"}});
   auto dfj = make_tsp_solver("dfj-iterative");
+  auto cbc = make_tsp_solver("cbc-cut");
   for (int g : {8, 10, 12}) {
     for (std::uint64_t seed = 0; seed < 3; ++seed) {
       const SegmentTsp p = random_strip_instance(g, 100 + seed, 120, 30, 30);
@@ -122,12 +125,14 @@ TEST(TspSolvers, AllOptimalSolversAgreeOnLargerInstances) {
       const TspSolution a = dp->solve(p);
       const TspSolution b = cut->solve(p);
       const TspSolution c = dfj->solve(p);
-      for (const auto* s : {&a, &b, &c}) {
+      const TspSolution d = cbc->solve(p);
+      for (const auto* s : {&a, &b, &c, &d}) {
         ASSERT_TRUE(valid_solution(p, *s));
         EXPECT_TRUE(s->optimal);
       }
       EXPECT_EQ(a.length, b.length);
       EXPECT_EQ(a.length, c.length);
+      EXPECT_EQ(a.length, d.length);
     }
   }
 }
@@ -190,7 +195,7 @@ TEST(TspSolvers, TimeLimitReturnsAValidUnprovenTour) {
   // A 1 µs limit expires before the branch-and-cut's first node: the local search's tour comes
   // back.
   const SegmentTsp p = random_strip_instance(40, 5, 230, 30, 60);
-  for (const std::string name : {"exact", "dfj-iterative"}) {
+  for (const std::string name : {"exact", "dfj-iterative", "cbc-cut"}) {
     SCOPED_TRACE(name);
     auto solver = make_tsp_solver(name, {{"time-limit", "0.000001"}});
     const TspSolution s = solver->solve(p);

@@ -36,7 +36,7 @@ TEST(TspCommand, EverySolverPrintsAValidTour) {
   const tsp::SegmentTsp problem = random_strip_instance(7, 3);
   const std::string file = write_file(dir, "p.json", io::tsp_instance_json(problem).dump());
   const long long optimum = brute_force_length(problem);
-  for (const std::string solver : {"exact", "dfj-iterative", "heuristic"}) {
+  for (const std::string solver : {"exact", "dfj-iterative", "cbc-cut", "heuristic"}) {
     SCOPED_TRACE(solver);
     const auto r = run_cli({"tsp", "--solver", solver, file});
     EXPECT_EQ(r.status, 0) << r.err;
@@ -124,10 +124,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--solver", "lkh", "FILE"},
                  "",
                  "hullinspect: --solver: unknown TSP solver 'lkh' (known: exact, dfj-iterative, "
-                 "heuristic)"},
-        BadInput{{"--time-limit", "-1", "FILE"},
-                 "",
-                 "hullinspect: --time-limit: must be a number in [0, 1e+09] (got '-1') (see --help)"},
+                 "cbc-cut, heuristic)"},
+        BadInput{
+            {"--time-limit", "-1", "FILE"},
+            "",
+            "hullinspect: --time-limit: must be a number in [0, 1e+09] (got '-1') (see --help)"},
         BadInput{
             {"-O", "kicks", "FILE"}, "", "hullinspect: --option: expects KEY=VALUE (got 'kicks')"},
         BadInput{{"--solver", "heuristic", "-O", "kicks=many", "FILE"},
