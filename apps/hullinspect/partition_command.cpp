@@ -8,14 +8,15 @@
 #include <string_view>
 
 #include "commands.hpp"
-#include "mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
 #include "hullinspect/io/output_set.hpp"
+#include "hullinspect/partition/flight_split.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
+#include "mesh_options.hpp"
 #include "mission_options.hpp"
 #include "number_options.hpp"
 
@@ -38,6 +39,8 @@ struct PartitionArgs {
   std::string out_path;
   std::string no_fly;
   std::vector<std::string> no_fly_boxes;
+  int s1 = world::MissionParams{}.s1;  // footprints: which flight component sees a hull cell
+  int s2 = world::MissionParams{}.s2;
   MeshArgs mesh;  // how a mesh --hull is imported
 };
 
@@ -69,18 +72,44 @@ OptionMap parse_options(const std::vector<std::string>& pairs) {
   return map;
 }
 
-// Independent check of each region's 4-connectivity, for the report.
+// The flight space as the report shows it (no-fly zones only; empty otherwise).
+struct FlightSpace {
+  world::Reachability reach;
+  std::vector<int> component;  // per UAV: the flight component of its start
+};
+
+// Independent check, for the report, that each region is one the UAV can fly: 4-connected, and
+// with no-fly zones every cell of it that can be seen at all is seen from the UAV's own flight
+// component (docs/model.md §8).
 std::vector<bool> connected_regions(const world::HullMask& hull, const partition::Partition& p,
-                                    int n) {
+                                    int n, const FlightSpace& flight) {
   std::vector<bool> connected(static_cast<std::size_t>(n), false);
   grid::Grid<std::uint8_t> region(hull.width(), hull.height(), 0);
   grid::Grid<int> labels;
   grid::BfsScratch scratch;
+  const grid::Grid<int>& seen_from = flight.reach.seen_from;
   for (int k = 0; k < n; ++k) {
-    for (int i = 0; i < region.size(); ++i) region[i] = p.owner[i] == k;
-    connected[static_cast<std::size_t>(k)] = grid::label_components(region, labels, scratch) == 1;
+    bool flyable = true;
+    for (int i = 0; i < region.size(); ++i) {
+      region[i] = p.owner[i] == k;
+      if (region[i] && seen_from.size() > 0 && seen_from[i] >= 0 &&
+          seen_from[i] != flight.component[static_cast<std::size_t>(k)])
+        flyable = false;
+    }
+    connected[static_cast<std::size_t>(k)] =
+        flyable && grid::label_components(region, labels, scratch) == 1;
   }
   return connected;
+}
+
+// The UAVs of flight component c, as "0, 1, 3".
+std::string component_uavs(const FlightSpace& flight, int c) {
+  std::string text;
+  for (std::size_t k = 0; k < flight.component.size(); ++k) {
+    if (flight.component[k] != c) continue;
+    text += fmt::format("{}{}", text.empty() ? "" : ", ", k);
+  }
+  return text;
 }
 
 std::string region_mask(const world::HullMask& hull, const partition::Partition& p,
@@ -102,10 +131,28 @@ std::string region_mask(const world::HullMask& hull, const partition::Partition&
 
 void print_summary(const PartitionArgs& args, const world::HullMask& hull,
                    const std::vector<grid::Cell>& starts, const partition::Partition& p,
-                   const std::vector<bool>& connected) {
+                   const std::vector<bool>& connected, const FlightSpace& flight) {
   std::cout << fmt::format("{}: {} on {} ({}), seed {}\n", args.partitioner,
                            plural(args.uavs, "UAV"), hull.source(),
                            plural(hull.cell_count(), "hull cell"), args.seed);
+  const world::Reachability& reach = flight.reach;
+  if (reach.unreachable_z1 > 0) {
+    std::cout << fmt::format("  no-fly zones: {} cannot be inspected, {} cannot be seen at all\n",
+                             plural(reach.unreachable_z1, "hull cell"), reach.unreachable_z2);
+  }
+  const bool split = reach.flight_components > 1;
+  if (split) {
+    std::cout << fmt::format(
+        "  the no-fly zones cut the flight space into {} parts; each part's "
+        "cells go to its own UAVs:\n",
+        reach.flight_components);
+    for (int c = 0; c < reach.flight_components; ++c) {
+      int seen = 0;
+      for (int i : hull.cells()) seen += reach.seen_from[i] == c ? 1 : 0;
+      std::cout << fmt::format("    part {}: UAVs {}; {} seen from it\n", c,
+                               component_uavs(flight, c), plural(seen, "hull cell"));
+    }
+  }
   if (p.converged) {
     std::cout << fmt::format(
         "  converged after {} iterations in {:.3f} ms; tolerance reached {:g} "
@@ -117,17 +164,24 @@ void print_summary(const PartitionArgs& args, const world::HullMask& hull,
         "partition found, largest imbalance {:g} cells\n",
         p.iterations, p.seconds * 1e3, p.tolerance);
   }
-  std::cout << "  UAV  start        cells     desired  connected\n";
+  std::cout << "  UAV  start        cells     desired  connected" << (split ? "  part" : "")
+            << "\n";
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    std::cout << fmt::format("  {:>3}  {:<11}  {:>5}  {:>10.2f}  {}\n", k,
+    const std::string_view yes_no = connected[k] ? "yes" : "NO";
+    std::cout << fmt::format("  {:>3}  {:<11}  {:>5}  {:>10.2f}  ", k,
                              fmt::format("({}, {})", starts[k].x, starts[k].y), p.region_cells[k],
-                             p.desired_weight[k], connected[k] ? "yes" : "NO");
+                             p.desired_weight[k]);
+    if (split) {
+      std::cout << fmt::format("{:<9}  {}\n", yes_no, flight.component[k]);
+    } else {
+      std::cout << yes_no << "\n";
+    }
   }
 }
 
 nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hull,
                             const std::vector<grid::Cell>& starts, const partition::Partition& p,
-                            const std::vector<bool>& connected) {
+                            const std::vector<bool>& connected, const FlightSpace& flight) {
   nlohmann::json regions = nlohmann::json::array();
   for (std::size_t k = 0; k < starts.size(); ++k) {
     regions.push_back({{"uav", k},
@@ -135,18 +189,25 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
                        {"cells", p.region_cells[k]},
                        {"desired", p.desired_weight[k]},
                        {"connected", static_cast<bool>(connected[k])}});
+    if (flight.reach.any_no_fly) regions.back()["flight_component"] = flight.component[k];
   }
-  return {{"partitioner", args.partitioner},
-          {"hull", hull.source()},
-          {"hull_cells", hull.cell_count()},
-          {"uavs", args.uavs},
-          {"seed", args.seed},
-          {"iterations", p.iterations},
-          {"converged", p.converged},
-          {"tolerance", p.tolerance},
-          {"seconds", p.seconds},
-          {"regions", regions},
-          {"warnings", p.warnings}};
+  nlohmann::json out = {{"partitioner", args.partitioner},
+                        {"hull", hull.source()},
+                        {"hull_cells", hull.cell_count()},
+                        {"uavs", args.uavs},
+                        {"seed", args.seed},
+                        {"iterations", p.iterations},
+                        {"converged", p.converged},
+                        {"tolerance", p.tolerance},
+                        {"seconds", p.seconds},
+                        {"regions", regions},
+                        {"warnings", p.warnings}};
+  if (flight.reach.any_no_fly) {
+    out["flight_components"] = flight.reach.flight_components;
+    out["unreachable_cells"] = flight.reach.unreachable_z1;
+    out["unreachable_z2_cells"] = flight.reach.unreachable_z2;
+  }
+  return out;
 }
 
 int run_partition(const PartitionArgs& args) {
@@ -157,6 +218,8 @@ int run_partition(const PartitionArgs& args) {
   const world::HullMask hull = load_hull_argument(args.hull, args.mesh);
   world::MissionParams params;
   params.uavs = args.uavs;
+  params.s1 = args.s1;
+  params.s2 = args.s2;
   for (const auto& s : args.starts) params.starts.push_back(parse_xy(s));
   params.no_fly = build_no_fly(args.no_fly, args.no_fly_boxes, hull);
   try {
@@ -183,23 +246,28 @@ int run_partition(const PartitionArgs& args) {
   request.hull = &hull;
   request.starts = world::start_cells(params, hull);
   request.seed = args.seed;
+  FlightSpace flight;
   if (params.no_fly) {
-    // DARP's initial distances follow the shortest flights around the no-fly zones.
-    request.allowed = world::compute_reachability(hull, params.no_fly.get(), params.s1, params.s2,
-                                                  request.starts)
-                          .flyable;
+    // DARP's initial distances follow the shortest flights around the no-fly zones, and each
+    // flight component's cells are partitioned among its own UAVs.
+    flight.reach = world::compute_reachability(hull, params.no_fly.get(), params.s1, params.s2,
+                                               request.starts);
+    request.allowed = flight.reach.flyable;
+    request.seen_from = flight.reach.seen_from;
   }
   reject_shared_starts(params.starts, request.starts);
-  const partition::Partition result = partitioner->partition(request);
-  const auto connected = connected_regions(hull, result, args.uavs);
+  flight.component = partition::start_components(request);
+  const partition::Partition result = partition::partition_per_flight_component(
+      request, [&](const partition::PartitionRequest& one) { return partitioner->partition(one); });
+  const auto connected = connected_regions(hull, result, args.uavs, flight);
   if (!args.out_path.empty()) {
     outputs.write(args.out_path, region_mask(hull, result, args));
     outputs.commit();
   }
   if (args.json) {
-    std::cout << summary_json(args, hull, request.starts, result, connected).dump() << "\n";
+    std::cout << summary_json(args, hull, request.starts, result, connected, flight).dump() << "\n";
   } else {
-    print_summary(args, hull, request.starts, result, connected);
+    print_summary(args, hull, request.starts, result, connected, flight);
     for (const auto& w : result.warnings) std::cerr << "hullinspect: warning: " << w << "\n";
   }
   return result.converged ? 0 : 3;
@@ -242,6 +310,12 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
                   "below)")
       ->type_name("KEY=VALUE");
   add_no_fly_options(*cmd, args->no_fly, args->no_fly_boxes);
+  cmd->add_option("--s1", args->s1,
+                  "Footprint side at z = 1 (with no-fly zones: which hull cells can be inspected "
+                  "and from where)")
+      ->capture_default_str();
+  cmd->add_option("--s2", args->s2, "Footprint side at z = 2 (likewise, for detection)")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json,
                 "Print one JSON object (partitioner, hull, hull_cells, uavs, seed, iterations, "
                 "converged, tolerance, seconds, regions, warnings)");

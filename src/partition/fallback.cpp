@@ -4,12 +4,17 @@
 
 #include "request_checks.hpp"
 
+#include "hullinspect/partition/flight_split.hpp"
+
 namespace hullinspect::partition {
 
 using detail::largest_imbalance;
 
-Partition partition_with_fallback(std::string_view name, const OptionMap& options,
-                                  const PartitionRequest& request) {
+namespace {
+
+// The fallback rule on a request that lies in one flight space.
+Partition partition_one_with_fallback(std::string_view name, const OptionMap& options,
+                                      const PartitionRequest& request) {
   Partition first = make_partitioner(name, options)->partition(request);
   if (first.converged || name != "darp") return first;
   Partition second = make_partitioner(kFallbackPartitioner)->partition(request);
@@ -27,6 +32,15 @@ Partition partition_with_fallback(std::string_view name, const OptionMap& option
   second.seconds += first.seconds;
   second.fallback = std::string(kFallbackPartitioner);
   return second;
+}
+
+}  // namespace
+
+Partition partition_with_fallback(std::string_view name, const OptionMap& options,
+                                  const PartitionRequest& request) {
+  return partition_per_flight_component(request, [&](const PartitionRequest& one) {
+    return partition_one_with_fallback(name, options, one);
+  });
 }
 
 }  // namespace hullinspect::partition

@@ -38,13 +38,14 @@ void LawnmowerPlanner::start(const PlannerContext& context) {
   add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
-  grid::DistanceService& distances = distances_of(context, own_distances_);
+  flights_.build(context, distances_of(context, own_distances_));
   followers_.assign(static_cast<std::size_t>(n), WaypointFollower{});
   climb_.assign(static_cast<std::size_t>(n), {});
   climbed_.assign(static_cast<std::size_t>(n), 0);
   for (int k = 0; k < n; ++k) {
     auto& follower = followers_[static_cast<std::size_t>(k)];
     const grid::Cell from = context.starts[static_cast<std::size_t>(k)];
+    grid::DistanceService& distances = flights_.of(k);
     follower.set_distances(&distances);
     if (!distances.has_no_fly() || context.reach == nullptr) {
       follower.assign(sweep(partition_->owner, k, context.params.s1, from));
@@ -85,7 +86,9 @@ bool LawnmowerPlanner::idle(const sim::PlannerView& view) const {
   for (std::size_t k = 0; k < view.uavs.size(); ++k) {
     const sim::UavState& u = view.uavs[k];
     if (u.failed) continue;
-    if (u.in_transit() || u.z != 1 || !followers_[k].finished(u.pos)) return false;
+    if (u.in_transit() || !followers_[k].finished(u.pos)) return false;
+    // Done on its plane: at z = 1 with no z = 2 leg still to fly, or at the end of that leg.
+    if (climbed_[k] != 0 ? u.z != 2 : (u.z != 1 || !climb_[k].empty())) return false;
   }
   return true;
 }

@@ -22,8 +22,10 @@ std::shared_ptr<const partition::Partition> DirectPartitionSource::get(
 }
 
 void add_no_fly(partition::PartitionRequest& request, const PlannerContext& context) {
-  if (context.reach != nullptr && context.reach->any_no_fly)
+  if (context.reach != nullptr && context.reach->any_no_fly) {
     request.allowed = context.reach->flyable;
+    request.seen_from = context.reach->seen_from;
+  }
 }
 
 grid::DistanceService& distances_of(const PlannerContext& context,

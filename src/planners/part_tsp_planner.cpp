@@ -49,9 +49,11 @@ void PartTspPlanner::start(const PlannerContext& context) {
                                   n, context.params.s1, context.params.s2);
   distances_ = &distances_of(context, own_distances_);
   if (context.reach != nullptr && context.reach->any_no_fly) maps_->write_off(context.reach->reach);
+  flights_.build(context, *distances_);
   problem_.distances = distances_;
   uavs_.assign(static_cast<std::size_t>(n), UavState{});
-  for (UavState& p : uavs_) p.path.set_distances(distances_);
+  for (int k = 0; k < n; ++k)
+    uavs_[static_cast<std::size_t>(k)].path.set_distances(&flights_.of(k));
   stats_ = {};
 }
 
@@ -125,8 +127,10 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   p.plan_value = target_value(z, maps_->corrosion_to_inspect(k));
   if (p.plans++ > 0) ++stats_.replans;
   const int trim = options_.trim_ends ? (maps_->layout(z).s - 1) / 2 : 0;
-  if (distances_->has_no_fly()) {
-    part_tsp::divide_around_no_fly(*maps_, k, z, p.plan_value, trim, *distances_, segments_, ends_);
+  grid::DistanceService& distances = flights_.of(k);
+  problem_.distances = &distances;
+  if (distances.has_no_fly()) {
+    part_tsp::divide_around_no_fly(*maps_, k, z, p.plan_value, trim, distances, segments_, ends_);
   } else {
     divide_into_segments(*maps_, k, z, p.plan_value, segments_);
     ends_.clear();
@@ -137,8 +141,7 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   if (segments_.size() == 1) {
     // One segment: the optimal open path enters at the nearer end (the left one on a tie).
     const auto& [left, right] = ends_.front();
-    order_.push_back(
-        tsp::Visit{0, distances_->distance(pos, right) < distances_->distance(pos, left)});
+    order_.push_back(tsp::Visit{0, distances.distance(pos, right) < distances.distance(pos, left)});
   } else if (segments_.size() > 1) {
     problem_.start = pos;
     problem_.segments.clear();

@@ -39,6 +39,10 @@ std::string request_key(std::string_view partitioner, const OptionMap& options,
     key += "|allowed|";
     for (auto v : r.allowed.values()) key += static_cast<char>('0' + v);
   }
+  if (r.seen_from.size() > 0) {
+    key += "|seen_from";
+    for (int v : r.seen_from.values()) key += fmt::format("|{}", v);
+  }
   return key;
 }
 

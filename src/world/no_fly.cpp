@@ -90,6 +90,36 @@ void mark_reachable(const HullMask& hull, const grid::Grid<std::uint8_t>& flyabl
   }
 }
 
+// Flight components and which of them sees each hull cell (docs/model.md §8). The flyable
+// positions are exactly those connected to a start, so every component holds a UAV.
+void label_flight_components(const HullMask& hull, std::span<const grid::Cell> starts, int half1,
+                             int half2, Reachability& r) {
+  grid::Grid<int> labels;
+  grid::BfsScratch scratch;
+  const int count = grid::label_components(r.flyable, labels, scratch);
+  // Renumber by the lowest UAV id starting in each component.
+  std::vector<int> renumber(static_cast<std::size_t>(count), -1);
+  int next = 0;
+  for (const grid::Cell& s : starts) {
+    if (!labels.contains(s) || labels[s] < 0) continue;
+    int& to = renumber[static_cast<std::size_t>(labels[s])];
+    if (to < 0) to = next++;
+  }
+  r.flight_components = next;
+  r.flight_component = grid::Grid<int>(labels.width(), labels.height(), -1);
+  for (int i = 0; i < labels.size(); ++i) {
+    if (labels[i] >= 0) r.flight_component[i] = renumber[static_cast<std::size_t>(labels[i])];
+  }
+  r.seen_from = grid::Grid<int>(labels.width(), labels.height(), -1);
+  grid::DistanceService service(r.flyable, /*cached_fields=*/1);
+  for (int i : hull.cells()) {
+    if (r.reach[i] == 0) continue;
+    const grid::Cell c = hull.mask().cell(i);
+    const grid::Cell v = service.viewpoint(c, (r.reach[i] & kReachZ1) != 0 ? half1 : half2);
+    r.seen_from[i] = r.flight_component[v];
+  }
+}
+
 }  // namespace
 
 Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly, int s1, int s2,
@@ -124,6 +154,7 @@ Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly,
     if ((r.reach[i] & kReachZ1) == 0) ++r.unreachable_z1;
     if ((r.reach[i] & kReachZ2) == 0) ++r.unreachable_z2;
   }
+  label_flight_components(hull, starts, (s1 - 1) / 2, (s2 - 1) / 2, r);
   return r;
 }
 

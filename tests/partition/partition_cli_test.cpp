@@ -145,6 +145,60 @@ TEST_F(PartitionCli, TextSummaryWithExplicitStarts) {
   EXPECT_EQ(r.out.find("NO"), std::string::npos);  // every region connected
 }
 
+// A no-fly wall across the hull at x = 100 cuts the flight space in two: each part's cells go to
+// the UAVs starting in it (docs/model.md §8), three on the left, one on the right.
+TEST_F(PartitionCli, AWallThatCutsTheFlightSpaceIsPartitionedPerPart) {
+  const std::string args =
+      "--uavs 4 --no-fly-box 100,0,100,29 --start 20,15 --start 60,15 --start 90,15 "
+      "--start 180,15";
+  const auto r = run(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("  the no-fly zones cut the flight space into 2 parts; each part's cells "
+                       "go to its own UAVs:\n"
+                       "    part 0: UAVs 0, 1, 2; 2889 hull cells seen from it\n"
+                       "    part 1: UAVs 3; 3472 hull cells seen from it\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("  UAV  start        cells     desired  connected  part\n"
+                       "    0  (20, 15)       963      963.00  yes        0\n"
+                       "    1  (60, 15)       963      963.00  yes        0\n"
+                       "    2  (90, 15)       963      963.00  yes        0\n"
+                       "    3  (180, 15)     3472     3472.00  yes        1\n"),
+            std::string::npos)
+      << r.out;
+  const auto j = run(args + fmt::format(" --json --out '{}'", path("a.txt").string()));
+  ASSERT_EQ(j.status, 0) << j.err;
+  const auto doc = nlohmann::json::parse(j.out);
+  EXPECT_EQ(doc["flight_components"], 2);
+  EXPECT_EQ(doc["unreachable_cells"], 0);
+  std::vector<int> parts;
+  for (const auto& region : doc["regions"]) {
+    parts.push_back(region["flight_component"].get<int>());
+    EXPECT_EQ(region["connected"], true);
+  }
+  EXPECT_EQ(parts, (std::vector<int>{0, 0, 0, 1}));
+  // The mask: UAVs 0-2 left of the wall (x <= 100, the wall's own column is seen from the left),
+  // UAV 3 right of it.
+  const auto rows = mask_rows(read_text(path("a.txt")));
+  for (const std::string& row : rows) {
+    for (std::size_t x = 0; x < row.size(); ++x) {
+      if (row[x] == '.') continue;
+      EXPECT_EQ(row[x] == '3', x > 100) << "column " << x << ": " << row[x];
+    }
+  }
+}
+
+// Without a UAV on the right the right side cannot be seen: reported, and not balanced.
+TEST_F(PartitionCli, APartWithoutUavsIsReportedUnreachable) {
+  const auto r = run("--uavs 2 --no-fly-box 100,0,100,29 --start 20,15 --start 60,15 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["flight_components"], 1);
+  EXPECT_EQ(doc["unreachable_cells"], 3442);
+  EXPECT_EQ(doc["unreachable_z2_cells"], 3412);
+  EXPECT_EQ(doc["converged"], true);
+}
+
 TEST_F(PartitionCli, StripesCanBeShownToo) {
   const auto r = run("--uavs 3 --partitioner stripes --json");
   ASSERT_EQ(r.status, 0) << r.err;

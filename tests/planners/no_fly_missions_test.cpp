@@ -16,6 +16,7 @@
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/no_fly.hpp"
 #include "support/mission_checker.hpp"
+#include "support/no_fly_brute.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -111,41 +112,6 @@ std::vector<Layout> layouts() {
     out.push_back({fmt::format("random-{}", seed), std::move(m)});
   }
   return out;
-}
-
-// Brute force: a hull cell is z-reachable when some position within its footprint is not no-fly
-// and is connected to a start by a 4-path of positions that are not no-fly.
-std::pair<int, int> brute_unreachable(const world::HullMask& hull, const NoFly& no_fly,
-                                      const std::vector<grid::Cell>& starts, int s1, int s2) {
-  NoFly flyable(hull.width(), hull.height(), 0);
-  std::vector<grid::Cell> stack(starts.begin(), starts.end());
-  for (const auto& s : starts) flyable[s] = 1;
-  while (!stack.empty()) {
-    const grid::Cell c = stack.back();
-    stack.pop_back();
-    for (int d = 0; d < 4; ++d) {
-      const grid::Cell n{c.x + grid::kNeighbourDx[d], c.y + grid::kNeighbourDy[d]};
-      if (!flyable.contains(n) || flyable[n] || no_fly[n]) continue;
-      flyable[n] = 1;
-      stack.push_back(n);
-    }
-  }
-  auto count = [&](int s) {
-    const int half = (s - 1) / 2;
-    int unreachable = 0;
-    for (int i : hull.cells()) {
-      const grid::Cell c = hull.mask().cell(i);
-      bool seen = false;
-      for (int y = c.y - half; y <= c.y + half && !seen; ++y) {
-        for (int x = c.x - half; x <= c.x + half && !seen; ++x) {
-          seen = flyable.contains(x, y) && flyable(x, y);
-        }
-      }
-      unreachable += seen ? 0 : 1;
-    }
-    return unreachable;
-  };
-  return {count(s1), count(s2)};
 }
 
 struct Case {

@@ -20,7 +20,9 @@ namespace hullinspect::testing {
   for (int i = 0; i < p.owner.size(); ++i) {
     const int k = p.owner[i];
     if (!hull.is_hull(i)) {
-      if (k != -1) return ::testing::AssertionFailure() << fmt::format("non-hull cell {} assigned to {}", i, k);
+      if (k != -1)
+        return ::testing::AssertionFailure()
+               << fmt::format("non-hull cell {} assigned to {}", i, k);
       continue;
     }
     if (k < 0 || k >= n) {
@@ -39,13 +41,24 @@ namespace hullinspect::testing {
     if (sizes[uk] == 0) return ::testing::AssertionFailure() << "region " << k << " is empty";
     for (int i = 0; i < region.size(); ++i) region[i] = p.owner[i] == k;
     const int parts = grid::label_components(region, labels, scratch);
-    if (parts != 1) return ::testing::AssertionFailure() << "region " << k << " has " << parts << " components";
+    if (parts != 1 && check.regions_connected)
+      return ::testing::AssertionFailure() << "region " << k << " has " << parts << " components";
     if (check.regions_hold_starts && p.owner[request.starts[uk]] != k) {
       return ::testing::AssertionFailure() << "region " << k << " does not hold its start cell";
     }
+    if (request.seen_from.size() > 0) {
+      const int own = request.seen_from[request.starts[uk]];
+      for (int i : hull.cells()) {
+        if (p.owner[i] != k || request.seen_from[i] < 0 || request.seen_from[i] == own) continue;
+        return ::testing::AssertionFailure() << fmt::format(
+                   "region {} (flight component {}) holds cell ({}, {}), seen only from flight "
+                   "component {}",
+                   k, own, hull.mask().cell(i).x, hull.mask().cell(i).y, request.seen_from[i]);
+      }
+    }
     if (uk < p.region_cells.size() && p.region_cells[uk] != sizes[uk]) {
-      return ::testing::AssertionFailure() << fmt::format("region {} reports {} cells but has {}", k,
-                                                          p.region_cells[uk], sizes[uk]);
+      return ::testing::AssertionFailure() << fmt::format("region {} reports {} cells but has {}",
+                                                          k, p.region_cells[uk], sizes[uk]);
     }
     if (uk < p.desired_weight.size() &&
         std::abs(weights[uk] - p.desired_weight[uk]) > tolerance + 1e-9) {

@@ -1,7 +1,9 @@
 #pragma once
 // Shared partition checker: every hull cell assigned exactly once (non-hull cells −1), every region
-// 4-connected and (unless told otherwise) holding its start cell, region sizes matching the reported
-// counts, and balance within `tolerance` of the desired weights.
+// 4-connected (unless told otherwise) and holding its start cell (likewise), region sizes matching
+// the reported counts, and balance within `tolerance` of the desired weights. With no-fly zones
+// (request.seen_from) every region is flyable: each of its cells that some flight component sees
+// is seen from the component of its UAV's start (docs/model.md §8).
 
 #include <gtest/gtest.h>
 
@@ -11,7 +13,8 @@ namespace hullinspect::testing {
 
 struct PartitionCheck {
   bool regions_hold_starts = true;
-  double tolerance = -1;  ///< < 0: use the partition's reported tolerance
+  bool regions_connected = true;  ///< false: a region may be several 4-connected pieces
+  double tolerance = -1;          ///< < 0: use the partition's reported tolerance
 };
 
 ::testing::AssertionResult valid_partition(const partition::PartitionRequest& request,

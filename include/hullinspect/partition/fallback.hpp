@@ -19,7 +19,8 @@ inline constexpr std::string_view kFallbackPartitioner = "transfer";
 /// the `transfer` partitioner (default options, same request and seed) is run as well and its
 /// partition is returned instead if it converged or its largest imbalance is smaller. The returned
 /// partition then has `fallback` = "transfer", DARP's warnings followed by one saying so, and
-/// `seconds` covering both runs.
+/// `seconds` covering both runs. A request whose starts lie in several flight components is
+/// partitioned per component (partition/flight_split.hpp), the rule applying to each piece.
 Partition partition_with_fallback(std::string_view name, const OptionMap& options,
                                   const PartitionRequest& request);
 

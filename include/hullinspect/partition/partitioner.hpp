@@ -26,6 +26,10 @@ struct PartitionRequest {
   /// No-fly zones only: the positions UAVs can fly (1) — DARP's initial distances are then the
   /// shortest flights over them (docs/model.md). Empty = none (BFS through hull cells).
   grid::Grid<std::uint8_t> allowed;
+  /// No-fly zones only: per hull cell, the flight component that sees it, -1 none
+  /// (world::Reachability::seen_from). When the starts lie in several flight components, the
+  /// partition is made per component (partition/flight_split.hpp). Empty = one flight space.
+  grid::Grid<int> seen_from;
 };
 
 struct Partition {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/planners/waypoint_follower.hpp"
 
@@ -42,6 +43,7 @@ class LawnmowerPlanner final : public Planner {
   std::vector<WaypointFollower> followers_;
   std::vector<sim::UavState> last_;
   grid::DistanceService own_distances_;
+  FlightDistances flights_;  // per UAV: the service of its flight component
   // With no-fly zones only: the waypoints of the z = 2 leg still to come, and whether it began.
   std::vector<std::vector<grid::Cell>> climb_;
   std::vector<std::uint8_t> climbed_;

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/part_tsp_fsm.hpp"
 #include "hullinspect/planners/part_tsp_local_map.hpp"
 #include "hullinspect/planners/part_tsp_path.hpp"
@@ -93,6 +94,7 @@ class PartTspPlanner final : public Planner {
   sim::PlannerStats stats_;
   grid::DistanceService* distances_ = nullptr;  // the mission's, or own_distances_
   grid::DistanceService own_distances_;
+  FlightDistances flights_;  // per UAV: the service of its flight component (distances_ if one)
   // Scratch reused by every plan.
   std::vector<part_tsp::StripSegment> segments_;
   std::vector<std::pair<grid::Cell, grid::Cell>> ends_;

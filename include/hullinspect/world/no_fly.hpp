@@ -43,6 +43,15 @@ struct Reachability {
   int unreachable_z1 = 0;  ///< hull cells no flyable z = 1 footprint contains (never inspectable)
   int unreachable_z2 = 0;  ///< hull cells no flyable z = 2 footprint contains (never seen)
   bool any_no_fly = false;
+  /// No-fly zones only (empty otherwise): per position, the flight component it belongs to — the
+  /// 4-connected parts of the flyable positions, numbered in order of the lowest UAV id starting
+  /// in each (component 0 holds UAV 0) — and -1 where not flyable.
+  grid::Grid<int> flight_component;
+  int flight_components = 1;
+  /// No-fly zones only (empty otherwise): per hull cell, the one flight component that sees it
+  /// (docs/model.md §8): that of its z = 1 viewpoint when it is reachable at z = 1, else that of
+  /// its z = 2 viewpoint; -1 when unreachable at z = 2 (and for non-hull cells).
+  grid::Grid<int> seen_from;
 };
 inline constexpr std::uint8_t kReachZ2 = 1;
 inline constexpr std::uint8_t kReachZ1 = 2;
