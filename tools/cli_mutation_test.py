@@ -15,6 +15,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 TOKENS = [b"1e400", b"-1", b"18446744073709551616", b"4294967306", b"nan", b"inf", b"\n", b"\x00",
           b"[", b"]", b"{", b"}", b"\"", b",", b":", b"9999999999", b"P5", b"P2", b"#", b"X", b".",
@@ -125,17 +126,23 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         futures = {pool.submit(check, args.cli, fmt, hint, i, data, base): (fmt, i, data)
                    for fmt, hint, i, data in cases}
-        for fut in concurrent.futures.as_completed(futures):
+        start = time.monotonic()
+        for done, fut in enumerate(concurrent.futures.as_completed(futures), 1):
             fmt, i, data = futures[fut]
             problem, status, err = fut.result()
             statuses[(fmt, status)] = statuses.get((fmt, status), 0) + 1
+            # A progress line now and then: a run cut short still tells how far it got.
+            if done % 500 == 0:
+                elapsed = time.monotonic() - start
+                print(f"progress: {done} of {len(cases)} inputs in {elapsed:.0f} s, "
+                      f"{found} findings so far", flush=True)
             if problem:
                 found += 1
                 with open(os.path.join(findings, f"{fmt}-{i}.input"), "wb") as f:
                     f.write(data)
                 with open(os.path.join(findings, f"{fmt}-{i}.stderr"), "wb") as f:
                     f.write(err)
-                print(f"FINDING {fmt} #{i}: {problem}: {err[:300]!r}")
+                print(f"FINDING {fmt} #{i}: {problem}: {err[:300]!r}", flush=True)
     shutil.rmtree(base, ignore_errors=True)
     for (fmt, status), n in sorted(statuses.items(), key=str):
         print(f"  {fmt}: exit {status}: {n}")

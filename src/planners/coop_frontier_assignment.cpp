@@ -62,10 +62,17 @@ void FrontierAssigner::reduce_around(std::span<const grid::Cell> frontiers, grid
 FrontierAssigner::Pick FrontierAssigner::best_for(std::span<const grid::Cell> frontiers, int robot,
                                                   grid::Cell at) const {
   const auto table = travel_term_.size();
+  grid::DistanceService* distances =
+      robot_distances_.empty() ? distances_ : robot_distances_[static_cast<std::size_t>(robot)];
   const grid::Grid<int>* field =
-      distances_ != nullptr && distances_->has_no_fly() ? &distances_->field(at) : nullptr;
+      distances != nullptr && distances->has_no_fly() ? &distances->field(at) : nullptr;
   Pick best;
   for (std::size_t j = 0; j < frontiers.size(); ++j) {
+    // With the flight space in parts, only frontiers the robot's own part can see.
+    if (!robot_distances_.empty() &&
+        distances->viewpoint(frontiers[j], robot_half_) == grid::kNoCell) {
+      continue;
+    }
     const auto d = static_cast<std::size_t>(field != nullptr ? (*field)[frontiers[j]]
                                                              : grid::manhattan(at, frontiers[j]));
     const double travel = d < table ? travel_term_[d] : beta_ / static_cast<double>(d);
@@ -102,18 +109,21 @@ void FrontierAssigner::assign(std::span<const grid::Cell> frontiers,
     int winner = -1;
     for (std::size_t r = 0; r < robots.size(); ++r) {
       if (assigned_[r]) continue;
-      if (winner < 0 || best_[r].score > best_[static_cast<std::size_t>(winner)].score) {
+      const auto w = static_cast<std::size_t>(winner);
+      if (winner < 0 || (best_[w].frontier < 0 && best_[r].frontier >= 0) ||
+          (best_[r].frontier >= 0 && best_[r].score > best_[w].score)) {
         winner = static_cast<int>(r);
       }
     }
     const Pick pick = best_[static_cast<std::size_t>(winner)];
     assigned_[static_cast<std::size_t>(winner)] = 1;
+    if (pick.frontier < 0) continue;  // nothing its part of the flight space can see
     chosen[static_cast<std::size_t>(winner)] = pick.frontier;
     picks_.push_back(pick);
     const grid::Cell f = frontiers[static_cast<std::size_t>(pick.frontier)];
     reduce_around(frontiers, f);
     for (std::size_t r = 0; r < robots.size(); ++r) {
-      if (assigned_[r]) continue;
+      if (assigned_[r] || best_[r].frontier < 0) continue;
       const grid::Cell g = frontiers[static_cast<std::size_t>(best_[r].frontier)];
       const long long dx = g.x - f.x;
       const long long dy = g.y - f.y;

@@ -16,6 +16,13 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
       std::floor(options_.radius_factor * context.params.delta_zeta_cells() + 1e-9));
 
   distances_ = &distances_of(context, own_distances_);
+  // With the flight space cut into parts, each UAV flies by its own part's service and only takes
+  // work its part can see (docs/model.md §8).
+  flights_.build(context, *distances_);
+  uav_distances_.clear();
+  for (int k = 0; k < n; ++k) uav_distances_.push_back(&flights_.of(k));
+  needing_distances_.clear();
+  needing_distances_.reserve(static_cast<std::size_t>(n));
   reach_ = context.reach != nullptr && context.reach->any_no_fly ? &context.reach->reach : nullptr;
   half1_ = (context.params.s1 - 1) / 2;
   half2_ = (context.params.s2 - 1) / 2;
@@ -75,14 +82,21 @@ std::int8_t CoopFrontierPlanner::effective(int index, std::int8_t m) const {
   return m;
 }
 
-grid::Cell CoopFrontierPlanner::step_to(grid::Cell pos, grid::Cell target, int z) {
-  const grid::Cell at = distances_->viewpoint(target, z == 1 ? half1_ : half2_);
+grid::Cell CoopFrontierPlanner::step_to(int uav, grid::Cell pos, grid::Cell target, int z) {
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(uav)];
+  const grid::Cell at = distances.viewpoint(target, z == 1 ? half1_ : half2_);
   if (at == grid::kNoCell) return pos;
-  return distances_->next_step(pos, at);
+  return distances.next_step(pos, at);
 }
 
-const grid::Grid<int>* CoopFrontierPlanner::field_from(grid::Cell pos) {
-  return distances_->has_no_fly() ? &distances_->field(pos) : nullptr;
+bool CoopFrontierPlanner::sees(int uav, int index, int half) {
+  return !flights_.split() || uav_distances_[static_cast<std::size_t>(uav)]->viewpoint(
+                                  map_.cell(index), half) != grid::kNoCell;
+}
+
+const grid::Grid<int>* CoopFrontierPlanner::field_from(int uav, grid::Cell pos) {
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(uav)];
+  return distances.has_no_fly() ? &distances.field(pos) : nullptr;
 }
 
 void CoopFrontierPlanner::absorb_readings(const sim::PlannerView& view) {
@@ -112,7 +126,8 @@ void CoopFrontierPlanner::absorb_readings(const sim::PlannerView& view) {
 bool CoopFrontierPlanner::claim_detections(int uav, const sim::PlannerView& view) {
   bool claimed = false;
   for (const sim::Reading& r : view.sensed.readings(uav)) {
-    if ((r.events & sim::kEventDetection) && map_[r.index] == sim::kCorrosionSeen) {
+    if ((r.events & sim::kEventDetection) && map_[r.index] == sim::kCorrosionSeen &&
+        sees(uav, r.index, half1_)) {
       claimed = claims_.claim(uav, r.index) || claimed;
     }
   }
@@ -125,9 +140,9 @@ std::optional<grid::Cell> CoopFrontierPlanner::claim_nearest_free(int uav, grid:
   int best_index = -1;
   const auto indices = corrosion_left_.indices();
   const auto cells = corrosion_left_.cells();
-  const grid::Grid<int>* field = field_from(pos);
+  const grid::Grid<int>* field = field_from(uav, pos);
   for (std::size_t j = 0; j < cells.size(); ++j) {
-    if (claims_.owner(indices[j]) >= 0) continue;
+    if (claims_.owner(indices[j]) >= 0 || !sees(uav, indices[j], half1_)) continue;
     const int d = field != nullptr ? (*field)[cells[j]] : grid::manhattan(pos, cells[j]);
     if (!best || d < best_d || (d == best_d && cells[j] < *best)) {
       best = cells[j];
@@ -154,10 +169,12 @@ void CoopFrontierPlanner::assign_frontiers() {
         frontier_utility(options_.alpha, use_prior ? prior_field_.distance(i) : grid::kUnreachable,
                          use_detected ? detected_field_.distance(i) : grid::kUnreachable);
   }
+  if (flights_.split()) assigner_.set_robot_distances(needing_distances_, half2_);
   assigner_.assign(frontiers_.cells(), utility_, held_, needing_pos_,
                    std::span<int>(chosen_).first(needing_pos_.size()));
   const auto cells = frontiers_.cells();
   for (std::size_t r = 0; r < needing_uav_.size(); ++r) {
+    if (chosen_[r] < 0) continue;  // its part of the flight space sees no frontier: it waits
     uavs_[static_cast<std::size_t>(needing_uav_[r])].target =
         cells[static_cast<std::size_t>(chosen_[r])];
   }
@@ -182,6 +199,7 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
   held_.clear();
   needing_pos_.clear();
   needing_uav_.clear();
+  needing_distances_.clear();
 
   // Mode changes and INSPECT moves; collect the EXPLORE UAVs that keep or need a frontier.
   for (std::size_t k = 0; k < view.uavs.size(); ++k) {
@@ -210,18 +228,19 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
         plan.target = {-1, -1};
         needing_pos_.push_back(u.pos);
         needing_uav_.push_back(id);
+        needing_distances_.push_back(uav_distances_[k]);
       }
       continue;
     }
     // z = 1.
     if (plan.mode == Mode::kInspect) {
-      auto cell = claims_.inspect_target(id, u.pos, map_, radius_, field_from(u.pos));
+      auto cell = claims_.inspect_target(id, u.pos, map_, radius_, field_from(id, u.pos));
       if (!cell && options_.endgame_stay_low && frontiers_.empty()) {
         cell = claim_nearest_free(id, u.pos);
       }
       if (cell) {
         plan.target = *cell;
-        actions[k] = sim::step_towards(u.pos, step_to(u.pos, *cell, 1));
+        actions[k] = sim::step_towards(u.pos, step_to(id, u.pos, *cell, 1));
         continue;
       }
       plan.mode = Mode::kExplore;
@@ -244,7 +263,7 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
     const UavPlan& plan = uavs_[k];
     if (plan.mode == Mode::kExplore && plan.has_target() && !u.failed && !u.in_transit() &&
         u.z == 2) {
-      actions[k] = sim::step_towards(u.pos, step_to(u.pos, plan.target, 2));
+      actions[k] = sim::step_towards(u.pos, step_to(static_cast<int>(k), u.pos, plan.target, 2));
     }
     uavs_[k].changing_plane = u.in_transit() || actions[k] == Action::kChangePlane;
   }

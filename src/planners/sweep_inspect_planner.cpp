@@ -17,18 +17,28 @@ int chebyshev(grid::Cell a, grid::Cell b) {
 }
 }  // namespace
 
-grid::Cell SweepInspectPlanner::reach_position(grid::Cell pos, grid::Cell c, int h) const {
+grid::Cell SweepInspectPlanner::reach_position(int k, grid::Cell pos, grid::Cell c, int h) const {
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
   const grid::Cell clamped{std::clamp(pos.x, c.x - h, c.x + h),
                            std::clamp(pos.y, c.y - h, c.y + h)};
-  if (reach_ == nullptr || distances_->allowed(clamped)) return clamped;
-  return distances_->viewpoint(c, h);
+  if (reach_ == nullptr || distances.allowed(clamped)) return clamped;
+  return distances.viewpoint(c, h);
 }
 
-sim::Action SweepInspectPlanner::step(grid::Cell pos, grid::Cell to) const {
-  return sim::step_towards(pos, distances_->next_step(pos, to));
+bool SweepInspectPlanner::reachable(int k, int i, std::uint8_t bit) const {
+  if (reach_ == nullptr) return true;
+  if (((*reach_)[i] & bit) == 0) return false;
+  if (!flights_.split()) return true;
+  const int h = bit == world::kReachZ1 ? h1_ : h2_;
+  return uav_distances_[static_cast<std::size_t>(k)]->viewpoint(hull_cell(i), h) != grid::kNoCell;
+}
+
+sim::Action SweepInspectPlanner::step(int k, grid::Cell pos, grid::Cell to) const {
+  return sim::step_towards(pos, uav_distances_[static_cast<std::size_t>(k)]->next_step(pos, to));
 }
 
 std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
   auto waypoints = LawnmowerPlanner::sweep(partition_->owner, k, h2_ * 2 + 1, from);
   if (reach_ != nullptr) {
     // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
@@ -36,15 +46,14 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
     // miss is found as unknown cells by the help phase.
     std::vector<grid::Cell> flyable;
     for (const grid::Cell w : waypoints) {
-      const grid::Cell v = distances_->allowed(w) ? w : distances_->viewpoint(w, h2_);
+      const grid::Cell v = distances.allowed(w) ? w : distances.viewpoint(w, h2_);
       if (v != grid::kNoCell && (flyable.empty() || flyable.back() != v)) flyable.push_back(v);
     }
     waypoints = std::move(flyable);
   }
   // The same strips top to bottom when their far end is nearer (after the prior's inspections).
   if (options_.nearer_sweep_end && waypoints.size() > 1 &&
-      distances_->distance(from, waypoints.back()) <
-          distances_->distance(from, waypoints.front())) {
+      distances.distance(from, waypoints.back()) < distances.distance(from, waypoints.front())) {
     std::reverse(waypoints.begin(), waypoints.end());
   }
   return waypoints;
@@ -54,6 +63,11 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   // Every distance and move comes from the mission's distance service (docs/model.md, "No-fly
   // zones"); without no-fly positions it answers Manhattan distances and the x-then-y rule.
   distances_ = &distances_of(context, own_distances_);
+  // With the flight space cut into parts, each UAV flies by its own part's service.
+  flights_.build(context, *distances_);
+  uav_distances_.clear();
+  for (int k = 0; k < context.params.uavs; ++k) uav_distances_.push_back(&flights_.of(k));
+  width_ = context.hull.width();
   reach_ = context.reach != nullptr && context.reach->any_no_fly ? &context.reach->reach : nullptr;
   const auto& p = context.params;
   h1_ = (p.s1 - 1) / 2;
@@ -71,13 +85,14 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   for (int k = 0; k < n; ++k) {
     Uav& uav = uavs_[static_cast<std::size_t>(k)];
     uav.sweep.assign(sweep_from(k, context.starts[static_cast<std::size_t>(k)]));
-    uav.sweep.set_distances(distances_);
+    uav.sweep.set_distances(uav_distances_[static_cast<std::size_t>(k)]);
   }
   prior_.assign(static_cast<std::size_t>(n), {});
   if (options_.prior_first) {
     for (int i : context.hull.cells()) {
-      if (context.prior[i] == 1 && reachable(i, world::kReachZ1))
-        prior_[static_cast<std::size_t>(partition_->owner[i])].push_back(i);
+      const int owner = partition_->owner[i];
+      if (context.prior[i] == 1 && reachable(owner, i, world::kReachZ1))
+        prior_[static_cast<std::size_t>(owner)].push_back(i);
     }
   }
   positions_.assign(context.starts.begin(), context.starts.end());
@@ -98,8 +113,11 @@ bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
     if (static_cast<int>(j) == k || uavs_[j].target_cell != cell) continue;
     if (!options_.yield_claims) return true;
     const grid::Cell c = hull_cell(cell);
-    if (mine < 0) mine = distances_->distance(positions_[static_cast<std::size_t>(k)], c);
-    if (distances_->distance(positions_[j], c) <= mine) return true;
+    if (mine < 0) {
+      mine = uav_distances_[static_cast<std::size_t>(k)]->distance(
+          positions_[static_cast<std::size_t>(k)], c);
+    }
+    if (uav_distances_[j]->distance(positions_[j], c) <= mine) return true;
   }
   return false;
 }
@@ -112,8 +130,9 @@ int SweepInspectPlanner::nearest_pending(int k, grid::Cell pos, grid::Cell aroun
     const grid::Cell c = view.map.cell(i);
     if (radius >= 0 && chebyshev(c, around) > radius) continue;
     if (!options_.help && partition_->owner[i] != k) continue;
-    if (!reachable(i, world::kReachZ1) || claimed_by_other(k, i)) continue;
-    const int d = distances_->distance(pos, reach_position(pos, c, h1_));
+    if (!reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+    const int d =
+        uav_distances_[static_cast<std::size_t>(k)]->distance(pos, reach_position(k, pos, c, h1_));
     if (d < best_d) {
       best_d = d;
       best = i;
@@ -132,9 +151,10 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
       continue;
     }
     if (!options_.help && partition_->owner[i] != k) continue;
-    if (!reachable(i, world::kReachZ2) || claimed_by_other(k, i)) continue;
+    if (!reachable(k, i, world::kReachZ2) || claimed_by_other(k, i)) continue;
     const grid::Cell c = view.map.cell(i);
-    const int d = distances_->distance(pos, reach_position(pos, c, h2_));
+    const int d =
+        uav_distances_[static_cast<std::size_t>(k)]->distance(pos, reach_position(k, pos, c, h2_));
     if (d < best_d) {
       best_d = d;
       best = i;
@@ -177,9 +197,9 @@ void SweepInspectPlanner::hand_over_prior(const sim::PlannerView& view) {
       int best = -1;
       int best_d = std::numeric_limits<int>::max();
       for (std::size_t k = 0; k < uavs_.size(); ++k) {
-        if (view.uavs[k].failed) continue;
-        const int d =
-            distances_->distance(view.uavs[k].pos, reach_position(view.uavs[k].pos, c, h1_));
+        if (view.uavs[k].failed || !reachable(static_cast<int>(k), i, world::kReachZ1)) continue;
+        const int d = uav_distances_[k]->distance(
+            view.uavs[k].pos, reach_position(static_cast<int>(k), view.uavs[k].pos, c, h1_));
         if (d < best_d) {
           best_d = d;
           best = static_cast<int>(k);
@@ -228,14 +248,15 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       int best = -1;
       int best_d = std::numeric_limits<int>::max();
       for (int i : cells) {
-        const int d = distances_->distance(u.pos, reach_position(u.pos, view.map.cell(i), h1_));
+        const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
+            u.pos, reach_position(k, u.pos, view.map.cell(i), h1_));
         if (d < best_d) {
           best_d = d;
           best = i;
         }
       }
-      p.target = reach_position(u.pos, view.map.cell(best), h1_);
-      return step(u.pos, p.target);
+      p.target = reach_position(k, u.pos, view.map.cell(best), h1_);
+      return step(k, u.pos, p.target);
     }
   }
 
@@ -249,13 +270,13 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
         for (int i : pending_) {
           const grid::Cell c = view.map.cell(i);
           if (std::abs(c.x - u.pos.x) <= h1_ && std::abs(c.y - u.pos.y) <= h2_ &&
-              reachable(i, world::kReachZ1) && !claimed_by_other(k, i)) {
+              reachable(k, i, world::kReachZ1) && !claimed_by_other(k, i)) {
             p.resume = u.pos;
             return sim::Action::kChangePlane;
           }
         }
       }
-      if (p.mode == Mode::kReturn) return step(u.pos, p.resume);
+      if (p.mode == Mode::kReturn) return step(k, u.pos, p.resume);
       const sim::Action a = p.sweep.next_action(u.pos);
       if (a != sim::Action::kHover) return a;
       p.mode = Mode::kHelp;
@@ -268,16 +289,16 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     if (u.z == 2) {  // climbed back: resume the sweep
       p.mode = Mode::kReturn;
       p.target_cell = -1;
-      return u.pos == p.resume ? decide_uav(k, u, view) : step(u.pos, p.resume);
+      return u.pos == p.resume ? decide_uav(k, u, view) : step(k, u.pos, p.resume);
     }
     const int cell = nearest_pending(k, u.pos, p.resume, radius_, view);
     p.target_cell = cell;
     if (cell < 0) {
-      if (options_.resume_ahead) p.resume = rejoin_point(p, u.pos);
+      if (options_.resume_ahead) p.resume = rejoin_point(k, p, u.pos);
       return sim::Action::kChangePlane;
     }
-    p.target = reach_position(u.pos, view.map.cell(cell), h1_);
-    return step(u.pos, p.target);
+    p.target = reach_position(k, u.pos, view.map.cell(cell), h1_);
+    return step(k, u.pos, p.target);
   }
 
   if (p.mode == Mode::kHelp) {
@@ -290,7 +311,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
                               !(view.map[p.target_cell] == sim::kCorrosionSeen)) ||
                              (view.map[p.target_cell] == sim::kCorrosionSeen &&
                               (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0 &&
-                              !reachable(p.target_cell, world::kReachZ1));
+                              !reachable(k, p.target_cell, world::kReachZ1));
     if (target_done || claimed_by_other(k, p.target_cell)) {
       p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
       if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
@@ -304,18 +325,18 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     const bool inspect = view.map[p.target_cell] == sim::kCorrosionSeen &&
                          (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0;
     const int want_z = inspect ? 1 : 2;
-    p.target = reach_position(u.pos, c, inspect ? h1_ : h2_);
+    p.target = reach_position(k, u.pos, c, inspect ? h1_ : h2_);
     if (u.z != want_z) {
       // Change plane where the work is: go there first at z = 2, climb at once from z = 1.
-      if (u.z == 2 && u.pos != p.target) return step(u.pos, p.target);
+      if (u.z == 2 && u.pos != p.target) return step(k, u.pos, p.target);
       return sim::Action::kChangePlane;
     }
-    return step(u.pos, p.target);
+    return step(k, u.pos, p.target);
   }
   return sim::Action::kHover;  // kDone
 }
 
-grid::Cell SweepInspectPlanner::rejoin_point(const Uav& p, grid::Cell pos) const {
+grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos) const {
   // From the point where it left the strip (on the strip's flight row, at z = 2) the UAV saw the
   // whole strip band up to h2 columns ahead; so it may rejoin anywhere up to there without
   // leaving a gap — as far ahead as it now is, towards the strip end it is flying to.
@@ -325,7 +346,7 @@ grid::Cell SweepInspectPlanner::rejoin_point(const Uav& p, grid::Cell pos) const
   const int ahead =
       std::min({std::max(0, dir * (pos.x - p.resume.x)), h2_, std::abs(end.x - p.resume.x)});
   const grid::Cell rejoin{p.resume.x + dir * ahead, p.resume.y};
-  return distances_->allowed(rejoin) ? rejoin : p.resume;
+  return uav_distances_[static_cast<std::size_t>(k)]->allowed(rejoin) ? rejoin : p.resume;
 }
 
 bool SweepInspectPlanner::idle(const sim::PlannerView& view) const {

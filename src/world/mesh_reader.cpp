@@ -1,4 +1,6 @@
 // Mesh files → triangles, through Assimp (STL ASCII/binary, OBJ, PLY) and zlib (gzip in memory).
+// Assimp 5.2 crashes, leaks and hangs on some corrupt files (found by fuzz_mesh), so it runs in a
+// child process (core/isolated_call.hpp): its crash or hang becomes a one-line InputError.
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
@@ -7,10 +9,12 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cctype>
+#include <cstring>
 #include <string>
 #include <string_view>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/isolated_call.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 
 namespace hullinspect::world {
@@ -75,10 +79,96 @@ void check_ply_header(std::string_view bytes, const std::string& source) {
   throw InputError(source, 0, "not a readable ply mesh (its header has no end_header line)");
 }
 
+// What the child process sends back: 'T' and nine floats per triangle (Assimp's own numbers, so
+// the parent's doubles are exactly what an in-process read gave), or 'E' and the problem.
+constexpr char kTriangles = 'T';
+constexpr char kProblem = 'E';
+constexpr std::size_t kTriangleBytes = 9 * sizeof(float);
+
+// Runs in the child: Assimp and nothing of hullinspect's state.
+std::string import_with_assimp(std::string_view bytes, const std::string& format) {
+  Assimp::Importer importer;
+  // Only the geometry matters: no normals, materials or vertex joining (speed).
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = importer.ReadFileFromMemory(
+      bytes.data(), bytes.size(),
+      aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType,
+      format.c_str());
+  if (scene == nullptr) {
+    std::string why = importer.GetErrorString();
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    return kProblem + fmt::format("not a readable {} mesh ({})", format, why);
+  }
+  std::size_t count = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) count += mesh->mFaces[f].mNumIndices == 3;
+  }
+  std::string out(1, kTriangles);
+  out.reserve(1 + count * kTriangleBytes);
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const unsigned index = face.mIndices[k];
+        if (index >= mesh->mNumVertices)
+          return std::string(1, kProblem) + "a face index is out of range";
+        const aiVector3D& p = mesh->mVertices[index];
+        const float xyz[3] = {p.x, p.y, p.z};
+        out.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
+std::chrono::milliseconds mesh_reader_time_limit(std::size_t bytes) {
+  return std::chrono::seconds(60) + std::chrono::seconds(bytes >> 20);
+}
+
+namespace detail {
+
+std::vector<MeshTriangle> read_mesh_in_child(std::string_view bytes, const std::string& format,
+                                             const std::string& source,
+                                             std::chrono::milliseconds time_limit) {
+  const IsolatedResult result =
+      run_isolated([&] { return import_with_assimp(bytes, format); }, time_limit);
+  if (!result.ok) {
+    throw InputError(
+        source, 0,
+        fmt::format("not a readable {} mesh (the mesh reader {})", format, result.failure));
+  }
+  const std::string& out = result.output;
+  if (!out.empty() && out[0] == kProblem) throw InputError(source, 0, out.substr(1));
+  if (out.empty() || out[0] != kTriangles || (out.size() - 1) % kTriangleBytes != 0) {
+    throw InputError(source, 0,
+                     fmt::format("not a readable {} mesh (the mesh reader sent {} bytes that are "
+                                 "not triangles)",
+                                 format, out.size()));
+  }
+  std::vector<MeshTriangle> triangles((out.size() - 1) / kTriangleBytes);
+  const char* p = out.data() + 1;
+  for (MeshTriangle& t : triangles) {
+    float xyz[9];
+    std::memcpy(xyz, p, sizeof xyz);
+    p += sizeof xyz;
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (std::size_t c = 0; c < 3; ++c) t.v[k][c] = static_cast<double>(xyz[3 * k + c]);
+    }
+  }
+  return triangles;
+}
+
+}  // namespace detail
+
 std::vector<MeshTriangle> read_mesh(std::string_view bytes, std::string_view hint,
-                                    const std::string& source) {
+                                    const std::string& source,
+                                    std::chrono::milliseconds time_limit) {
   std::string inflated;
   if (is_gzip(bytes)) {
     inflated = inflate_gzip(bytes, source);
@@ -96,36 +186,9 @@ std::vector<MeshTriangle> read_mesh(std::string_view bytes, std::string_view hin
                      fmt::format("unknown mesh format '{}'; expected stl, obj or ply", format));
   }
   if (format == "ply" || bytes.starts_with("ply")) check_ply_header(bytes, source);
-  Assimp::Importer importer;
-  // Only the geometry matters: no normals, materials or vertex joining (speed).
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
-                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFileFromMemory(
-      bytes.data(), bytes.size(),
-      aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType,
-      format.c_str());
-  if (scene == nullptr) {
-    std::string why = importer.GetErrorString();
-    std::replace(why.begin(), why.end(), '\n', ' ');
-    throw InputError(source, 0, fmt::format("not a readable {} mesh ({})", format, why));
-  }
-  std::vector<MeshTriangle> triangles;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* mesh = scene->mMeshes[m];
-    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-      const aiFace& face = mesh->mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      MeshTriangle t;
-      for (std::size_t k = 0; k < 3; ++k) {
-        const unsigned index = face.mIndices[k];
-        if (index >= mesh->mNumVertices)
-          throw InputError(source, 0, "a face index is out of range");
-        const aiVector3D& p = mesh->mVertices[index];
-        t.v[k] = {static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(p.z)};
-      }
-      triangles.push_back(t);
-    }
-  }
+  if (time_limit.count() <= 0) time_limit = mesh_reader_time_limit(bytes.size());
+  std::vector<MeshTriangle> triangles =
+      detail::read_mesh_in_child(bytes, format, source, time_limit);
   if (triangles.empty()) throw InputError(source, 0, "the mesh has no triangles");
   return triangles;
 }

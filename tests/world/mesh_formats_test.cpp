@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <fmt/format.h>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -167,6 +168,43 @@ TEST_F(MeshFiles, BadFilesAreOneLineErrors) {
   EXPECT_EQ(
       error_of([] { import_mesh_file("/nonexistent/x.stl", {}); }).rfind("/nonexistent/x.stl: ", 0),
       0u);
+}
+
+// Assimp 5.2 crashes on this PLY body (a vertex element with only x, found by mutating box.ply)
+// and never returns from the other two (a list count of 39999999999; a header without
+// end_header, which read_mesh refuses before Assimp sees it, so detail:: reaches Assimp
+// directly). Assimp runs in a child process: each is a one-line error of the file and this
+// process goes on.
+const std::string kCrashingPly =
+    "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nelement face 12\n"
+    "property list uchar int vertex_indices\nend_header\n4 -1 2";
+const std::string kHangingPly =
+    "ply\nformat ascii 1.0\nelement vertex 8\nelement face 12\n"
+    "property list uchar int vertex_indices\nend_header\n0 -1 2\n4 -1 2\n4 1 2\n0 1 2\n"
+    "3 0 1 5\n3 0 5 4\n3 3 7 6\n3 3 6 2\n39999999999 4 5 6";
+
+TEST_F(MeshFiles, AssimpCrashesAndHangsAreOneLineErrors) {
+  EXPECT_EQ(error_of([&] { import_mesh_file(write("crash.ply", kCrashingPly), {}); }),
+            (dir_ / "crash.ply").string() +
+                ": not a readable ply mesh (the mesh reader crashed: signal 11)");
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(error_of([&] { read_mesh(kHangingPly, "ply", "hang.ply", std::chrono::seconds(1)); }),
+            "hang.ply: not a readable ply mesh (the mesh reader did not finish in 1 s)");
+  std::string no_end = ply();
+  no_end.replace(no_end.find("end_header"), 10, "end_headex");
+  EXPECT_EQ(error_of([&] {
+              detail::read_mesh_in_child(no_end, "ply", "h.ply", std::chrono::milliseconds(1500));
+            }),
+            "h.ply: not a readable ply mesh (the mesh reader did not finish in 1.5 s)");
+  EXPECT_EQ(error_of([&] { read_mesh(no_end, "ply", "h.ply"); }),
+            "h.ply: not a readable ply mesh (its header has no end_header line)");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 20) << "a hanging reader must be killed at its limit";
+  // This process still reads meshes afterwards, and the default limit grows with the size.
+  EXPECT_EQ(read_mesh(ply(), "ply", "d.ply").size(), kFaces.size());
+  EXPECT_EQ(mesh_reader_time_limit(0), std::chrono::seconds(60));
+  EXPECT_EQ(mesh_reader_time_limit(39u << 20), std::chrono::seconds(99));
 }
 
 }  // namespace

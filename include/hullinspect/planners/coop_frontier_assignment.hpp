@@ -12,7 +12,8 @@ namespace hullinspect::planners {
 
 /// U_f = α / d_HP + (1 − α) / d_C (eq. 13). Each distance is to the nearest member of its set, or
 /// grid::kUnreachable (or any value < 0) when that set is empty: the term then contributes 0. Both
-/// distances are clamped to at least 1 (model.md §5.4: d_C = max(1, ·); d_HP ≥ 1 on a frontier anyway).
+/// distances are clamped to at least 1 (model.md §5.4: d_C = max(1, ·); d_HP ≥ 1 on a frontier
+/// anyway).
 double frontier_utility(double alpha, int d_hp, int d_c);
 
 /// P(d) of eq. 17: d / (2·s2) for d < 2·s2, else 1.
@@ -36,6 +37,14 @@ class FrontierAssigner {
   void reserve(int frontiers, int robots);
   /// d(r, f) from the mission's distance service (shortest allowed flights); null: Manhattan.
   void set_distances(grid::DistanceService* distances) { distances_ = distances; }
+  /// No-fly zones that cut the flight space into parts (docs/model.md §8): for the next assign(),
+  /// robot r's d(r, f) comes from services[r] (the service of its own part) and r only takes
+  /// frontiers that service has a viewpoint for at footprint half-width `half` (a robot with none
+  /// gets −1). Empty: every robot uses set_distances()' service and may take any frontier.
+  void set_robot_distances(std::span<grid::DistanceService* const> services, int half) {
+    robot_distances_ = services;
+    robot_half_ = half;
+  }
 
   /// Assigns one frontier to every robot. `frontiers` are the cells of F with their utilities U_f
   /// (eq. 13) in `utility`; `held` are the targets other EXPLORE UAVs keep, which reduce U by eq.
@@ -62,6 +71,8 @@ class FrontierAssigner {
   double beta_ = 1.0;
   int s2_ = 7;
   grid::DistanceService* distances_ = nullptr;
+  std::span<grid::DistanceService* const> robot_distances_;
+  int robot_half_ = 0;
   std::vector<double> travel_term_;  // β / max(1, d) for d = 0 … max_distance
   std::vector<double> reduction_;    // P(√q) for squared distances q < (2·s2)²
   std::vector<double> reduced_;

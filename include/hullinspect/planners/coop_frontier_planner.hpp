@@ -1,6 +1,6 @@
 #pragma once
-// Coop-Frontier (model.md §5.4; paper Section IV-B): fully cooperative frontier-based inspection on the
-// shared map M, with frontier utilities from the prior and from detections (eq. 13), a greedy
+// Coop-Frontier (model.md §5.4; paper Section IV-B): fully cooperative frontier-based inspection on
+// the shared map M, with frontier utilities from the prior and from detections (eq. 13), a greedy
 // robot–frontier assignment with utility reduction (eqs. 15–17) and close-up inspection of detected
 // corrosion. No partition, so the fleet keeps working when UAVs fail.
 
@@ -13,6 +13,7 @@
 #include "hullinspect/planners/coop_frontier_claims.hpp"
 #include "hullinspect/planners/coop_frontier_fields.hpp"
 #include "hullinspect/planners/coop_frontier_frontiers.hpp"
+#include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
 
 namespace hullinspect::planners {
@@ -73,9 +74,12 @@ class CoopFrontierPlanner final : public Planner {
   /// corroded one no z = 1 footprint reaches read 1 (nothing is left to do there).
   std::int8_t effective(int index, std::int8_t m) const;
   /// The next position from `pos` towards the allowed place that sees `target` on plane z.
-  grid::Cell step_to(grid::Cell pos, grid::Cell target, int z);
+  grid::Cell step_to(int uav, grid::Cell pos, grid::Cell target, int z);
+  /// Whether UAV `uav`'s part of the flight space sees cell `index` with footprint half-width
+  /// `half` (always, unless no-fly zones cut the flight space into parts).
+  bool sees(int uav, int index, int half);
   /// The service's distance field from `pos` with no-fly zones; null (Manhattan) without.
-  const grid::Grid<int>* field_from(grid::Cell pos);
+  const grid::Grid<int>* field_from(int uav, grid::Cell pos);
   void absorb_readings(const sim::PlannerView& view);
   bool claim_detections(int uav, const sim::PlannerView& view);
   std::optional<grid::Cell> claim_nearest_free(int uav, grid::Cell pos);
@@ -89,7 +93,10 @@ class CoopFrontierPlanner final : public Planner {
 
   grid::DistanceService* distances_ = nullptr;  // the mission's, or own_distances_
   grid::DistanceService own_distances_;
-  const grid::Grid<std::uint8_t>* reach_ = nullptr;  // no-fly zones only: kReachZ1/Z2 bits
+  FlightDistances flights_;                                // per UAV: its part's service
+  std::vector<grid::DistanceService*> uav_distances_;      // flights_.of(k)
+  std::vector<grid::DistanceService*> needing_distances_;  // parallel to needing_pos_ (parts only)
+  const grid::Grid<std::uint8_t>* reach_ = nullptr;        // no-fly zones only: kReachZ1/Z2 bits
   int half1_ = 0;
   int half2_ = 0;
 

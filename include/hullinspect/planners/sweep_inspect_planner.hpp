@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/planners/waypoint_follower.hpp"
 
@@ -81,16 +82,16 @@ class SweepInspectPlanner final : public Planner {
   /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
   void hand_over_prior(const sim::PlannerView& view);
   /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
-  grid::Cell rejoin_point(const Uav& p, grid::Cell pos) const;
+  grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
-  /// footprint square); with no-fly zones, when that is not flyable, the service's viewpoint of c.
-  grid::Cell reach_position(grid::Cell pos, grid::Cell c, int h) const;
-  /// Whether cell i can ever be seen from z = 1 (bit kReachZ1) / z = 2 (kReachZ2).
-  bool reachable(int i, std::uint8_t bit) const {
-    return reach_ == nullptr || ((*reach_)[i] & bit) != 0;
-  }
-  /// The move from `pos` one step along the service's shortest flight to `to`.
-  sim::Action step(grid::Cell pos, grid::Cell to) const;
+  /// footprint square); with no-fly zones, when that is not flyable by UAV k, the viewpoint of c
+  /// in UAV k's service (kNoCell when its part of the flight space has none).
+  grid::Cell reach_position(int k, grid::Cell pos, grid::Cell c, int h) const;
+  /// Whether UAV k can ever see cell i from z = 1 (bit kReachZ1) / z = 2 (kReachZ2): some flyable
+  /// position does, and, when no-fly zones cut the flight space into parts, one of k's part.
+  bool reachable(int k, int i, std::uint8_t bit) const;
+  /// The move from `pos` one step along UAV k's service's shortest flight to `to`.
+  sim::Action step(int k, grid::Cell pos, grid::Cell to) const;
 
   SweepInspectOptions options_;
   std::shared_ptr<const partition::Partition> partition_;
@@ -100,8 +101,10 @@ class SweepInspectPlanner final : public Planner {
   std::vector<std::vector<int>> prior_;  // per UAV: the prior's cells of its region still M = 2
   grid::DistanceService own_distances_;
   grid::DistanceService* distances_ = nullptr;
-  const grid::Grid<std::uint8_t>* reach_ = nullptr;  // null: no no-fly zones, all reachable
-  std::vector<grid::Cell> positions_;                // the UAVs' positions at this decision
+  FlightDistances flights_;
+  std::vector<grid::DistanceService*> uav_distances_;  // per UAV: flights_.of(k)
+  const grid::Grid<std::uint8_t>* reach_ = nullptr;    // null: no no-fly zones, all reachable
+  std::vector<grid::Cell> positions_;                  // the UAVs' positions at this decision
   int width_ = 0;
   grid::Cell hull_cell(int index) const { return {index % width_, index / width_}; }
   int prior_true_ = 0;   // prior cells found corroded so far (fleet-wide)

@@ -4,6 +4,7 @@
 // plane with a depth buffer, and keep the cells covered enough as the hull mask plus its geometry.
 
 #include <array>
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -48,10 +49,27 @@ struct MeshImport {
 /// True for names ending in .stl, .obj, .ply, optionally followed by .gz (any case).
 bool is_mesh_path(const std::filesystem::path& path);
 
+/// Wall-time limit of the child process that runs Assimp on `bytes` (decompressed) bytes:
+/// 60 s + 1 s per MiB (the 39 MB DTC is read in under a second).
+std::chrono::milliseconds mesh_reader_time_limit(std::size_t bytes);
+
 /// Parses mesh bytes with Assimp; gzip data (magic 1f 8b) is inflated in memory first. `hint` is
 /// the format's extension ("stl", "obj", "ply"). Throws InputError naming `source`.
+/// Assimp runs in a child process (core/isolated_call.hpp): a crash inside it, or a read not done
+/// within `time_limit` (0: mesh_reader_time_limit), is an InputError too ("not a readable ply mesh
+/// (the mesh reader crashed: signal 11)"). Safe to call from any thread, but call it before
+/// starting threads where possible: see the fork caveat in core/isolated_call.hpp.
 std::vector<MeshTriangle> read_mesh(std::string_view bytes, std::string_view hint,
-                                    const std::string& source);
+                                    const std::string& source,
+                                    std::chrono::milliseconds time_limit = {});
+
+namespace detail {
+/// read_mesh's child process alone, without the checks before it (tests reach Assimp's known hang
+/// through it). `format` is "stl", "obj" or "ply".
+std::vector<MeshTriangle> read_mesh_in_child(std::string_view bytes, const std::string& format,
+                                             const std::string& source,
+                                             std::chrono::milliseconds time_limit);
+}  // namespace detail
 
 /// Projects the triangles (SPEC-model §Hulls from meshes) into a hull with geometry. Throws
 /// InputError naming `source` when nothing faces the side, the grid is too large, no cell is hull,
