@@ -107,7 +107,13 @@ TEST(HullGeometry, BadFilesNameTheField) {
     edit(doc);
     return error_of([&] { parse_hull_json(doc.dump(), "h.json"); });
   };
-  EXPECT_EQ(error_of([] { parse_hull_json("{", "h.json"); }), "h.json: not valid JSON (byte 2)");
+  EXPECT_EQ(error_of([] { parse_hull_json("{", "h.json"); }),
+            "h.json:1: not valid JSON: syntax error while parsing object key - unexpected end of "
+            "input; expected string literal");
+  // Found by the whole-CLI mutation test: a number no double holds was nlohmann's exception.
+  EXPECT_EQ(
+      error_of([] { parse_hull_json("{\"format\": 1,\n\"depth\": [[0.1e4000]]}", "h.json"); }),
+      "h.json:2: not valid JSON: number overflow parsing '0.1e4000' (in depth[0][0])");
   EXPECT_EQ(with([](auto& d) { d["format"] = "x"; }),
             "h.json: format: expected \"hullinspect-hull\"");
   EXPECT_EQ(with([](auto& d) { d["version"] = 2; }), "h.json: version: expected 1");
