@@ -58,6 +58,7 @@ Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionS
   distances_ = world::make_distance_service(reach_);
   planners::PlannerContext context{*hull_,      spec_.params, instance_.prior, starts_,
                                    partitions_, &distances_,  &reach_};
+  context.corrosion = planners::prior_statistics(spec_);
   const auto t0 = Clock::now();
   planner_->start(context);
   planner_seconds_ += seconds_since(t0);

@@ -49,6 +49,7 @@ int plan(const PlanArgs& args) {
   io::TraceRecorder recorder(instance, io::spec_json(spec, hull.source()));
   planners::MissionOptions options;
   options.observers.push_back(&recorder);
+  options.corrosion = planners::prior_statistics(spec);
   const sim::MissionResult result =
       planners::run_mission(hull, instance, spec.params, *planner, options);
   const auto trace = recorder.finish(result);

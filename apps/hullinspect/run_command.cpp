@@ -8,8 +8,8 @@
 #include "commands.hpp"
 #include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/core/plural.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/io/viewer_html.hpp"
@@ -32,16 +32,18 @@ struct RunArgs {
 void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
   std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: {}\n", spec.algorithm,
-                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2, spec.seed,
-                           r.complete         ? "complete"
-                           : r.stopped_idle   ? "INCOMPLETE (no working UAV has work left)"
+                           plural(spec.params.uavs, "UAV"), spec.params.s1, spec.params.s2,
+                           spec.seed,
+                           r.complete       ? "complete"
+                           : r.stopped_idle ? "INCOMPLETE (no working UAV has work left)"
                            : r.failed_uavs == spec.params.uavs ? "INCOMPLETE (every UAV failed)"
                                                                : "INCOMPLETE (time limit reached)");
   if (r.failed_uavs > 0) {
     std::string which;
     for (std::size_t k = 0; k < r.uavs.size(); ++k) {
       if (r.uavs[k].failed_at >= 0) {
-        which += fmt::format("{}UAV {} at t = {}", which.empty() ? "" : ", ", k, r.uavs[k].failed_at);
+        which +=
+            fmt::format("{}UAV {} at t = {}", which.empty() ? "" : ", ", k, r.uavs[k].failed_at);
       }
     }
     std::cout << fmt::format("  failed: {}\n", which);
@@ -95,6 +97,7 @@ int run(const RunArgs& args) {
     options.observers.push_back(&*recorder);
   }
   options.failures = spec.failures;
+  options.corrosion = planners::prior_statistics(spec);
   const sim::MissionResult result =
       planners::run_mission(hull, instance, spec.params, *planner, options);
   if (tracing) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "hullinspect/planners/lawnmower_no_fly.hpp"
+#include "hullinspect/planners/prior_weights.hpp"
 
 namespace hullinspect::planners {
 
@@ -34,6 +35,7 @@ void LawnmowerPlanner::start(const PlannerContext& context) {
   request.starts.assign(context.starts.begin(), context.starts.end());
   request.seed = options_.partition_seed;
   add_no_fly(request, context);
+  add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
   flights_.build(context, distances_of(context, own_distances_));

@@ -61,6 +61,7 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
                          &distances,
                          &sim.reachability()};
   if (planner.sees_truth()) context.truth = &instance.truth;
+  context.corrosion = options.corrosion;
   double planner_seconds = 0;
   auto t0 = Clock::now();
   planner.start(context);

@@ -30,6 +30,11 @@ void validate(const MissionSpec& spec, const world::HullMask& hull) {
   }
 }
 
+const world::CorrosionParams* prior_statistics(const MissionSpec& spec) {
+  // The scenario describes the prior only when both maps were drawn from it.
+  return spec.maps.empty() ? &spec.corrosion : nullptr;
+}
+
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const MissionOptions& options) {
   validate(spec, hull);
@@ -38,6 +43,7 @@ sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& h
   auto planner = make_planner(spec.algorithm, spec.planner_options);
   MissionOptions with_failures = options;
   if (with_failures.failures.empty()) with_failures.failures = spec.failures;
+  if (with_failures.corrosion == nullptr) with_failures.corrosion = prior_statistics(spec);
   return run_mission(hull, instance, spec.params, *planner, with_failures);
 }
 

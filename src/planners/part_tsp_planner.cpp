@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/planners/prior_weights.hpp"
 
 namespace hullinspect::planners {
 
@@ -37,6 +38,7 @@ void PartTspPlanner::start(const PlannerContext& context) {
   request.starts.assign(context.starts.begin(), context.starts.end());
   request.seed = options_.partition_seed;
   add_no_fly(request, context);
+  add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
   if (options_.oracle && !context.truth)

@@ -23,7 +23,16 @@ std::string request_key(std::string_view partitioner, const OptionMap& options,
   for (auto v : mask.values()) key += static_cast<char>('0' + v);
   for (const auto& s : r.starts) key += fmt::format("|{},{}", s.x, s.y);
   key += fmt::format("|seed={}", r.seed);
-  for (double w : r.weights.values()) key += fmt::format("|{}", w);
+  // Weights (prior-aware partitions: one per instance) run-length encoded: they take few
+  // distinct values, and an experiment keeps one key per instance.
+  const auto& weights = r.weights.values();
+  key += "|weights";
+  for (std::size_t i = 0; i < weights.size();) {
+    std::size_t j = i + 1;
+    while (j < weights.size() && weights[j] == weights[i]) ++j;
+    key += fmt::format("|{}*{}", weights[i], j - i);
+    i = j;
+  }
   key += "|shares";
   for (double s : r.shares) key += fmt::format("|{}", s);
   if (r.allowed.size() > 0) {

@@ -6,6 +6,7 @@
 #include "hullinspect/planners/lawnmower_planner.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/prior_weights.hpp"
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
 namespace hullinspect::planners {
@@ -32,6 +33,7 @@ Params<LawnmowerOptions> lawnmower_params() {
             return partition::resolve_partitioner_options(o.partitioner, m);
           },
           "option <key> of the partitioner (e.g. partitioner.iteration-limit=4000 for darp)");
+  declare_prior_weight_options(p);
   return p;
 }
 
@@ -69,6 +71,7 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
             return partition::resolve_partitioner_options(o.partitioner, m);
           },
           "option <key> of the partitioner (e.g. partitioner.iteration-limit=4000 for darp)");
+  declare_prior_weight_options(p);
   return p;
 }
 
@@ -84,8 +87,6 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "descend when a detection is abreast (false: inspect only after the sweep)")
       .number("radius-factor", &SweepInspectOptions::radius_factor, 0.0, 1e3,
               "inspect detections within radius-factor * s2 of the descent point")
-      .flag("prior-weights", &SweepInspectOptions::prior_weights,
-            "DARP weighted by the expected work per cell (prior-aware)")
       .flag("prior-first", &SweepInspectOptions::prior_first,
             "first inspect the prior's cells of the region at z = 1, then sweep")
       .flag("resume-ahead", &SweepInspectOptions::resume_ahead,
@@ -110,6 +111,7 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             return partition::resolve_partitioner_options(o.partitioner, m);
           },
           "option <key> of the partitioner (e.g. partitioner.iteration-limit=4000 for darp)");
+  declare_prior_weight_options(p);
   return p;
 }
 

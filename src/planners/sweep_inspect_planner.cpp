@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "hullinspect/planners/lawnmower_planner.hpp"
+#include "hullinspect/planners/prior_weights.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 namespace hullinspect::planners {
@@ -77,14 +78,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   request.starts.assign(context.starts.begin(), context.starts.end());
   request.seed = options_.partition_seed;
   add_no_fly(request, context);
-  if (options_.prior_weights) {
-    // Expected work of a cell: sweeping it at z = 2 costs 1/s2 of a step; a prior cell adds an
-    // expected inspection detour (its probability of being real times ~ one z = 1 pass of s1).
-    request.weights = grid::Grid<double>(context.hull.width(), context.hull.height(), 0.0);
-    for (int i : context.hull.cells()) {
-      request.weights[i] = 1.0 + (context.prior[i] == 1 ? static_cast<double>(p.s2) / p.s1 : 0.0);
-    }
-  }
+  add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = p.uavs;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});

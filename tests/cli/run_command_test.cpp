@@ -39,20 +39,28 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadInput{{"--uavs", "0"}, "hullinspect: --uavs: must be at least 1 (got 0)"},
         BadInput{{"--uavs", "-3"}, "hullinspect: --uavs: must be at least 1 (got -3)"},
-        BadInput{{"--uavs", "7000"}, "hullinspect: --uavs: must be at most the 6361 hull cells (got 7000)"},
+        BadInput{{"--uavs", "7000"},
+                 "hullinspect: --uavs: must be at most the 6361 hull cells (got 7000)"},
         BadInput{{"--s1", "4"}, "hullinspect: --s1: must be a positive odd integer (got 4)"},
-        BadInput{{"--s2", "8"}, "hullinspect: --s2: must be an odd integer greater than s1 = 5 (got 8)"},
+        BadInput{{"--s2", "8"},
+                 "hullinspect: --s2: must be an odd integer greater than s1 = 5 (got 8)"},
         BadInput{{"--s1", "7", "--s2", "7"},
                  "hullinspect: --s2: must be an odd integer greater than s1 = 7 (got 7)"},
-        BadInput{{"--s2", "3"}, "hullinspect: --s2: must be an odd integer greater than s1 = 5 (got 3)"},
+        BadInput{{"--s2", "3"},
+                 "hullinspect: --s2: must be an odd integer greater than s1 = 5 (got 3)"},
         BadInput{{"--p-c", "1.5"}, "hullinspect: --p-c: must be a number in [0, 1] (got '1.5')"},
-        BadInput{{"--p-tp", "-0.1"}, "hullinspect: --p-tp: must be a number in [0, 1] (got '-0.1')"},
+        BadInput{{"--p-tp", "-0.1"},
+                 "hullinspect: --p-tp: must be a number in [0, 1] (got '-0.1')"},
         BadInput{{"--p-fp", "2"}, "hullinspect: --p-fp: must be a number in [0, 1] (got '2')"},
         BadInput{{"--l-c", "4"}, "hullinspect: --l-c: must be a positive odd integer (got 4)"},
-        BadInput{{"--theta", "0"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 0)"},
-        BadInput{{"--theta", "180"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 180)"},
-        BadInput{{"--theta", "-5"}, "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got -5)"},
-        BadInput{{"--time-limit", "0"}, "hullinspect: --time-limit: must be at least 1 step (got 0)"},
+        BadInput{{"--theta", "0"},
+                 "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 0)"},
+        BadInput{{"--theta", "180"},
+                 "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got 180)"},
+        BadInput{{"--theta", "-5"},
+                 "hullinspect: --theta: must be in (0, 180) degrees, exclusive (got -5)"},
+        BadInput{{"--time-limit", "0"},
+                 "hullinspect: --time-limit: must be at least 1 step (got 0)"},
         BadInput{{"--hull", "/nonexistent/hull.txt"},
                  "hullinspect: /nonexistent/hull.txt: cannot open the hull file"},
         BadInput{{"--scenario", "stormy"},
@@ -60,7 +68,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "inhomogeneous, combined)"},
         BadInput{{"--algorithm", "lawnmower", "--alpha", "0.3"},
                  "hullinspect: --alpha: unknown option (known: partitioner, partition-seed, "
-                 "partitioner.<key>)"},
+                 "partitioner.<key>, prior-weights, prior-statistics)"},
         BadInput{{"--seed", "x1"},
                  "hullinspect: --seed: must be an integer in [0, 18446744073709551615] (got 'x1') "
                  "(see --help)"},
@@ -83,7 +91,8 @@ TEST(RunCommand, SummaryCountsOneUavInTheSingular) {
 TEST(RunCommand, UnknownAlgorithmListsTheKnownOnes) {
   const auto r = run_cli({"run", "--algorithm", "zigzag"});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err.rfind("hullinspect: --algorithm: unknown algorithm 'zigzag' (known: ", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("hullinspect: --algorithm: unknown algorithm 'zigzag' (known: ", 0), 0u)
+      << r.err;
   EXPECT_NE(r.err.find("lawnmower"), std::string::npos);
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
 }
@@ -94,9 +103,10 @@ TEST(RunCommand, MalformedHullFileNamesFileAndLine) {
   std::ofstream(hull) << "XXX\nX?X\n";
   const auto r = run_cli({"run", "--hull", hull});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "hullinspect: " + hull +
-                       ":2: unexpected character '?' in column 2; a text mask uses 'X' or '#' (hull) "
-                       "and '.' (not hull)\n");
+  EXPECT_EQ(r.err,
+            "hullinspect: " + hull +
+                ":2: unexpected character '?' in column 2; a text mask uses 'X' or '#' (hull) "
+                "and '.' (not hull)\n");
   std::filesystem::remove_all(dir);
 }
 
@@ -104,8 +114,9 @@ TEST(RunCommand, JsonHasEveryDocumentedField) {
   const auto r = run_cli({"run", "--json", "--uavs", "4", "--s2", "9", "--seed", "5"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"algorithm", "uavs", "s1", "s2", "seed", "complete", "T_c", "T_m", "moves",
-                          "plane_changes", "hovers", "redundant_observations", "planner_seconds"}) {
+  for (const char* key :
+       {"algorithm", "uavs", "s1", "s2", "seed", "complete", "T_c", "T_m", "moves", "plane_changes",
+        "hovers", "redundant_observations", "planner_seconds"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["uavs"], 4);
@@ -156,9 +167,10 @@ TEST(RunCommand, TraceIsWrittenAndCompactForEightUavs) {
 TEST(RunCommand, HelpDocumentsEveryOption) {
   const auto r = run_cli({"run", "--help"});
   EXPECT_EQ(r.status, 0);
-  for (const char* opt : {"--algorithm", "--uavs", "--s1", "--s2", "--theta", "--seed", "--p-c", "--l-c",
-                          "--p-tp", "--p-fp", "--hull", "--partitioner", "--time-limit", "--json",
-                          "--trace", "--html", "--r1", "--r2", "--tsp-solver", "--alpha", "--beta"}) {
+  for (const char* opt :
+       {"--algorithm", "--uavs", "--s1",   "--s2",   "--theta",       "--seed",       "--p-c",
+        "--l-c",       "--p-tp", "--p-fp", "--hull", "--partitioner", "--time-limit", "--json",
+        "--trace",     "--html", "--r1",   "--r2",   "--tsp-solver",  "--alpha",      "--beta"}) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   }
 }

@@ -100,10 +100,13 @@ TEST(ExperimentPlan, RunIdsAreStableAndUnique) {
                 "options=partition-seed=0;partitioner=darp;partitioner.cc=0.01;"
                 "partitioner.fairness-gain=1;partitioner.gain-growth=1.25;partitioner.gain-shrink="
                 "0.7;partitioner.iteration-limit=2000;partitioner.max-discrepancy=2;"
-                "partitioner.repair-fallback=true;partitioner.rl=0.0001");
+                "partitioner.repair-fallback=true;partitioner.rl=0.0001;prior-statistics=true;"
+                "prior-weights=false");
   EXPECT_EQ(a.runs()[0].id, stable_id(a.cells()[0].canonical + "|seed=11"));
   EXPECT_EQ(a.config().hull_hash, "5f6762874a04fea0");
-  EXPECT_EQ(a.runs()[0].id, "ef3533719d160398");  // effective options since the parameter system
+  // Effective options since the parameter system; changed on purpose when the lawnmower got the
+  // prior-aware partition options (issue 15; was ef3533719d160398).
+  EXPECT_EQ(a.runs()[0].id, "3e6eeea6eeb73ae0");
 }
 
 TEST(ExperimentPlan, IdsDependOnTheirOwnCellOnly) {
@@ -133,7 +136,8 @@ TEST(ExperimentPlan, ConfigReadBackFromJsonExpandsIdentically) {
   const auto plan = plan_of(kConfig);
   const ExperimentPlan back(config_from_json(config_json(plan.config()), "manifest.json"));
   ASSERT_EQ(back.runs().size(), plan.runs().size());
-  for (std::size_t i = 0; i < plan.runs().size(); ++i) EXPECT_EQ(back.runs()[i].id, plan.runs()[i].id);
+  for (std::size_t i = 0; i < plan.runs().size(); ++i)
+    EXPECT_EQ(back.runs()[i].id, plan.runs()[i].id);
 }
 
 TEST(Shard, ParsesKOfN) {
@@ -168,7 +172,9 @@ TEST(Shard, ShardsPartitionTheRunsEvenly) {
     sizes.push_back(size);
   }
   for (int o : owners) EXPECT_EQ(o, 1);
-  EXPECT_LE(*std::max_element(sizes.begin(), sizes.end()) - *std::min_element(sizes.begin(), sizes.end()), 1);
+  EXPECT_LE(
+      *std::max_element(sizes.begin(), sizes.end()) - *std::min_element(sizes.begin(), sizes.end()),
+      1);
 }
 
 TEST(Shard, FromSlurmJobArrays) {
@@ -178,9 +184,12 @@ TEST(Shard, FromSlurmJobArrays) {
     return it == env.end() ? nullptr : it->second.c_str();
   };
   EXPECT_FALSE(shard_from_slurm(lookup).has_value());
-  env = {{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "4"}, {"SLURM_ARRAY_TASK_MIN", "0"}};
+  env = {
+      {"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "4"}, {"SLURM_ARRAY_TASK_MIN", "0"}};
   EXPECT_EQ(shard_from_slurm(lookup)->text(), "1/4");
-  env = {{"SLURM_ARRAY_TASK_ID", "10"}, {"SLURM_ARRAY_TASK_COUNT", "10"}, {"SLURM_ARRAY_TASK_MIN", "1"}};
+  env = {{"SLURM_ARRAY_TASK_ID", "10"},
+         {"SLURM_ARRAY_TASK_COUNT", "10"},
+         {"SLURM_ARRAY_TASK_MIN", "1"}};
   EXPECT_EQ(shard_from_slurm(lookup)->text(), "10/10");  // --array=1-10
   env = {{"SLURM_ARRAY_TASK_ID", "4"},
          {"SLURM_ARRAY_TASK_COUNT", "3"},
@@ -218,13 +227,15 @@ TEST(ExperimentPlan, RecordsEffectiveOptionsWithDefaults) {
   // An explicit default and an omitted one give the same cells.
   const auto explicit_default = plan_of(
       "hull: rectangle\ngrid: {width: 24, height: 8}\n"
-      "algorithms: [lawnmower, {name: part-tsp, label: pt, options: {r1: 3, r2: 0, tsp.kicks: 4}}]\n"
+      "algorithms: [lawnmower, {name: part-tsp, label: pt, options: {r1: 3, r2: 0, tsp.kicks: "
+      "4}}]\n"
       "instances: 1\n");
   EXPECT_EQ(explicit_default.cells()[1].id, plan.cells()[1].id);
   // Old spellings are refused with the line and a hint.
   try {
-    plan_of("hull: rectangle\ngrid: {width: 24, height: 8}\n"
-            "algorithms:\n  - {name: part-tsp, options: {tsp.dp_max_segments: 4}}\n");
+    plan_of(
+        "hull: rectangle\ngrid: {width: 24, height: 8}\n"
+        "algorithms:\n  - {name: part-tsp, options: {tsp.dp_max_segments: 4}}\n");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),

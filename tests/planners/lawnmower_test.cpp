@@ -48,8 +48,7 @@ TEST_P(LawnmowerMissions, CompleteOnTheDefaultHullWithInvariants) {
   EXPECT_EQ(partitions.computed(), 1);  // shared across the five instances
 }
 
-INSTANTIATE_TEST_SUITE_P(AllFleets, LawnmowerMissions,
-                         ::testing::ValuesIn([] {
+INSTANTIATE_TEST_SUITE_P(AllFleets, LawnmowerMissions, ::testing::ValuesIn([] {
                            std::vector<Case> cases;
                            for (int n = 1; n <= 8; ++n) {
                              for (int s2 : {7, 9, 11}) cases.push_back({n, s2});
@@ -57,7 +56,8 @@ INSTANTIATE_TEST_SUITE_P(AllFleets, LawnmowerMissions,
                            return cases;
                          }()),
                          [](const auto& test) {
-                           return "n" + std::to_string(test.param.n) + "_s2_" + std::to_string(test.param.s2);
+                           return "n" + std::to_string(test.param.n) + "_s2_" +
+                                  std::to_string(test.param.s2);
                          });
 
 TEST(Lawnmower, SweepVisitsStripsBottomToTopFromTheNearerEnd) {
@@ -108,7 +108,8 @@ TEST(Determinism, SameInputsGiveIdenticalResultsAndTraces) {
   spec.corrosion = world::scenario("imperfect").corrosion(230);
   spec.seed = 11;
   auto run_traced = [&] {
-    const auto instance = world::generate_instance(world::default_hull(), spec.corrosion, spec.seed);
+    const auto instance =
+        world::generate_instance(world::default_hull(), spec.corrosion, spec.seed);
     auto planner = make_planner(spec.algorithm, spec.planner_options);
     io::TraceRecorder recorder(instance, io::spec_json(spec, "builtin:default"));
     MissionOptions options;
@@ -131,7 +132,8 @@ TEST(Registry, UnknownNamesAndOptionsAreNamed) {
     FAIL();
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.name(), "algorithm");
-    EXPECT_NE(std::string(e.what()).find("unknown algorithm 'zigzag' (known: lawnmower"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("unknown algorithm 'zigzag' (known: lawnmower"),
+              std::string::npos);
   }
   try {
     make_planner("lawnmower", {{"alpha", "0.5"}});
@@ -139,7 +141,7 @@ TEST(Registry, UnknownNamesAndOptionsAreNamed) {
   } catch (const ParameterError& e) {
     EXPECT_EQ(std::string(e.what()),
               "lawnmower.alpha: unknown option (known: partitioner, partition-seed, "
-              "partitioner.<key>)");
+              "partitioner.<key>, prior-weights, prior-statistics)");
   }
 }
 

@@ -35,7 +35,7 @@ TEST(PartTspRegistry, BothPlannersDeclareTheirOptions) {
     EXPECT_EQ(names,
               (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner", "partition-seed",
                                         "skip-resolved", "trim-ends", "tsp.<key>",
-                                        "partitioner.<key>"}))
+                                        "partitioner.<key>", "prior-weights", "prior-statistics"}))
         << name;
     EXPECT_EQ(info(name).options[0].default_value, "2");
     EXPECT_EQ(info(name).options[1].default_value, "0");
@@ -79,11 +79,14 @@ TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {
             "part-tsp.trim-ends: must be true or false (got 'maybe')");
   EXPECT_EQ(error_of("part-tsp0", {{"alpha", "0.5"}}),
             "part-tsp0.alpha: unknown option (known: r1, r2, tsp-solver, partitioner, "
-            "partition-seed, skip-resolved, trim-ends, tsp.<key>, partitioner.<key>)");
+            "partition-seed, skip-resolved, trim-ends, tsp.<key>, partitioner.<key>, "
+            "prior-weights, prior-statistics)");
   EXPECT_EQ(error_of("part-tsp", {{"tsp-solver", "nope"}})
                 .rfind("part-tsp.tsp-solver: unknown name 'nope'", 0),
             0u);
-  EXPECT_EQ(error_of("part-tsp", {{"partitioner", "nope"}}).rfind("part-tsp.partitioner: unknown", 0), 0u);
+  EXPECT_EQ(
+      error_of("part-tsp", {{"partitioner", "nope"}}).rfind("part-tsp.partitioner: unknown", 0),
+      0u);
   EXPECT_EQ(error_of("part-tsp", {{"tsp.bogus", "1"}}).rfind("exact.bogus: ", 0), 0u)
       << error_of("part-tsp", {{"tsp.bogus", "1"}});
 }
@@ -92,12 +95,11 @@ TEST(PartTspRegistry, ForwardsTspPrefixedOptionsToTheSolver) {
   const auto p = make_planner("part-tsp", {{"tsp.dp-max-segments", "12"}});
   const auto& o = dynamic_cast<const PartTspPlanner&>(*p).options();
   // The solver's effective options: the one given plus its defaults.
-  EXPECT_EQ(o.tsp_solver_options,
-            (OptionMap{{"dp-max-segments", "12"},
-                       {"kicks", "10"},
-                       {"max-segments", "120"},
-                       {"time-limit", "0"},
-                       {"work-budget", "50"}}));
+  EXPECT_EQ(o.tsp_solver_options, (OptionMap{{"dp-max-segments", "12"},
+                                             {"kicks", "10"},
+                                             {"max-segments", "120"},
+                                             {"time-limit", "0"},
+                                             {"work-budget", "50"}}));
 }
 
 }  // namespace

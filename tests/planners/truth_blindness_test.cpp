@@ -19,6 +19,23 @@ TEST(TruthBlindness, EveryRegisteredPlannerDecidesOnlyFromWhatWasSensed) {
   }
 }
 
+// The prior-aware partition (with and without the scenario's statistics) on every partitioned
+// planner: weights come from the prior and the statistics, never from C.
+TEST(TruthBlindness, PriorWeightedPartitionsAreTruthBlind) {
+  world::MissionParams params;
+  params.uavs = 4;
+  for (const char* algorithm : {"lawnmower", "part-tsp", "part-tsp0", "sweep-inspect"}) {
+    for (const auto& options :
+         {OptionMap{{"prior-weights", "true"}},
+          OptionMap{{"prior-weights", "true"}, {"prior-statistics", "false"}}}) {
+      testing::TruthBlindnessReport report;
+      EXPECT_TRUE(testing::planner_is_truth_blind(algorithm, options, params, 6, &report))
+          << algorithm;
+      EXPECT_GE(report.first_differing_reading, 1) << algorithm;
+    }
+  }
+}
+
 // The check can tell: a registered oracle, which reads C by design, is caught by it.
 TEST(TruthBlindness, TheCheckCatchesEveryOracle) {
   world::MissionParams params;

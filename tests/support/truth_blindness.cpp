@@ -10,7 +10,7 @@ namespace hullinspect::testing {
 namespace {
 
 struct Recording final : planners::MissionObserver {
-  std::vector<std::vector<sim::Action>> actions;   // per step
+  std::vector<std::vector<sim::Action>> actions;    // per step
   std::vector<std::vector<sim::Reading>> readings;  // per t (all UAVs, in order)
   void record_readings(const sim::Simulator& sim) {
     std::vector<sim::Reading> all;
@@ -19,7 +19,9 @@ struct Recording final : planners::MissionObserver {
     }
     readings.push_back(std::move(all));
   }
-  void on_start(const sim::Simulator& sim, const planners::Planner&) override { record_readings(sim); }
+  void on_start(const sim::Simulator& sim, const planners::Planner&) override {
+    record_readings(sim);
+  }
   void on_step(const sim::Simulator& sim, const planners::Planner&) override {
     actions.emplace_back(sim.applied_actions().begin(), sim.applied_actions().end());
     record_readings(sim);
@@ -36,8 +38,10 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
 
 }  // namespace
 
-::testing::AssertionResult planner_is_truth_blind(const std::string& algorithm, const OptionMap& options,
-                                                  const world::MissionParams& params, std::uint64_t seed,
+::testing::AssertionResult planner_is_truth_blind(const std::string& algorithm,
+                                                  const OptionMap& options,
+                                                  const world::MissionParams& params,
+                                                  std::uint64_t seed,
                                                   TruthBlindnessReport* report) {
   const auto& hull = world::default_hull();
   const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
@@ -51,16 +55,22 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
   Recording rb;
   auto pa = planners::make_planner(algorithm, options);
   auto pb = planners::make_planner(algorithm, options);
+  // Both instances come from the same scenario: a planner may know its statistics (p_TP, p_FP),
+  // which are the same for both.
   planners::MissionOptions oa;
   oa.observers = {&ra};
+  oa.corrosion = &corrosion;
   planners::MissionOptions ob;
   ob.observers = {&rb};
+  ob.corrosion = &corrosion;
   planners::run_mission(hull, a, params, *pa, oa);
   planners::run_mission(hull, b, params, *pb, ob);
 
-  // Decision t is made from readings 0..t, so decisions before the first differing reading must match.
+  // Decision t is made from readings 0..t, so decisions before the first differing reading must
+  // match.
   std::size_t t = 0;
-  while (t < ra.readings.size() && t < rb.readings.size() && same(ra.readings[t], rb.readings[t])) ++t;
+  while (t < ra.readings.size() && t < rb.readings.size() && same(ra.readings[t], rb.readings[t]))
+    ++t;
   const std::size_t first_diff = t;
   if (report) {
     report->first_differing_reading = first_diff < std::min(ra.readings.size(), rb.readings.size())
@@ -70,9 +80,9 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
   }
   for (std::size_t s = 0; s < first_diff && s < ra.actions.size() && s < rb.actions.size(); ++s) {
     if (ra.actions[s] != rb.actions[s]) {
-      return ::testing::AssertionFailure()
-             << fmt::format("{}: decision at t = {} differs although readings were identical up to t = {}",
-                            algorithm, s, first_diff);
+      return ::testing::AssertionFailure() << fmt::format(
+                 "{}: decision at t = {} differs although readings were identical up to t = {}",
+                 algorithm, s, first_diff);
     }
   }
   return ::testing::AssertionSuccess();

@@ -28,6 +28,9 @@ struct MissionOptions {
   /// UAV failures; random ones are drawn from the instance seed (the same for every planner).
   world::FailurePlan failures;
   PartitionSource* partitions = nullptr;  ///< nullptr: compute partitions directly
+  /// The statistics the instance was drawn with, handed to the planner (PlannerContext::corrosion);
+  /// nullptr: unknown. run_mission(MissionSpec) sets it unless a user map replaced C' or C.
+  const world::CorrosionParams* corrosion = nullptr;
 };
 
 /// Validates the parameters, runs the mission and returns its result.

@@ -19,12 +19,16 @@ struct MissionSpec {
   world::CorrosionParams corrosion;  ///< zones empty = one default zone
   std::uint64_t seed = 1;
   world::FailurePlan failures;  ///< UAV failures (docs/model.md, "Failures")
-  world::UserMaps maps;  ///< the user's prior and/or truth, replacing the generated ones
+  world::UserMaps maps;         ///< the user's prior and/or truth, replacing the generated ones
 };
 
 /// Validates `spec` against `hull` (ParameterError naming the field) — params, corrosion, the
 /// algorithm name and its options — without running anything.
 void validate(const MissionSpec& spec, const world::HullMask& hull);
+
+/// The statistics a planner may know of the instance's prior (MissionOptions::corrosion):
+/// `spec.corrosion`, or null when a user map replaced C' or C (then they describe neither).
+const world::CorrosionParams* prior_statistics(const MissionSpec& spec);
 
 /// Draws the instance (then applies spec.maps), builds the planner and runs the mission.
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,

@@ -36,6 +36,9 @@ struct PartTspOptions {
   // Refinements beyond the paper, off by default (their measured effect: docs/part-tsp.md).
   bool skip_resolved = false;  ///< drop plan segments whose targets are all resolved already
   bool trim_ends = false;      ///< fly segments between ends pulled in by the footprint half-width
+  // Beyond the paper, off by default (prior_weights.hpp, docs/beyond.md).
+  bool prior_weights = false;    ///< partition weighted by the expected work per cell
+  bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
 };
 
 class PartTspPlanner final : public Planner {

@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
-#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/core/registry.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/sim/mission_result.hpp"
 #include "hullinspect/sim/planner_view.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/instance.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
@@ -26,16 +27,17 @@ namespace hullinspect::planners {
 class PartitionSource {
  public:
   virtual ~PartitionSource() = default;
-  virtual std::shared_ptr<const partition::Partition> get(std::string_view partitioner,
-                                                          const OptionMap& options,
-                                                          const partition::PartitionRequest& request) = 0;
+  virtual std::shared_ptr<const partition::Partition> get(
+      std::string_view partitioner, const OptionMap& options,
+      const partition::PartitionRequest& request) = 0;
 };
 
 /// Computes every partition afresh.
 class DirectPartitionSource final : public PartitionSource {
  public:
-  std::shared_ptr<const partition::Partition> get(std::string_view partitioner, const OptionMap& options,
-                                                  const partition::PartitionRequest& request) override;
+  std::shared_ptr<const partition::Partition> get(
+      std::string_view partitioner, const OptionMap& options,
+      const partition::PartitionRequest& request) override;
 };
 
 /// What a planner knows before take-off.
@@ -53,6 +55,10 @@ struct PlannerContext {
   const world::Reachability* reach = nullptr;
   /// The ground truth C — only for planners whose sees_truth() is true (oracle bounds); else null.
   const grid::Grid<std::int8_t>* truth = nullptr;
+  /// The statistics the instance was drawn with (zones' p_C, l_C, the prior's p_TP, p_FP) — what
+  /// an operator knows of the prior's quality, never C itself; null when unknown (a user's map).
+  /// Only the prior-aware partition reads it (planners/prior_weights.hpp).
+  const world::CorrosionParams* corrosion = nullptr;
 };
 
 /// Adds the mission's no-fly zones to a partition request (DARP's initial distances then follow
@@ -62,8 +68,7 @@ void add_no_fly(partition::PartitionRequest& request, const PlannerContext& cont
 
 /// The context's distance service, or `fallback` (reset to an obstacle-free one of the hull's
 /// size) when the context has none.
-grid::DistanceService& distances_of(const PlannerContext& context,
-                                    grid::DistanceService& fallback);
+grid::DistanceService& distances_of(const PlannerContext& context, grid::DistanceService& fallback);
 
 /// Receives what a planner wants shown in traces and the viewer; only called when tracing.
 class AnnotationSink {
@@ -71,7 +76,8 @@ class AnnotationSink {
   virtual ~AnnotationSink() = default;
   /// A UAV's mode (e.g. "cover", "inspect", "explore"), current target (x < 0: none) and plan
   /// (waypoints still ahead).
-  virtual void uav(int k, std::string_view mode, grid::Cell target, std::span<const grid::Cell> plan) = 0;
+  virtual void uav(int k, std::string_view mode, grid::Cell target,
+                   std::span<const grid::Cell> plan) = 0;
   /// A named set of cells (e.g. "frontiers"), as flat indices.
   virtual void cells(std::string_view layer, std::span<const int> indices) = 0;
 };

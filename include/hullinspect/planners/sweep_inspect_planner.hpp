@@ -23,9 +23,10 @@ struct SweepInspectOptions {
   std::uint64_t partition_seed = 0;
   bool help = true;  ///< after its sweep a UAV takes work anywhere (false: only its own region's)
   bool inspect_on_the_way = true;  ///< descend when a detection is abreast (false: only at the end)
-  double radius_factor = 1.0;  ///< inspect detected cells within radius_factor·s2 of the descent
-  bool prior_weights = true;   ///< DARP weighted by the expected work per cell (prior-aware)
-  bool prior_first = true;     ///< first inspect the prior's cells of the region at z = 1
+  double radius_factor = 1.0;    ///< inspect detected cells within radius_factor·s2 of the descent
+  bool prior_weights = true;     ///< partition weighted by the expected work per cell
+  bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
+  bool prior_first = true;       ///< first inspect the prior's cells of the region at z = 1
   /// After an inspection, rejoin the strip up to s2/2 columns ahead of where it was left (those
   /// columns were already seen from there) instead of flying back to that point.
   bool resume_ahead = true;
