@@ -283,6 +283,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   detail::read_no_fly(f, root, base_dir, c);
   read_user_maps(f, root, base_dir, c);
   c.scenarios = detail::parse_scenarios(f, root["scenarios"], root["sweeps"], c.hull->width());
+  detail::read_scenario_no_fly(f, root["scenarios"], base_dir, c);
   if (root["s1"]) c.s1 = f.as_int(root["s1"], "s1", 1, kMaxSide);
   if (root["s2"]) c.s2 = int_list(f, root["s2"], "s2", 1, kMaxSide, c);
   if (root["theta"]) c.theta = f.as_number(root["theta"], "theta", 0, 180);
@@ -374,6 +375,7 @@ nlohmann::json config_json(const ExperimentConfig& c) {
       for (const auto& f : s.failures.at) at.push_back({f.uav, f.time});
       scenario["failures"] = {{"at", at}, {"rate", s.failures.rate}, {"one_within", s.failures.one_within}};
     }
+    if (!s.no_fly_spec.is_null()) scenario["no_fly"] = s.no_fly_spec;  // only when given
     scenarios.push_back(std::move(scenario));
   }
   j["scenarios"] = scenarios;
@@ -426,6 +428,7 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
         spec.failures.rate = f.at("rate").get<double>();
         spec.failures.one_within = f.at("one_within").get<int>();
       }
+      if (s.contains("no_fly")) spec.no_fly_spec = s.at("no_fly");
       c.scenarios.push_back(std::move(spec));
     }
     c.s1 = j.at("s1").get<int>();

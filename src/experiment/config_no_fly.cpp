@@ -22,17 +22,14 @@ std::pair<int, int> cell_span(double lo, double hi, double cell) {
 
 }  // namespace
 
-void read_no_fly(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
-                 ExperimentConfig& c) {
-  const YAML::Node node = root["no-fly"];
-  if (!node) return;
-  f.expect_map(node, "no-fly", {"file", "boxes-m"});
-  c.lines["no-fly"] = YamlFields::line(node);
+NoFlyZones read_no_fly_zones(const YamlFields& f, const YAML::Node& node, const std::string& key,
+                             const std::filesystem::path& base_dir, const ExperimentConfig& c) {
+  f.expect_map(node, key, {"file", "boxes-m"});
   std::filesystem::path file;
   nlohmann::json spec = nlohmann::json::object();
   if (node["file"]) {
-    const std::string text = f.as_string(node["file"], "no-fly.file");
-    if (text.empty()) f.fail(node["file"], "no-fly.file", "must name a mask file");
+    const std::string text = f.as_string(node["file"], key + ".file");
+    if (text.empty()) f.fail(node["file"], key + ".file", "must name a mask file");
     file = std::filesystem::path(text);
     if (file.is_relative()) file = base_dir / file;
     spec["file"] = text;
@@ -40,20 +37,22 @@ void read_no_fly(const YamlFields& f, const YAML::Node& root, const std::filesys
   std::vector<world::CellBox> boxes;
   if (const auto list = node["boxes-m"]) {
     if (!list.IsSequence()) {
-      f.fail(list, "no-fly.boxes-m", "expected a list of [x0, y0, x1, y1] boxes in metres");
+      f.fail(list, key + ".boxes-m", "expected a list of [x0, y0, x1, y1] boxes in metres");
     }
     nlohmann::json boxes_json = nlohmann::json::array();
     for (std::size_t i = 0; i < list.size(); ++i) {
-      const std::string key = fmt::format("no-fly.boxes-m[{}]", i);
+      const std::string box_key = fmt::format("{}.boxes-m[{}]", key, i);
       const YAML::Node b = list[i];
-      if (!b.IsSequence() || b.size() != 4) f.fail(b, key, "expected [x0, y0, x1, y1] in metres");
+      if (!b.IsSequence() || b.size() != 4) {
+        f.fail(b, box_key, "expected [x0, y0, x1, y1] in metres");
+      }
       double v[4];
-      for (std::size_t k = 0; k < 4; ++k) v[k] = f.as_number(b[k], key, 0, 1e9);
-      if (v[2] < v[0] || v[3] < v[1]) f.fail(b, key, "needs x0 <= x1 and y0 <= y1");
+      for (std::size_t k = 0; k < 4; ++k) v[k] = f.as_number(b[k], box_key, 0, 1e9);
+      if (v[2] < v[0] || v[3] < v[1]) f.fail(b, box_key, "needs x0 <= x1 and y0 <= y1");
       const auto [x0, x1] = cell_span(v[0], v[2], c.cell_size);
       const auto [y0, y1] = cell_span(v[1], v[3], c.cell_size);
       if (x1 >= c.hull->width() || y1 >= c.hull->height()) {
-        f.fail(b, key,
+        f.fail(b, box_key,
                fmt::format("reaches cell ({}, {}), outside the {} × {} grid of {} m cells", x1, y1,
                            c.hull->width(), c.hull->height(), c.cell_size));
       }
@@ -62,16 +61,46 @@ void read_no_fly(const YamlFields& f, const YAML::Node& root, const std::filesys
     }
     spec["boxes-m"] = std::move(boxes_json);
   }
+  NoFlyZones zones;
   try {
-    c.no_fly =
+    zones.mask =
         std::make_shared<const world::NoFlyMask>(world::make_no_fly_mask(*c.hull, file, boxes));
   } catch (const Error& e) {
-    f.fail(node, "no-fly", e.what());
+    f.fail(node, key, e.what());
   }
   std::string cells;
-  for (auto v : c.no_fly->values()) cells += static_cast<char>('0' + v);
+  for (auto v : zones.mask->values()) cells += static_cast<char>('0' + v);
   spec["hash"] = stable_id(cells);
-  c.no_fly_spec = std::move(spec);
+  zones.spec = std::move(spec);
+  return zones;
+}
+
+void read_no_fly(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
+                 ExperimentConfig& c) {
+  const YAML::Node node = root["no-fly"];
+  if (!node) return;
+  c.lines["no-fly"] = YamlFields::line(node);
+  NoFlyZones zones = read_no_fly_zones(f, node, "no-fly", base_dir, c);
+  c.no_fly = std::move(zones.mask);
+  c.no_fly_spec = std::move(zones.spec);
+}
+
+void read_scenario_no_fly(const YamlFields& f, const YAML::Node& scenarios,
+                          const std::filesystem::path& base_dir, ExperimentConfig& c) {
+  if (!scenarios || !scenarios.IsSequence()) return;
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    const YAML::Node item = scenarios[i];
+    if (!item.IsMap() || !item["no-fly"]) continue;
+    const std::string key = fmt::format("scenarios[{}].no-fly", i);
+    if (c.no_fly) {
+      f.fail(item["no-fly"], key,
+             "cannot be combined with the top-level 'no-fly' (give the zones in one place)");
+    }
+    NoFlyZones zones = read_no_fly_zones(f, item["no-fly"], key, base_dir, c);
+    ScenarioSpec& spec = c.scenarios.at(i);  // plain scenarios come first, one per item
+    spec.no_fly = std::move(zones.mask);
+    spec.no_fly_spec = std::move(zones.spec);
+  }
 }
 
 }  // namespace hullinspect::experiment::detail

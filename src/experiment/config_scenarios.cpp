@@ -57,12 +57,13 @@ class ScenarioParser {
     if (node.IsScalar()) {
       const std::string name = f_.as_label(node, key);
       Draft d = builtin(node, key, name);
-      add(node, key, ScenarioSpec{name, "", "", d.corrosion, {}, YamlFields::line(node)}, d);
+      add(node, key, ScenarioSpec{name, "", "", d.corrosion, {}, YamlFields::line(node), {}, {}},
+          d);
       return;
     }
     f_.expect_map(node, key,
                   {"name", "base", "zones", "p_c", "l_c", "back_p_c", "back_l_c", "front_p_c",
-                   "front_l_c", "p_tp", "p_fp", "failures"});
+                   "front_l_c", "p_tp", "p_fp", "failures", "no-fly"});
     if (!node["name"]) f_.fail(node, key, "a custom scenario needs a 'name'");
     const std::string name = f_.as_label(node["name"], key + ".name");
     Draft d = node["base"] ? base(node["base"], key + ".base") : builtin(node, key, "perfect");
@@ -91,7 +92,7 @@ class ScenarioParser {
     if (node["p_tp"]) d.corrosion.p_tp = f_.as_number(node["p_tp"], key + ".p_tp", 0, 1);
     if (node["p_fp"]) d.corrosion.p_fp = f_.as_number(node["p_fp"], key + ".p_fp", 0, 1);
     d.normalise();
-    ScenarioSpec spec{name, "", "", d.corrosion, {}, YamlFields::line(node)};
+    ScenarioSpec spec{name, "", "", d.corrosion, {}, YamlFields::line(node), {}, {}};
     if (node["failures"]) spec.failures = failures(node["failures"], key + ".failures");
     add(node, key, std::move(spec), d);
   }
@@ -101,9 +102,9 @@ class ScenarioParser {
     if (!node["parameter"]) f_.fail(node, key, "a sweep needs a 'parameter'");
     if (!node["values"]) f_.fail(node, key, "a sweep needs 'values'");
     const std::string parameter = f_.as_string(node["parameter"], key + ".parameter");
-    static const std::set<std::string> known = {"p_tp", "p_fp", "p_c", "l_c", "back_p_c",
-                                                "front_p_c", "back_l_c", "front_l_c",
-                                                "front_back_p_c"};
+    static const std::set<std::string> known = {"p_tp",     "p_fp",      "p_c",
+                                                "l_c",      "back_p_c",  "front_p_c",
+                                                "back_l_c", "front_l_c", "front_back_p_c"};
     if (!known.contains(parameter)) {
       f_.fail(node["parameter"], key + ".parameter",
               fmt::format("unknown sweep parameter '{}' (known: p_tp, p_fp, p_c, l_c, back_p_c, "
@@ -150,7 +151,8 @@ class ScenarioParser {
       d.normalise();
       const std::string scenario_name = fmt::format("{}={}", name, text);
       if (auto problem = label_problem(scenario_name); !problem.empty()) f_.fail(v, path, problem);
-      add(v, path, ScenarioSpec{scenario_name, name, text, d.corrosion, {}, YamlFields::line(v)}, d);
+      add(v, path,
+          ScenarioSpec{scenario_name, name, text, d.corrosion, {}, YamlFields::line(v), {}, {}}, d);
     }
   }
 
@@ -161,9 +163,10 @@ class ScenarioParser {
     if (world::scenarios().contains(name)) {
       return Draft{world::scenario(name).corrosion(width_), width_};
     }
-    f_.fail(node, key, fmt::format("unknown scenario '{}' (built in: {}; or give a map with 'name' "
-                                   "and parameters)",
-                                   name, builtin_names()));
+    f_.fail(node, key,
+            fmt::format("unknown scenario '{}' (built in: {}; or give a map with 'name' "
+                        "and parameters)",
+                        name, builtin_names()));
   }
 
   Draft base(const YAML::Node& node, const std::string& key) const {
@@ -172,9 +175,10 @@ class ScenarioParser {
     if (world::scenarios().contains(name)) {
       return Draft{world::scenario(name).corrosion(width_), width_};
     }
-    f_.fail(node, key, fmt::format("unknown base scenario '{}' (built in: {}; or a scenario listed "
-                                   "earlier under 'scenarios')",
-                                   name, builtin_names()));
+    f_.fail(node, key,
+            fmt::format("unknown base scenario '{}' (built in: {}; or a scenario listed "
+                        "earlier under 'scenarios')",
+                        name, builtin_names()));
   }
 
   void set_p_c(Draft& d, const YAML::Node& v, const std::string& key, int from, int to) const {
@@ -241,8 +245,8 @@ class ScenarioParser {
       out.push_back(zone);
     }
     if (next != width_) {
-      f_.fail(node, key, fmt::format("must cover the grid's columns 0 to {} (they end at {})",
-                                     width_, next));
+      f_.fail(node, key,
+              fmt::format("must cover the grid's columns 0 to {} (they end at {})", width_, next));
     }
     return out;
   }
@@ -284,7 +288,8 @@ std::vector<ScenarioSpec> parse_scenarios(const YamlFields& fields, const YAML::
   }
   auto specs = parser.take();
   if (specs.empty()) {
-    specs.push_back(ScenarioSpec{"perfect", "", "", world::scenario("perfect").corrosion(grid_width), {}, 0});
+    specs.push_back(ScenarioSpec{
+        "perfect", "", "", world::scenario("perfect").corrosion(grid_width), {}, 0, {}, {}});
   }
   return specs;
 }

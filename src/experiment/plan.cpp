@@ -24,13 +24,18 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
   for (const auto& [k, v] : a.options)
     options += fmt::format("{}{}={}", options.empty() ? "" : ";", k, v);
   return fmt::format(
-      "hullinspect-run/1|hull={}|cell_size={}|scenario={}|zones={}|p_tp={}|p_fp={}|s1={}|s2={}|"
-      "theta={}|uavs={}|start_z={}|time_limit={}|algorithm={}|planner={}|options={}",
-      c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp, c.s1,
-      c.s2[static_cast<std::size_t>(cell.s2)], c.theta, c.uavs[static_cast<std::size_t>(cell.uavs)],
-      c.start_z, c.time_limit, a.label, a.planner, options) +
-         // Only scenarios with failures say so, so that every other run keeps its id.
-         (s.failures.empty() ? std::string() : "|failures=" + s.failures.text());
+             "hullinspect-run/"
+             "1|hull={}|cell_size={}|scenario={}|zones={}|p_tp={}|p_fp={}|s1={}|s2={}|"
+             "theta={}|uavs={}|start_z={}|time_limit={}|algorithm={}|planner={}|options={}",
+             c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp, c.s1,
+             c.s2[static_cast<std::size_t>(cell.s2)], c.theta,
+             c.uavs[static_cast<std::size_t>(cell.uavs)], c.start_z, c.time_limit, a.label,
+             a.planner, options) +
+         // Only scenarios with failures or their own no-fly zones say so, so that every other run
+         // keeps its id.
+         (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
+         (s.no_fly_spec.is_null() ? std::string()
+                                  : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>());
 }
 
 }  // namespace
@@ -97,9 +102,10 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.cell_size_m = c.cell_size;
   spec.params.start_z = c.start_z;
   spec.params.time_limit = c.time_limit;
-  spec.params.no_fly = c.no_fly;
-  spec.corrosion = c.scenarios[static_cast<std::size_t>(cell.scenario)].corrosion;
-  spec.failures = c.scenarios[static_cast<std::size_t>(cell.scenario)].failures;
+  const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
+  spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;
+  spec.corrosion = scenario.corrosion;
+  spec.failures = scenario.failures;
   spec.seed = seed;
   spec.maps = c.maps;
   return spec;

@@ -86,5 +86,49 @@ TEST(NoFlyConfig, BadInputNamesFileLineAndKey) {
             "nf.yaml:5: no-fly: leaves 0 hull cells outside no-fly zones for 1 UAV to start on");
 }
 
+TEST(NoFlyConfig, AScenarioCanHaveItsOwnZones) {
+  const auto c = parse_config(
+      "hull: rectangle\ngrid: {width: 20, height: 10, cell_size: 0.5}\n"
+      "scenarios:\n"
+      "  - perfect\n"
+      "  - {name: perfect-obstacles, base: perfect, no-fly: {boxes-m: [[1.0, 0, 1.5, 2.2]]}}\n",
+      "nf.yaml", "/cfg");
+  EXPECT_FALSE(c.no_fly);
+  ASSERT_EQ(c.scenarios.size(), 2u);
+  EXPECT_FALSE(c.scenarios[0].no_fly);
+  ASSERT_TRUE(c.scenarios[1].no_fly);
+  EXPECT_EQ((*c.scenarios[1].no_fly)(2, 4), 1);
+  EXPECT_EQ((*c.scenarios[1].no_fly)(3, 4), 0);
+  const ExperimentPlan plan(c);
+  int with_zones = 0;
+  for (const auto& run : plan.runs()) {
+    const auto& scenario = c.scenarios[static_cast<std::size_t>(plan.cells()[run.cell].scenario)];
+    EXPECT_EQ(plan.mission(run).params.no_fly, scenario.no_fly) << scenario.name;
+    with_zones += scenario.no_fly ? 1 : 0;
+  }
+  EXPECT_GT(with_zones, 0);
+  // The scenario's zones reach the manifest and its run ids; the plain scenario's ids are the
+  // ids of the same scenario in a config without the other one.
+  const auto j = config_json(c);
+  EXPECT_FALSE(j["scenarios"][0].contains("no_fly"));
+  EXPECT_TRUE(j["scenarios"][1].contains("no_fly"));
+  EXPECT_EQ(config_from_json(j, "x").scenarios[1].no_fly_spec, j["scenarios"][1]["no_fly"]);
+  const ExperimentPlan plain(parse_config(
+      "hull: rectangle\ngrid: {width: 20, height: 10, cell_size: 0.5}\nscenarios: [perfect]\n",
+      "nf.yaml", "/cfg"));
+  EXPECT_EQ(plain.cells().front().id, plan.cells().front().id);
+  EXPECT_NE(plan.cells()[0].id, plan.cells()[plan.cells().size() / 2].id);
+}
+
+TEST(NoFlyConfig, ScenarioZonesAndTopLevelZonesAreNotCombined) {
+  const std::string grid = "hull: rectangle\ngrid: {width: 20, height: 10}\n";
+  EXPECT_EQ(error_of(grid + "no-fly: {boxes-m: [[0, 0, 1, 1]]}\nscenarios:\n"
+                            "  - {name: a, no-fly: {boxes-m: [[2, 0, 3, 1]]}}\n"),
+            "nf.yaml:5: scenarios[0].no-fly: cannot be combined with the top-level 'no-fly' (give "
+            "the zones in one place)");
+  EXPECT_EQ(error_of(grid + "scenarios:\n  - {name: a, no-fly: {boxes-m: [[2, 0, 1, 1]]}}\n"),
+            "nf.yaml:4: scenarios[0].no-fly.boxes-m[0]: needs x0 <= x1 and y0 <= y1");
+}
+
 }  // namespace
 }  // namespace hullinspect::experiment

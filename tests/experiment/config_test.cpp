@@ -14,7 +14,9 @@
 namespace hullinspect::experiment {
 namespace {
 
-ExperimentConfig parse(const std::string& yaml) { return parse_config(yaml, "bad.yaml", "/cfg"); }
+ExperimentConfig parse(const std::string& yaml) {
+  return parse_config(yaml, "bad.yaml", "/cfg");
+}
 
 /// The error a config produces when parsed and expanded (cells validated), or "" if none.
 std::string error_of(const std::string& yaml) {
@@ -114,14 +116,15 @@ TEST(ExperimentConfig, SweepsExpandIntoNamedScenarios) {
   const auto& fb = c.scenarios[3];
   EXPECT_EQ(fb.name, "front_back_p_c=0.01/0.0025");
   ASSERT_EQ(fb.corrosion.zones.size(), 2u);
-  EXPECT_DOUBLE_EQ(fb.corrosion.zones[0].p_c, 0.0025);  // back
-  EXPECT_DOUBLE_EQ(fb.corrosion.zones[1].p_c, 0.01);    // front
-  EXPECT_EQ(fb.corrosion.zones[1].l_c, 5);              // l_c of the base, both halves
+  EXPECT_DOUBLE_EQ(fb.corrosion.zones[0].p_c, 0.0025);   // back
+  EXPECT_DOUBLE_EQ(fb.corrosion.zones[1].p_c, 0.01);     // front
+  EXPECT_EQ(fb.corrosion.zones[1].l_c, 5);               // l_c of the base, both halves
   EXPECT_EQ(c.scenarios[4].corrosion.zones.size(), 1u);  // equal halves collapse to one zone
 }
 
 TEST(ExperimentConfig, PresetsMatchSpecSection6) {
-  EXPECT_EQ(preset_names(), (std::vector<std::string>{"beyond", "fig8", "obstacles", "paper", "paper-quick"}));
+  EXPECT_EQ(preset_names(),
+            (std::vector<std::string>{"beyond", "fig8", "obstacles", "paper", "paper-quick"}));
   const auto paper = load_preset("paper");
   ASSERT_EQ(paper.scenarios.size(), 4u);
   EXPECT_EQ(paper.scenarios[1].name, "imperfect");
@@ -154,8 +157,8 @@ TEST(ExperimentConfig, PresetsMatchSpecSection6) {
       }
     }
     ASSERT_FALSE(available.empty());
-    const std::size_t per_algorithm = config.scenarios.size() * config.s2.size() *
-                                      config.uavs.size() * config.seeds.size();
+    const std::size_t per_algorithm =
+        config.scenarios.size() * config.s2.size() * config.uavs.size() * config.seeds.size();
     restrict_algorithms(config, available);
     const ExperimentPlan plan(std::move(config));
     EXPECT_EQ(plan.runs().size(), per_algorithm * available.size()) << name;
@@ -196,8 +199,10 @@ struct BadConfig {
 TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
   const std::vector<BadConfig> cases = {
       {"s1: 5\ngrdi: {}\n",
-       "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, s1, "
-       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, truth, no-fly)"},
+       "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, "
+       "s1, "
+       "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, "
+       "truth, no-fly)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
@@ -206,8 +211,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       {"s2: [7, 9.5]\n", "bad.yaml:1: s2: must be an integer (got '9.5')"},
       {"uavs:\n  - 4\n  - 0\n", "bad.yaml:3: uavs: must be an integer in [1, 100000] (got 0)"},
       {"s2: [7, 7]\n", "bad.yaml:1: s2: lists 7 twice"},
-      {"s2:\n  - 7\n  - 8\n",
-       "bad.yaml:3: s2: must be an odd integer greater than s1 = 5 (got 8)"},
+      {"s2:\n  - 7\n  - 8\n", "bad.yaml:3: s2: must be an odd integer greater than s1 = 5 (got 8)"},
       {"s1: 9\n", "bad.yaml:1: s2: must be an odd integer greater than s1 = 9 (got 7)"},
       {"theta: 180\n", "bad.yaml:1: theta: must be in (0, 180) degrees, exclusive (got 180)"},
       {"theta: wide\n", "bad.yaml:1: theta: must be a number (got 'wide')"},
@@ -219,7 +223,8 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       {"instances: [3, 3]\n", "bad.yaml:1: instances: lists seed 3 twice"},
       {"instances: [3]\nfirst_seed: 2\n",
        "bad.yaml:2: first_seed: applies only when 'instances' is a count"},
-      {"curve: {step: 0}\n", "bad.yaml:1: curve.step: must be an integer in [1, 1000000000] (got 0)"},
+      {"curve: {step: 0}\n",
+       "bad.yaml:1: curve.step: must be an integer in [1, 1000000000] (got 0)"},
       {"hull: nothere.txt\n", "bad.yaml:1: hull: /cfg/nothere.txt: cannot open the hull file"},
       {"hull: rectangle\n", "bad.yaml:1: hull: 'rectangle' needs grid.width and grid.height"},
       {"grid: {width: 100}\n", "bad.yaml:1: grid.width: is 100 but the hull mask is 230 wide"},
@@ -228,14 +233,18 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       {"scenarios: [perfect, bogus]\n",
        "bad.yaml:1: scenarios[1]: unknown scenario 'bogus' (built in: perfect, imperfect, "
        "inhomogeneous, combined; or give a map with 'name' and parameters)"},
-      {"scenarios: [perfect, perfect]\n", "bad.yaml:1: scenarios[1]: scenario name 'perfect' is used twice"},
+      {"scenarios: [perfect, perfect]\n",
+       "bad.yaml:1: scenarios[1]: scenario name 'perfect' is used twice"},
       {"scenarios:\n  - name: x\n    p_tp: 1.5\n",
        "bad.yaml:3: scenarios[0].p_tp: must be a number in [0, 1] (got 1.5)"},
-      {"scenarios:\n  - name: x\n    l_c: 4\n", "bad.yaml:3: scenarios[0].l_c: must be odd (got 4)"},
-      {"scenarios:\n  - {p_c: 0.1}\n", "bad.yaml:2: scenarios[0]: a custom scenario needs a 'name'"},
+      {"scenarios:\n  - name: x\n    l_c: 4\n",
+       "bad.yaml:3: scenarios[0].l_c: must be odd (got 4)"},
+      {"scenarios:\n  - {p_c: 0.1}\n",
+       "bad.yaml:2: scenarios[0]: a custom scenario needs a 'name'"},
       {"scenarios:\n  - {name: x, colour: red}\n",
-       "bad.yaml:2: scenarios[0].colour: unknown key (known: name, base, zones, p_c, l_c, back_p_c, "
-       "back_l_c, front_p_c, front_l_c, p_tp, p_fp, failures)"},
+       "bad.yaml:2: scenarios[0].colour: unknown key (known: name, base, zones, p_c, l_c, "
+       "back_p_c, "
+       "back_l_c, front_p_c, front_l_c, p_tp, p_fp, failures, no-fly)"},
       {"scenarios:\n  - name: x\n    zones: [{x_begin: 0, x_end: 100, p_c: 0.1, l_c: 3}]\n",
        "bad.yaml:3: scenarios[0].zones: must cover the grid's columns 0 to 230 (they end at 100)"},
       {"scenarios:\n  - name: x\n    p_c: 0.1\n    zones: [{x_begin: 0, x_end: 230, p_c: 0.1, "
@@ -283,7 +292,8 @@ TEST(ExperimentConfig, UnknownPresetListsTheKnownOnes) {
     FAIL() << "expected an error";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.name(), "preset");
-    EXPECT_EQ(e.problem(), "unknown preset 'papr' (known: beyond, fig8, obstacles, paper, paper-quick)");
+    EXPECT_EQ(e.problem(),
+              "unknown preset 'papr' (known: beyond, fig8, obstacles, paper, paper-quick)");
   }
 }
 

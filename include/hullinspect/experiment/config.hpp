@@ -1,7 +1,7 @@
 #pragma once
-// Experiment configs (docs/experiments.md): a YAML file naming the hull, the corrosion scenarios and
-// sweeps, the parameter lists (s2, fleet sizes), the algorithms with their options, the instances
-// and the curve time grid. Every list is one axis of a cartesian product.
+// Experiment configs (docs/experiments.md): a YAML file naming the hull, the corrosion scenarios
+// and sweeps, the parameter lists (s2, fleet sizes), the algorithms with their options, the
+// instances and the curve time grid. Every list is one axis of a cartesian product.
 
 #include <nlohmann/json.hpp>
 
@@ -28,7 +28,11 @@ struct ScenarioSpec {
   std::string sweep_value;  ///< the swept value as text ("0.8", "0.01/0.0025" for front/back)
   world::CorrosionParams corrosion;
   world::FailurePlan failures;  ///< UAV failures of every mission of the scenario (paired by seed)
-  int line = 0;             ///< config line that declared it (for error messages)
+  int line = 0;                 ///< config line that declared it (for error messages)
+  /// The scenario's own no-fly zones (its `no-fly:` key; null = the config's, if any) and their
+  /// spec as written to the manifest.
+  std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
+  nlohmann::json no_fly_spec;
 };
 
 /// One entry of the algorithm list.
@@ -62,8 +66,8 @@ struct ExperimentConfig {
   /// No-fly positions (null = none) and how the config stated them ({file, boxes-m, hash}).
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
   nlohmann::json no_fly_spec;
-  std::string prior_path, truth_path;  ///< the user's C′ and C ("prior:", "truth:"), resolved
-  world::UserMaps maps;                ///< loaded from them; empty in a config read back
+  std::string prior_path, truth_path;   ///< the user's C′ and C ("prior:", "truth:"), resolved
+  world::UserMaps maps;                 ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
   int s1 = 5;
   std::vector<int> s2 = {7};
