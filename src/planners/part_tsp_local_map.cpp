@@ -108,7 +108,14 @@ void LocalMaps::write_off(const grid::Grid<std::uint8_t>& reach) {
     if (owner_[i] < 0) continue;
     const bool can_see = (reach[i] & world::kReachZ2) != 0;
     const bool can_inspect = (reach[i] & world::kReachZ1) != 0;
-    if (!can_see || (values_[i] == sim::kCorrosionSeen && !can_inspect)) set_value(i, sim::kClean);
+    if (!can_see) {
+      set_value(i, sim::kClean);
+    } else if (values_[i] == sim::kCorrosionSeen && !can_inspect) {
+      // Only the prior says 2 here: if the cell is clean it still has to be seen (from z = 2) to
+      // be known, so it becomes a coverage target; if it is corroded, that look finds it and
+      // ingest() writes it off.
+      set_value(i, sim::kUnknown);
+    }
   }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// The local maps M^k of Part-TSP (model.md §5.3): UAV k knows only its region R_k, and only from its
-// own readings (no communication). Regions are disjoint, so all the M^k live in one grid where a
-// cell holds the value of its owner's map.
+// The local maps M^k of Part-TSP (model.md §5.3): UAV k knows only its region R_k, and only from
+// its own readings (no communication). Regions are disjoint, so all the M^k live in one grid where
+// a cell holds the value of its owner's map.
 //
 // Alongside the values it keeps, per UAV, h (cells with M^k = 2), the number of unknown cells and,
 // for the strip layout of each plane, how many cells of R_k in each strip column hold 0 or 2. Those
@@ -45,9 +45,10 @@ class LocalMaps {
   LocalMaps(const grid::Grid<std::int16_t>& owner, const grid::Grid<std::int8_t>& prior,
             bool use_prior, int uavs, int s1, int s2);
 
-  /// No-fly zones (docs/model.md): cells that can never reach their final state are written off —
-  /// a cell no z = 2 footprint reaches, and a corroded one (2) no z = 1 footprint reaches, read 1
-  /// in M^k from now on (nothing is left to do there). `reach` holds world::kReachZ1/Z2 bits.
+  /// No-fly zones (docs/model.md): a cell no z = 2 footprint reaches can never reach its final
+  /// state and reads 1 in M^k from now on (nothing is left to do there). A prior cell (2) no z = 1
+  /// footprint reaches reads 0: if it is clean it must still be seen from z = 2; once seen
+  /// corroded, ingest() writes it off. `reach` holds world::kReachZ1/Z2 bits.
   void write_off(const grid::Grid<std::uint8_t>& reach);
 
   /// Applies UAV k's readings of one step to M^k (the model.md §3 table, cells of R_k only).
@@ -95,7 +96,7 @@ class LocalMaps {
 
   grid::Grid<std::int16_t> owner_;
   grid::Grid<std::int8_t> values_;
-  grid::Grid<std::uint8_t> seen_from_z2_;  // UAV A(i) has seen cell i from z = 2
+  grid::Grid<std::uint8_t> seen_from_z2_;            // UAV A(i) has seen cell i from z = 2
   const grid::Grid<std::uint8_t>* reach_ = nullptr;  // set by write_off()
   std::array<StripLayout, 2> layouts_;
   std::vector<Region> regions_;
