@@ -19,11 +19,10 @@
 namespace hullinspect::planners {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(HULLINSPECT_SANITIZED)
-constexpr int kOddsInstances = 3;
-#else
+// The same sample in every build: the tolerances below hold for 12 instances (corrosion comes in
+// clusters, so the effective sample is the clusters, not the cells); with 3 instances (an earlier
+// sanitized-build shortcut) the outside-prior rate was off by 11.7 % under clang ASan.
 constexpr int kOddsInstances = 12;
-#endif
 
 world::CorrosionParams scenario_params(const std::string& name) {
   return world::scenario(name).corrosion(world::default_hull().width());
