@@ -4,7 +4,6 @@
 // CbcCutGenerator.hpp uses CbcModel.hpp's declarations without including them.
 #include <CbcCutGenerator.hpp>
 #include <CglCutGenerator.hpp>
-#include <CoinPackedVector.hpp>
 #include <OsiClpSolverInterface.hpp>
 #include <OsiCuts.hpp>
 #include <OsiRowCut.hpp>
@@ -20,7 +19,6 @@ namespace hullinspect::tsp {
 
 namespace {
 
-using detail::column;
 using detail::PaperGraph;
 
 /// Separates eq. 8 on the support graph of x: a connected component S of the edges with x > 0
@@ -34,21 +32,12 @@ class SubtourCuts final : public CglCutGenerator {
                     const CglTreeInfo /*info*/) override {
     const int count = detail::components(*graph_, solver.getColSolution(), label_, 1e-6);
     if (count == 1) return;
-    std::vector<int> index;
     std::vector<double> ones;
     for (int c = 0; c < count; ++c) {
-      index.clear();
-      int size = 0;
-      for (int i = 0; i < graph_->nodes; ++i) {
-        if (label_[static_cast<std::size_t>(i)] != c) continue;
-        ++size;
-        for (int j = 0; j < i; ++j) {
-          if (label_[static_cast<std::size_t>(j)] == c) index.push_back(column(i, j));
-        }
-      }
-      ones.assign(index.size(), 1.0);
+      const int size = detail::subtour_columns(*graph_, label_, c, index_);
+      ones.assign(index_.size(), 1.0);
       OsiRowCut cut;
-      cut.setRow(static_cast<int>(index.size()), index.data(), ones.data());
+      cut.setRow(static_cast<int>(index_.size()), index_.data(), ones.data());
       cut.setLb(-solver.getInfinity());
       cut.setUb(size - 1.0);
       cut.setGloballyValid(true);
@@ -60,6 +49,7 @@ class SubtourCuts final : public CglCutGenerator {
  private:
   const PaperGraph* graph_;
   std::vector<int> label_;
+  std::vector<int> index_;
 };
 
 }  // namespace
@@ -130,18 +120,7 @@ TspSolution CbcCutSolver::solve(const SegmentTsp& problem) {
     // CBC can still accept an integer point with subtours without asking the generator (seen on
     // g = 3: the root's heuristics): its constraints become rows of the program and CBC runs
     // again. The answer is optimal for a relaxation of the TSP and one tour, so optimal.
-    for (int c = 0; c < count; ++c) {
-      CoinPackedVector row;
-      int size = 0;
-      for (int i = 0; i < graph.nodes; ++i) {
-        if (label[static_cast<std::size_t>(i)] != c) continue;
-        ++size;
-        for (int j = 0; j < i; ++j) {
-          if (label[static_cast<std::size_t>(j)] == c) row.insert(column(i, j), 1.0);
-        }
-      }
-      program.addRow(row, -program.getInfinity(), size - 1.0);
-    }
+    detail::add_subtour_rows(graph, label, count, program);
     ++reruns_;
   }
 }

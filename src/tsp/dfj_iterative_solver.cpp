@@ -2,7 +2,6 @@
 
 #include <CbcEventHandler.hpp>
 #include <CbcModel.hpp>
-#include <CoinPackedVector.hpp>
 #include <OsiClpSolverInterface.hpp>
 
 #include <chrono>
@@ -17,7 +16,6 @@
 namespace hullinspect::tsp {
 
 using detail::build_program;
-using detail::column;
 using detail::components;
 using detail::PaperGraph;
 
@@ -98,18 +96,7 @@ TspSolution DfjIterativeSolver::solve(const SegmentTsp& problem) {
                                    started);
     }
     // Eq. 8 for every subtour of this answer.
-    for (int c = 0; c < count; ++c) {
-      CoinPackedVector row;
-      int size = 0;
-      for (int i = 0; i < graph.nodes; ++i) {
-        if (label[static_cast<std::size_t>(i)] != c) continue;
-        ++size;
-        for (int j = 0; j < i; ++j) {
-          if (label[static_cast<std::size_t>(j)] == c) row.insert(column(i, j), 1.0);
-        }
-      }
-      program.addRow(row, -program.getInfinity(), size - 1.0);
-    }
+    detail::add_subtour_rows(graph, label, count, program);
   }
   // Time limit reached: the heuristic's tour, without an optimality claim.
   if (!limited) fallback = HeuristicSolver().solve(problem);

@@ -115,6 +115,31 @@ std::vector<int> tour_entries(const PaperGraph& graph, const double* x, const ch
   return entries;
 }
 
+int subtour_columns(const PaperGraph& graph, const std::vector<int>& label, int component,
+                    std::vector<int>& columns) {
+  columns.clear();
+  int size = 0;
+  for (int i = 0; i < graph.nodes; ++i) {
+    if (label[static_cast<std::size_t>(i)] != component) continue;
+    ++size;
+    for (int j = 0; j < i; ++j) {
+      if (label[static_cast<std::size_t>(j)] == component) columns.push_back(column(i, j));
+    }
+  }
+  return size;
+}
+
+void add_subtour_rows(const PaperGraph& graph, const std::vector<int>& label, int count,
+                      OsiClpSolverInterface& program) {
+  std::vector<int> columns;
+  for (int c = 0; c < count; ++c) {
+    const int size = subtour_columns(graph, label, c, columns);
+    const std::vector<double> ones(columns.size(), 1.0);
+    program.addRow(static_cast<int>(columns.size()), columns.data(), ones.data(),
+                   -program.getInfinity(), size - 1.0);
+  }
+}
+
 std::vector<double> tour_columns(const PaperGraph& graph, const std::vector<int>& entries) {
   std::vector<double> x(static_cast<std::size_t>(graph.columns()), 0.0);
   auto use = [&](int i, int j) {

@@ -41,6 +41,15 @@ void build_program(const PaperGraph& graph, OsiClpSolverInterface& solver);
 int components(const PaperGraph& graph, const double* x, std::vector<int>& label,
                double threshold = 0.5);
 
+/// Eq. 8 for component `component` S of `label`: the columns of the edges inside S into
+/// `columns` (cleared first); returns |S|, so the constraint is Σ x(columns) ≤ |S| − 1.
+int subtour_columns(const PaperGraph& graph, const std::vector<int>& label, int component,
+                    std::vector<int>& columns);
+
+/// Adds eq. 8 of every component of `label` (there are `count`) as a row of `program`.
+void add_subtour_rows(const PaperGraph& graph, const std::vector<int>& label, int count,
+                      OsiClpSolverInterface& program);
+
 /// The visiting order (entry ends, see end_costs.hpp) of a single tour x, dropping the artificial
 /// node; a LogicError naming `solver` when x is not one tour through every segment.
 std::vector<int> tour_entries(const PaperGraph& graph, const double* x, const char* solver);
