@@ -15,6 +15,7 @@
 #include "hullinspect/planners/part_tsp_share.hpp"
 #include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
+#include "support/no_fly_layouts.hpp"
 
 namespace hullinspect::planners {
 namespace {
@@ -265,16 +266,9 @@ TEST(PartTspShare, AFixedFailureIsRecoveredWhereThePaperPlannerStopsIncomplete) 
 // not, and the mission ends (idle) incomplete instead of hovering to the time limit. With a gap in
 // the wall, the right UAV's region is taken over too.
 TEST(PartTspShare, NoFlyWallsKeepHandOversInsideAFlightPart) {
-  grid::Grid<std::uint8_t> hull_mask(60, 20, 1);
-  for (int y = 0; y < 4; ++y) {
-    for (int x = 0; x < 4 - y; ++x) {
-      hull_mask(x, y) = 0;
-      hull_mask(59 - x, y) = 0;
-    }
-  }
-  const world::HullMask hull(std::move(hull_mask), "test:small");
-  auto wall = std::make_shared<grid::Grid<std::uint8_t>>(60, 20, 0);
-  for (int y = 0; y < 20; ++y) (*wall)(40, y) = 1;
+  const world::HullMask& hull = testing::small_keel_hull();
+  auto wall = std::make_shared<testing::NoFlyMask>(60, 20, 0);
+  testing::no_fly_box(*wall, 40, 0, 40, 19);
   auto gap = std::make_shared<grid::Grid<std::uint8_t>>(*wall);
   for (int y = 0; y < 3; ++y) (*gap)(40, y) = 0;
   MissionSpec spec;
