@@ -84,7 +84,9 @@ ReadPlan read_qgc_plan(std::string_view text, const std::string& source) {
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception&) {
+    // Not only parse_error: a number too large for a double ("1e999") is out_of_range (406),
+    // which escaped as an uncaught exception (found by fuzz_export_readers).
     throw InputError(source, 0, "not JSON");
   }
   auto need = [&](const json& j, const char* key, const std::string& where) -> const json& {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/export.hpp"
 #include "hullinspect/io/export_readers.hpp"
@@ -220,6 +221,14 @@ TEST(QgcSchema, RejectsAPlanMissingItsFileTypeOrWithABadItem) {
   io::write_file_atomic(dir + "/b2.plan", broken.dump());
   EXPECT_NE(std::system((script + dir + "/b2.plan > /dev/null").c_str()), 0);
   fs::remove_all(dir);
+}
+
+// Found by fuzz_export_readers: nlohmann reports a number too large for a double as out_of_range
+// (406), not parse_error, and it escaped read_qgc_plan as an uncaught exception.
+TEST(ExportReaders, AQgcPlanWithANumberTooLargeForADoubleIsNotJson) {
+  EXPECT_THROW((void)io::read_qgc_plan(R"({"fileType": "Plan", "version": 1e999})", "x.plan"),
+               InputError);
+  EXPECT_THROW((void)io::read_qgc_plan("5003e5003e-eF-eF", "x.plan"), InputError);
 }
 
 }  // namespace
