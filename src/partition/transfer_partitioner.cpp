@@ -771,16 +771,23 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   int attempt = 0;
   bool converged = n == 1;
   bool hit_limit = false;
-  // The seeded attempts, then (n > 1) the two regrowth attempts: no start set that balances in the
-  // seeded attempts sees them, so their partitions and times are those of the seeded attempts.
-  // A provably infeasible set (a start walled in by other starts) gets one attempt: its connected
+  // Attempt 0 (the plain growth), then (n > 1) the two regrowth attempts, then the seeded ones.
+  // The regrowths draw nothing from the stream, so the seeded attempts are those they were
+  // without them: a start set that balanced in attempt 0 is unchanged, and one that balanced in a
+  // seeded attempt still balances (in a regrowth attempt or the same seeded one). A provably infeasible set (a start walled in by other starts) gets one attempt: its connected
   // partition, with the proof as the warning.
   const std::string walled =
       walled_start_warning(hull, starts, weighted ? &request.weights : nullptr, target, goal);
-  const int regrowths = options_.regrow && n > 1 && walled.empty() ? 2 : 0;
+  const int regrowths = options_.regrow && n > 1 && walled.empty() ? 4 : 0;
   const int attempts = walled.empty() ? options_.attempts : 1;
   for (; attempt < attempts + regrowths && !converged; ++attempt) {
-    ws.reset(attempt == 0 ? nullptr : &rs);
+    // Regrowths: attempts 1 and 2 without jitter, and the last two with the seeded jitter (which
+    // orders the transfers' ties differently), after the seeded attempts.
+    const int last = attempts + regrowths;
+    const bool offsets = regrowths > 0 && (attempt == 1 || attempt == last - 2);
+    const bool fronts = regrowths > 0 && (attempt == 2 || attempt == last - 1);
+    ws.reset(attempt == 1 || attempt == 2 ? (regrowths > 0 ? nullptr : &rs)
+                                          : attempt == 0 ? nullptr : &rs);
     if (const int unreached = ws.grow(); unreached > 0) {
       throw Error(
           fmt::format("transfer: {} of hull '{}' not 4-connected to any start cell; every "
@@ -788,8 +795,8 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
                       plural(unreached, "hull cell"), hull.source()));
     }
     auto excess = [&](int r) { return ws.weight(r) - target[static_cast<std::size_t>(r)]; };
-    if (attempt == attempts && regrowths > 0) regrow_with_offsets(ws, target, goal);
-    if (attempt == attempts + 1) regrow_with_fronts(ws, target, goal);
+    if (offsets) regrow_with_offsets(ws, target, goal);
+    if (fronts) regrow_with_fronts(ws, target, goal);
 
     auto imbalance = [&]() {
       double sum = 0;
