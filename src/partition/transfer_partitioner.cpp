@@ -556,13 +556,13 @@ std::vector<int> spread_virtual_starts(const world::HullMask& hull, std::span<co
   return out;
 }
 
-// Regrowth with head starts (attempt 2): the plain growth gives every start its geodesic Voronoi
-// cell, which for starts a few cells apart can be a pocket far smaller than its share, walled in by
-// its neighbours' cells; the transfers must then pass the share through long chains of regions,
-// which wind into thin arms and get stuck. Here the regions grow as competing fronts
-// (TransferWorkspace::grow_fronts), each leaving its start late by an offset, and the offsets are
-// adjusted until the sizes are near their targets: a walled-in start gets a head start and its
-// neighbours' regions grow around it instead. The transfers then start from compact, nearly
+// Regrowth with head starts (the regrowth attempts): the plain growth gives every start its
+// geodesic Voronoi cell, which for starts a few cells apart can be a pocket far smaller than its
+// share, walled in by its neighbours' cells; the transfers must then pass the share through long
+// chains of regions, which wind into thin arms and get stuck. Here the regions grow as competing
+// fronts (TransferWorkspace::grow_fronts), each leaving its start late by an offset, and the
+// offsets are adjusted until the sizes are near their targets: a walled-in start gets a head start
+// and its neighbours' regions grow around it instead. The transfers then start from compact, nearly
 // balanced regions. Deterministic; at most kRegrowIterations growths, the best one kept.
 constexpr int kRegrowIterations = 30;
 constexpr int kOffsetIterations = 20;
@@ -724,7 +724,8 @@ const Params<TransferOptions>& transfer_params() {
         .integer("attempts", &TransferOptions::attempts, 1, 1000,
                  "restarts with seeded tie-breaking when the transfers get stuck")
         .flag("regrow", &TransferOptions::regrow,
-              "after the seeded attempts, two attempts grown with per-region head starts")
+              "regrowth attempts with per-region head starts (after attempt 0 and after the "
+              "seeded attempts)")
         .flag("spread-starts", &TransferOptions::spread_starts,
               "grow regions from spread virtual starts (UAVs launching together fly to theirs)");
     return p;
@@ -771,11 +772,12 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   int attempt = 0;
   bool converged = n == 1;
   bool hit_limit = false;
-  // Attempt 0 (the plain growth), then (n > 1) the two regrowth attempts, then the seeded ones.
-  // The regrowths draw nothing from the stream, so the seeded attempts are those they were
-  // without them: a start set that balanced in attempt 0 is unchanged, and one that balanced in a
-  // seeded attempt still balances (in a regrowth attempt or the same seeded one). A provably infeasible set (a start walled in by other starts) gets one attempt: its connected
-  // partition, with the proof as the warning.
+  // Attempt 0 (the plain growth), then (n > 1) the two regrowth attempts, then the seeded ones,
+  // then the two regrowths again with the last seeded jitter. The regrowths draw nothing from the
+  // stream, so the seeded attempts are those they were without them: a start set that balanced in
+  // attempt 0 is unchanged, and one that balanced in a seeded attempt still balances (in a regrowth
+  // attempt or the same seeded one). A provably infeasible set (a start walled in by other starts)
+  // gets one attempt: its connected partition, with the proof as the warning.
   const std::string walled =
       walled_start_warning(hull, starts, weighted ? &request.weights : nullptr, target, goal);
   const int regrowths = options_.regrow && n > 1 && walled.empty() ? 4 : 0;
@@ -787,7 +789,8 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
     const bool offsets = regrowths > 0 && (attempt == 1 || attempt == last - 2);
     const bool fronts = regrowths > 0 && (attempt == 2 || attempt == last - 1);
     ws.reset(attempt == 1 || attempt == 2 ? (regrowths > 0 ? nullptr : &rs)
-                                          : attempt == 0 ? nullptr : &rs);
+             : attempt == 0               ? nullptr
+                                          : &rs);
     if (const int unreached = ws.grow(); unreached > 0) {
       throw Error(
           fmt::format("transfer: {} of hull '{}' not 4-connected to any start cell; every "
