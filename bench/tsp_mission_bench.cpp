@@ -4,11 +4,15 @@
 //
 //   tsp_mission_bench [--hull FILE] [--uavs 4,8] [--scenarios perfect,combined] [--s2 7,9,11]
 //                     [--seeds N] [--solvers exact,dfj-iterative:time-limit=10,...]
+//                     [--sizes 8,16,32,64,128]
 //
 // Defaults: the default hull, the paper's grid (four scenarios, s2 ∈ {7, 9, 11}, n = 4…8), two
 // seeds, solvers exact, exact with the branch-and-cut only (dp-max-segments=0), dfj-iterative
 // (time-limit=10) and heuristic. The missions themselves run with the default solver. Times are
 // CPU time of the solving thread (the machine is shared: wall time measures the other jobs).
+// A last table breaks the first solver's solves down by size g (buckets ending at --sizes): how
+// many it proved and how long proven and unproven ones took, which is where the size above which
+// a solve returns a bound instead of a proof is read off (docs/results.md).
 
 #include <fmt/format.h>
 
@@ -16,6 +20,7 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <limits>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -105,12 +110,56 @@ struct Mission {
   std::vector<tsp::SegmentTsp> solves;
 };
 
+/// The first solver's solves by size bucket (lo, hi]: proofs, and CPU times of the proven ones and
+/// of the others.
+void print_by_size(const std::string& solver, const std::vector<Mission>& missions,
+                   const std::vector<double>& times, const std::vector<char>& proved,
+                   std::vector<int> sizes) {
+  std::sort(sizes.begin(), sizes.end());
+  sizes.push_back(std::numeric_limits<int>::max());
+  fmt::print(
+      "\n{} by size g | solves | proven | proven: median ms | p99 ms | max ms | not proven: max "
+      "ms |\n|---|---|---|---|---|---|---|\n",
+      solver);
+  int lo = 1;
+  for (const int hi : sizes) {
+    std::vector<double> proven_times;
+    double unproven_max = -1;
+    int solves = 0;
+    std::size_t i = 0;
+    for (const auto& m : missions) {
+      for (const auto& p : m.solves) {
+        const int g = static_cast<int>(p.segments.size());
+        if (g > lo && g <= hi) {
+          ++solves;
+          if (proved[i])
+            proven_times.push_back(times[i]);
+          else
+            unproven_max = std::max(unproven_max, times[i]);
+        }
+        ++i;
+      }
+    }
+    if (solves > 0) {
+      const std::string range = hi == std::numeric_limits<int>::max()
+                                    ? fmt::format("{} <", lo)
+                                    : fmt::format("{}–{}", lo + 1, hi);
+      fmt::print("| {} | {} | {} | {:.3f} | {:.3f} | {:.1f} | {} |\n", range, solves,
+                 proven_times.size(), 1e3 * quantile(proven_times, 0.5),
+                 1e3 * quantile(proven_times, 0.99), 1e3 * quantile(proven_times, 1.0),
+                 unproven_max < 0 ? std::string("—") : fmt::format("{:.1f}", 1e3 * unproven_max));
+    }
+    lo = hi;
+  }
+}
+
 int run(int argc, char** argv) {
   std::string hull_path = "default";
   std::vector<int> uavs = {4, 5, 6, 7, 8};
   std::vector<int> s2s = {7, 9, 11};
   std::vector<std::string> scenarios = {"perfect", "imperfect", "inhomogeneous", "combined"};
   int seeds = 2;
+  std::vector<int> sizes = {8, 16, 24, 32, 48, 64, 96, 128};
   std::vector<std::string> solvers = {"exact", "exact:dp-max-segments=0",
                                       "dfj-iterative:time-limit=10", "heuristic"};
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -128,6 +177,8 @@ int run(int argc, char** argv) {
       seeds = std::stoi(value);
     else if (key == "--solvers")
       solvers = split(value, ',');
+    else if (key == "--sizes")
+      sizes = ints(value);
     else
       throw std::invalid_argument(fmt::format("unknown option '{}'", key));
   }
@@ -173,6 +224,7 @@ int run(int argc, char** argv) {
       "| solver | solves | proven | median ms | p99 ms | max ms (g) | mission total: median ms | "
       "max ms |\n|---|---|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> per_solve(solvers.size());
+  std::vector<char> first_proved;  // the first solver's proof per instance
   // Every proven optimum of an instance must be the same length whichever solver proved it.
   std::vector<long long> optimum(total, -1);
   for (std::size_t k = 0; k < solvers.size(); ++k) {
@@ -197,6 +249,7 @@ int run(int argc, char** argv) {
         }
         if (s.optimal) known = s.length;
         times.push_back(t);
+        if (k == 0) first_proved.push_back(s.optimal ? 1 : 0);
         sum += t;
         proven += s.optimal ? 1 : 0;
         if (t > worst) {
@@ -231,6 +284,7 @@ int run(int argc, char** argv) {
     }
     fmt::print("| {} | {:.1f}x | {:.2f}x |\n", solvers[k], quantile(ratios, 0.5), worst);
   }
+  print_by_size(solvers.front(), missions, per_solve.front(), first_proved, sizes);
   return 0;
 }
 

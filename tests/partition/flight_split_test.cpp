@@ -15,18 +15,11 @@
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
 #include "hullinspect/world/random.hpp"
+#include "support/no_fly_layouts.hpp"
 #include "support/partition_checker.hpp"
 
 namespace hullinspect::testing {
 namespace {
-
-using NoFly = grid::Grid<std::uint8_t>;
-
-void box(NoFly& m, int x0, int y0, int x1, int y1) {
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) m(x, y) = 1;
-  }
-}
 
 // A request as a mission makes it (planners::add_no_fly): flyable positions and who sees what.
 struct SplitRequest {
@@ -34,7 +27,7 @@ struct SplitRequest {
   partition::PartitionRequest request;
 };
 
-SplitRequest make_request(const world::HullMask& hull, const NoFly& no_fly,
+SplitRequest make_request(const world::HullMask& hull, const NoFlyMask& no_fly,
                           std::vector<grid::Cell> starts, int s1 = 5, int s2 = 7) {
   SplitRequest s;
   s.reach = world::compute_reachability(hull, &no_fly, s1, s2, starts);
@@ -78,9 +71,9 @@ partition::Partition split(const partition::PartitionRequest& request, const std
 }
 
 // The default hull with a full-height wall at x = 100 (the issue-12 repro).
-NoFly wall_at_100() {
-  NoFly m(world::default_hull().width(), world::default_hull().height(), 0);
-  box(m, 100, 0, 100, 29);
+NoFlyMask wall_at_100() {
+  NoFlyMask m(world::default_hull().width(), world::default_hull().height(), 0);
+  no_fly_box(m, 100, 0, 100, 29);
   return m;
 }
 
@@ -124,8 +117,8 @@ TEST(FlightSplit, TheIssueReproGivesNoRegionAcrossTheWall) {
 
 TEST(FlightSplit, OneFlightSpaceIsLeftToThePartitioner) {
   const auto& hull = world::default_hull();
-  NoFly m(hull.width(), hull.height(), 0);
-  box(m, 40, 10, 40, 29);  // a mooring line: the flight space stays one, every cell is seen
+  NoFlyMask m(hull.width(), hull.height(), 0);
+  no_fly_box(m, 40, 10, 40, 29);  // a mooring line: the flight space stays one, every cell is seen
   world::MissionParams params;
   params.uavs = 4;
   const SplitRequest s = make_request(hull, m, world::start_cells(params, hull));
@@ -169,8 +162,8 @@ TEST(FlightSplit, APieceWithoutAStartGoesWholeToTheNearestUav) {
     for (int x = 0; x < 20; ++x) u(x, y) = y < 2 || x < 4 || x >= 16 ? 1 : 0;
   }
   const world::HullMask hull(std::move(u), "test:u");
-  NoFly m(20, 12, 0);
-  box(m, 0, 4, 19, 4);
+  NoFlyMask m(20, 12, 0);
+  no_fly_box(m, 0, 4, 19, 4);
   const SplitRequest s = make_request(hull, m, {{10, 0}, {0, 9}, {3, 6}});
   ASSERT_EQ(s.reach.flight_components, 2);
   EXPECT_TRUE(seen_from_is_right(hull, s, 5, 7));
@@ -189,9 +182,9 @@ TEST(FlightSplit, APieceWithoutAStartGoesWholeToTheNearestUav) {
 // Random walls that cut the default hull's flight space (a staircase from bottom to top, or from
 // left to right), one or two of them, and random starts: every partition is flyable, valid and
 // deterministic.
-NoFly random_walls(world::RandomStream& rs, int width, int height) {
+NoFlyMask random_walls(world::RandomStream& rs, int width, int height) {
   auto below = [&](int n) { return static_cast<int>(rs.below(static_cast<std::uint64_t>(n))); };
-  NoFly m(width, height, 0);
+  NoFlyMask m(width, height, 0);
   const int walls = 1 + below(2);
   for (int w = 0; w < walls; ++w) {
     const bool vertical = below(3) != 0;
@@ -214,7 +207,7 @@ NoFly random_walls(world::RandomStream& rs, int width, int height) {
 }
 
 std::vector<grid::Cell> random_starts(world::RandomStream& rs, const world::HullMask& hull,
-                                      const NoFly& no_fly, int n) {
+                                      const NoFlyMask& no_fly, int n) {
   std::vector<grid::Cell> starts;
   while (static_cast<int>(starts.size()) < n) {
     const int i = hull.cells()[rs.below(hull.cells().size())];
@@ -230,7 +223,7 @@ TEST(FlightSplit, RandomSplittingWallsAndStarts) {
   int split_spaces = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     world::RandomStream rs(seed, 7);
-    const NoFly m = random_walls(rs, hull.width(), hull.height());
+    const NoFlyMask m = random_walls(rs, hull.width(), hull.height());
     const int n = 2 + static_cast<int>(rs.below(5));
     const SplitRequest s = make_request(hull, m, random_starts(rs, hull, m, n));
     split_spaces += s.reach.flight_components > 1 ? 1 : 0;

@@ -18,32 +18,10 @@
 #include "hullinspect/world/random.hpp"
 #include "support/mission_checker.hpp"
 #include "support/no_fly_brute.hpp"
+#include "support/no_fly_layouts.hpp"
 
 namespace hullinspect::testing {
 namespace {
-
-using NoFly = grid::Grid<std::uint8_t>;
-
-void box(NoFly& m, int x0, int y0, int x1, int y1) {
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) m(x, y) = 1;
-  }
-}
-
-// A 60 × 20 hull: a full rectangle except the two bottom corners (as in no_fly_missions_test).
-const world::HullMask& small_hull() {
-  static const world::HullMask hull = [] {
-    grid::Grid<std::uint8_t> m(60, 20, 1);
-    for (int y = 0; y < 4; ++y) {
-      for (int x = 0; x < 4 - y; ++x) {
-        m(x, y) = 0;
-        m(59 - x, y) = 0;
-      }
-    }
-    return world::HullMask(std::move(m), "test:small");
-  }();
-  return hull;
-}
 
 std::vector<std::string> planner_names() {
   std::vector<std::string> out;
@@ -53,7 +31,7 @@ std::vector<std::string> planner_names() {
 
 struct Mission {
   const world::HullMask* hull = nullptr;
-  NoFly no_fly;
+  NoFlyMask no_fly;
   std::vector<grid::Cell> starts;  // empty: the default starts
   int uavs = 4;
   std::uint64_t seed = 1;
@@ -72,7 +50,7 @@ sim::MissionResult expect_completes(const Mission& m, const std::string& algorit
   spec.params.uavs = m.uavs;
   spec.params.starts = m.starts;
   spec.params.time_limit = m.time_limit;
-  spec.params.no_fly = std::make_shared<const NoFly>(m.no_fly);
+  spec.params.no_fly = std::make_shared<const NoFlyMask>(m.no_fly);
   MissionChecker checker;
   planners::MissionOptions options;
   options.observers.push_back(&checker);
@@ -99,8 +77,8 @@ class FlightSplitMissions : public ::testing::TestWithParam<std::string> {};
 TEST_P(FlightSplitMissions, WallAcrossTheDefaultHull) {
   Mission m;
   m.hull = &world::default_hull();
-  m.no_fly = NoFly(m.hull->width(), m.hull->height(), 0);
-  box(m.no_fly, 100, 0, 100, 29);
+  m.no_fly = NoFlyMask(m.hull->width(), m.hull->height(), 0);
+  no_fly_box(m.no_fly, 100, 0, 100, 29);
   m.seed = 2;
   m.time_limit = 3000;
   expect_completes(m, GetParam(), "wall x = 100");
@@ -108,9 +86,9 @@ TEST_P(FlightSplitMissions, WallAcrossTheDefaultHull) {
 
 TEST_P(FlightSplitMissions, WallWithUavsOnBothSidesInUnequalNumbers) {
   Mission m;
-  m.hull = &small_hull();
-  m.no_fly = NoFly(60, 20, 0);
-  box(m.no_fly, 40, 0, 40, 19);
+  m.hull = &small_keel_hull();
+  m.no_fly = NoFlyMask(60, 20, 0);
+  no_fly_box(m.no_fly, 40, 0, 40, 19);
   m.starts = {{5, 10}, {20, 10}, {35, 10}, {50, 10}};  // three left, one right
   expect_completes(m, GetParam(), "3 | 1");
   m.starts = {{10, 10}, {45, 5}, {50, 15}, {55, 10}};  // one left, three right
@@ -120,16 +98,16 @@ TEST_P(FlightSplitMissions, WallWithUavsOnBothSidesInUnequalNumbers) {
 
 TEST_P(FlightSplitMissions, WallWithNoUavOnOneSide) {
   Mission m;
-  m.hull = &small_hull();
-  m.no_fly = NoFly(60, 20, 0);
-  box(m.no_fly, 30, 0, 30, 19);
+  m.hull = &small_keel_hull();
+  m.no_fly = NoFlyMask(60, 20, 0);
+  no_fly_box(m.no_fly, 30, 0, 30, 19);
   m.starts = {{5, 10}, {15, 5}, {25, 15}};
   m.uavs = 3;
   const auto right_empty = expect_completes(m, GetParam(), "no UAV right of x = 30");
   // From x ≤ 29, z = 1 (half 2) sees up to x = 31: columns 32 … 59 less the 10 corner cells.
   EXPECT_EQ(right_empty.unreachable_cells, 20 * (60 - 32) - 10);
   // Also a part enclosed between two walls, with UAVs on both outer sides.
-  box(m.no_fly, 45, 0, 45, 19);
+  no_fly_box(m.no_fly, 45, 0, 45, 19);
   m.starts = {{5, 10}, {50, 10}, {25, 15}};
   const auto middle_empty = expect_completes(m, GetParam(), "empty middle");
   // Seen at z = 1 from the left up to x = 31, from the right down to x = 44.
@@ -139,14 +117,14 @@ TEST_P(FlightSplitMissions, WallWithNoUavOnOneSide) {
 // Random walls that cut the flight space (staircases across the hull, one or two of them) and
 // random starts (2 to 6 UAVs): ten seeds (40 pass; ten keep the suite fast).
 TEST_P(FlightSplitMissions, RandomSplittingWallsAndStarts) {
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     world::RandomStream rs(seed, 11);
     auto below = [&](int n) { return static_cast<int>(rs.below(static_cast<std::uint64_t>(n))); };
     Mission m;
     m.hull = &hull;
     m.seed = seed;
-    m.no_fly = NoFly(hull.width(), hull.height(), 0);
+    m.no_fly = NoFlyMask(hull.width(), hull.height(), 0);
     const int walls = 1 + below(2);
     for (int w = 0; w < walls; ++w) {
       const bool vertical = below(3) != 0;

@@ -19,61 +19,39 @@
 #include "hullinspect/world/scenario.hpp"
 #include "support/mission_checker.hpp"
 #include "support/no_fly_brute.hpp"
+#include "support/no_fly_layouts.hpp"
 
 namespace hullinspect::testing {
 namespace {
 
-using NoFly = grid::Grid<std::uint8_t>;
-
-// A 60 × 20 hull: a full rectangle except the two bottom corners (a hull-like keel line).
-const world::HullMask& small_hull() {
-  static const world::HullMask hull = [] {
-    grid::Grid<std::uint8_t> m(60, 20, 1);
-    for (int y = 0; y < 4; ++y) {
-      for (int x = 0; x < 4 - y; ++x) {
-        m(x, y) = 0;
-        m(59 - x, y) = 0;
-      }
-    }
-    return world::HullMask(std::move(m), "test:small");
-  }();
-  return hull;
-}
-
-void box(NoFly& m, int x0, int y0, int x1, int y1) {
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) m(x, y) = 1;
-  }
-}
-
 struct Layout {
   std::string name;
-  NoFly no_fly;
+  NoFlyMask no_fly;
 };
 
 std::vector<Layout> layouts() {
   std::vector<Layout> out;
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   {  // A wall across the hull with one gap near the bottom.
-    NoFly m(hull.width(), hull.height(), 0);
-    box(m, 30, 3, 30, 19);
+    NoFlyMask m(hull.width(), hull.height(), 0);
+    no_fly_box(m, 30, 3, 30, 19);
     out.push_back({"wall-with-gap", std::move(m)});
   }
   {  // A ring around part of the hull: its inside stays reachable through a 1-cell door.
-    NoFly m(hull.width(), hull.height(), 0);
-    box(m, 10, 6, 24, 6);
-    box(m, 10, 16, 24, 16);
-    box(m, 10, 6, 10, 16);
-    box(m, 24, 6, 24, 16);
+    NoFlyMask m(hull.width(), hull.height(), 0);
+    no_fly_box(m, 10, 6, 24, 6);
+    no_fly_box(m, 10, 16, 24, 16);
+    no_fly_box(m, 10, 6, 10, 16);
+    no_fly_box(m, 24, 6, 24, 16);
     m(24, 11) = 0;
     out.push_back({"ring", std::move(m)});
   }
   {  // Whole flight rows of z = 1 strips (s1 = 5: rows 2, 7, 12) and of a z = 2 strip (row 3).
-    NoFly m(hull.width(), hull.height(), 0);
-    box(m, 5, 2, 54, 2);
-    box(m, 0, 7, 59, 7);
-    box(m, 20, 3, 40, 3);
-    box(m, 0, 12, 59, 12);
+    NoFlyMask m(hull.width(), hull.height(), 0);
+    no_fly_box(m, 5, 2, 54, 2);
+    no_fly_box(m, 0, 7, 59, 7);
+    no_fly_box(m, 20, 3, 40, 3);
+    no_fly_box(m, 0, 12, 59, 12);
     // Walls between the strips, each with gaps.
     m(2, 7) = 0;
     m(57, 7) = 0;
@@ -81,17 +59,17 @@ std::vector<Layout> layouts() {
     out.push_back({"flight-rows", std::move(m)});
   }
   {  // Zones right next to the default starts (y = 10; x = 7, 22, 37, 52 for n = 4).
-    NoFly m(hull.width(), hull.height(), 0);
+    NoFlyMask m(hull.width(), hull.height(), 0);
     for (int x : {7, 22, 37, 52}) {
-      box(m, x - 1, 11, x + 1, 11);
-      box(m, x + 1, 9, x + 1, 10);
-      box(m, x - 2, 8, x - 2, 10);
+      no_fly_box(m, x - 1, 11, x + 1, 11);
+      no_fly_box(m, x + 1, 9, x + 1, 10);
+      no_fly_box(m, x - 2, 8, x - 2, 10);
     }
     out.push_back({"next-to-starts", std::move(m)});
   }
   {  // A block too big to see behind at z = 1 (cells unreachable for close-up and for both planes).
-    NoFly m(hull.width(), hull.height(), 0);
-    box(m, 40, 8, 50, 19);
+    NoFlyMask m(hull.width(), hull.height(), 0);
+    no_fly_box(m, 40, 8, 50, 19);
     out.push_back({"gangway-block", std::move(m)});
   }
   // Random boxes (a fixed LCG, so the layouts are the same everywhere).
@@ -101,14 +79,14 @@ std::vector<Layout> layouts() {
     return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
   };
   for (int seed = 0; seed < 3; ++seed) {
-    NoFly m(hull.width(), hull.height(), 0);
+    NoFlyMask m(hull.width(), hull.height(), 0);
     for (int b = 0; b < 6; ++b) {
       const int x0 = below(hull.width() - 6);
       const int y0 = below(hull.height() - 4);
       // Named draws (argument order is unspecified; this is the order the boxes were drawn in).
       const int dy = below(4);
       const int dx = below(6);
-      box(m, x0, y0, x0 + dx, y0 + dy);
+      no_fly_box(m, x0, y0, x0 + dx, y0 + dy);
     }
     for (int x : {7, 22, 37, 52}) m(x, 10) = 0;  // keep the default starts free
     out.push_back({fmt::format("random-{}", seed), std::move(m)});
@@ -130,7 +108,7 @@ TEST_P(NoFlyMissions, CompletesUnderTheChecker) {
   const auto it =
       std::find_if(all.begin(), all.end(), [&](const Layout& l) { return l.name == c.layout; });
   ASSERT_NE(it, all.end());
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   for (std::uint64_t seed : {1, 2}) {
     planners::MissionSpec spec;
     spec.algorithm = c.algorithm;
@@ -141,7 +119,7 @@ TEST_P(NoFlyMissions, CompletesUnderTheChecker) {
     spec.seed = seed;
     spec.params.uavs = 4;
     spec.params.s2 = 7;
-    spec.params.no_fly = std::make_shared<const NoFly>(it->no_fly);
+    spec.params.no_fly = std::make_shared<const NoFlyMask>(it->no_fly);
     spec.corrosion.p_tp = c.scenario == "imperfect" ? 0.6 : 1.0;
     spec.corrosion.p_fp = c.scenario == "imperfect" ? 0.003 : 0.0;
     spec.corrosion.zones = {{0, hull.width(), 0.02, 5}};
@@ -184,16 +162,16 @@ INSTANTIATE_TEST_SUITE_P(EveryPlanner, NoFlyMissions, ::testing::ValuesIn(cases(
 // clean nobody ever looked at it and the mission stopped one cell short (INCOMPLETE, t = 288).
 TEST(NoFlyRegression, PartTspLooksAtPriorCellsItCannotInspect) {
   const auto& hull = world::default_hull();
-  NoFly zones(hull.width(), hull.height(), 0);
-  for (int x : {20, 40, 190, 210}) box(zones, x, 10, x, 29);  // the obstacles preset's boxes
-  box(zones, 110, 18, 117, 29);
+  NoFlyMask zones(hull.width(), hull.height(), 0);
+  for (int x : {20, 40, 190, 210}) no_fly_box(zones, x, 10, x, 29);  // the obstacles preset's boxes
+  no_fly_box(zones, 110, 18, 117, 29);
   planners::MissionSpec spec;
   spec.algorithm = "part-tsp";
   spec.planner_options = {{"r1", "2"}, {"r2", "0"}};
   spec.seed = 8;
   spec.params.uavs = 8;
   spec.params.s2 = 7;
-  spec.params.no_fly = std::make_shared<const NoFly>(zones);
+  spec.params.no_fly = std::make_shared<const NoFlyMask>(zones);
   spec.corrosion = world::scenario("imperfect").corrosion(hull.width());
   MissionChecker checker;
   planners::MissionOptions options;
@@ -205,13 +183,13 @@ TEST(NoFlyRegression, PartTspLooksAtPriorCellsItCannotInspect) {
 }
 
 TEST(NoFlyAccounting, UnreachableCellsLeaveTheMetrics) {
-  const auto& hull = small_hull();
-  NoFly m(hull.width(), hull.height(), 0);
-  box(m, 40, 8, 50, 19);
+  const auto& hull = small_keel_hull();
+  NoFlyMask m(hull.width(), hull.height(), 0);
+  no_fly_box(m, 40, 8, 50, 19);
   planners::MissionSpec spec;
   spec.algorithm = "coop-frontier";
   spec.params.uavs = 2;
-  spec.params.no_fly = std::make_shared<const NoFly>(m);
+  spec.params.no_fly = std::make_shared<const NoFlyMask>(m);
   spec.corrosion.zones = {{0, hull.width(), 0.0, 1}};  // no corrosion: c = 100 throughout
   const auto result = planners::run_mission(spec, hull);
   // The block is 11 × 12; z = 1 (half 2) sees 2 cells into it from the left, right and bottom
@@ -225,13 +203,13 @@ TEST(NoFlyAccounting, UnreachableCellsLeaveTheMetrics) {
 }
 
 TEST(NoFlyInputs, StartOnANoFlyPositionIsAnError) {
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   planners::MissionSpec spec;
   spec.params.uavs = 1;
   spec.params.starts = {{10, 10}};
-  NoFly m(hull.width(), hull.height(), 0);
+  NoFlyMask m(hull.width(), hull.height(), 0);
   m(10, 10) = 1;
-  spec.params.no_fly = std::make_shared<const NoFly>(m);
+  spec.params.no_fly = std::make_shared<const NoFlyMask>(m);
   try {
     planners::validate(spec, hull);
     FAIL() << "no error";
@@ -241,21 +219,21 @@ TEST(NoFlyInputs, StartOnANoFlyPositionIsAnError) {
 }
 
 TEST(NoFlyInputs, DefaultStartsAvoidNoFlyPositions) {
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   world::MissionParams p;
   p.uavs = 4;
-  NoFly m(hull.width(), hull.height(), 0);
+  NoFlyMask m(hull.width(), hull.height(), 0);
   m(7, 10) = 1;
-  p.no_fly = std::make_shared<const NoFly>(m);
+  p.no_fly = std::make_shared<const NoFlyMask>(m);
   const auto starts = world::start_cells(p, hull);
   EXPECT_EQ(starts[0], (grid::Cell{7, 9}));  // nearest free hull cell, lowest y first
   EXPECT_NO_THROW(world::validate(p, hull));
 }
 
 TEST(NoFlyInputs, MaskOfTheWrongSize) {
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   world::MissionParams p;
-  p.no_fly = std::make_shared<const NoFly>(NoFly(10, 10, 0));
+  p.no_fly = std::make_shared<const NoFlyMask>(NoFlyMask(10, 10, 0));
   try {
     world::validate(p, hull);
     FAIL() << "no error";
@@ -265,7 +243,7 @@ TEST(NoFlyInputs, MaskOfTheWrongSize) {
 }
 
 TEST(NoFlyInputs, BoxesAreCheckedAndParsed) {
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   const auto b = world::parse_cell_box("1,2,3,4", "no-fly-box");
   EXPECT_EQ(b.x0, 1);
   EXPECT_EQ(b.y0, 2);
@@ -294,13 +272,13 @@ TEST(NoFlyInputs, BoxesAreCheckedAndParsed) {
 }
 
 TEST(NoFlySimulator, AMoveOntoANoFlyPositionIsAPlannerError) {
-  const auto& hull = small_hull();
+  const auto& hull = small_keel_hull();
   world::MissionParams p;
   p.uavs = 1;
   p.starts = {{10, 10}};
-  NoFly m(hull.width(), hull.height(), 0);
+  NoFlyMask m(hull.width(), hull.height(), 0);
   m(11, 10) = 1;
-  p.no_fly = std::make_shared<const NoFly>(m);
+  p.no_fly = std::make_shared<const NoFlyMask>(m);
   world::CorrosionParams corrosion;
   corrosion.zones = {{0, hull.width(), 0.0, 1}};
   const auto instance = world::generate_instance(hull, corrosion, 1);
