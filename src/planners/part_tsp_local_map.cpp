@@ -60,6 +60,7 @@ LocalMaps::LocalMaps(const grid::Grid<std::int16_t>& owner, const grid::Grid<std
       ++cols[slot + static_cast<std::size_t>(value_slot(v))];
     }
   }
+  start_values_ = values_;
 }
 
 std::size_t LocalMaps::column_slot(const Region& r, int z, int x, int y) const {
@@ -102,6 +103,69 @@ void LocalMaps::set_value(int index, std::int8_t value) {
   values_[index] = value;
 }
 
+void LocalMaps::count(Region& r, int index, std::int8_t value, int delta) {
+  const grid::Cell c = owner_.cell(index);
+  r.cells += delta;
+  if (value == sim::kUnknown) r.zeros += delta;
+  if (value == sim::kCorrosionSeen) r.twos += delta;
+  const bool counted = value == sim::kUnknown || value == sim::kCorrosionSeen;
+  for (int z = 1; z <= 2; ++z) {
+    auto& cols = r.columns[static_cast<std::size_t>(z - 1)];
+    const std::size_t slot = column_slot(r, z, c.x, c.y);
+    cols[slot + kCellsSlot] += delta;
+    if (counted) cols[slot + static_cast<std::size_t>(value_slot(value))] += delta;
+  }
+}
+
+void LocalMaps::widen(Region& r, int x_begin, int x_end) {
+  if (r.width > 0) {
+    x_begin = std::min(x_begin, r.x_begin);
+    x_end = std::max(x_end, r.x_begin + r.width);
+  }
+  if (r.width > 0 && x_begin == r.x_begin && x_end == r.x_begin + r.width) return;
+  const int width = x_end - x_begin;
+  for (int z = 1; z <= 2; ++z) {
+    auto& cols = r.columns[static_cast<std::size_t>(z - 1)];
+    std::vector<int> wider(static_cast<std::size_t>(layout(z).strips() * width * 3), 0);
+    for (int j = 0; j < layout(z).strips() && r.width > 0; ++j) {
+      for (int x = r.x_begin; x < r.x_begin + r.width; ++x) {
+        for (int v = 0; v < 3; ++v) {
+          wider[static_cast<std::size_t>((j * width + x - x_begin) * 3 + v)] =
+              cols[static_cast<std::size_t>((j * r.width + x - r.x_begin) * 3 + v)];
+        }
+      }
+    }
+    cols = std::move(wider);
+  }
+  r.x_begin = x_begin;
+  r.width = width;
+}
+
+void LocalMaps::hand_over(std::span<const int> cells, int to, bool forget) {
+  if (cells.empty()) return;
+  if (to < 0 || to >= uavs()) throw LogicError("LocalMaps: a hand-over to a UAV beyond the fleet");
+  Region& target = regions_[static_cast<std::size_t>(to)];
+  int x_min = width();
+  int x_max = -1;
+  for (int i : cells) {
+    if (owner_[i] < 0) throw LogicError("LocalMaps: a hand-over of a cell off the hull");
+    x_min = std::min(x_min, owner_.cell(i).x);
+    x_max = std::max(x_max, owner_.cell(i).x);
+  }
+  widen(target, x_min, x_max + 1);
+  for (int i : cells) {
+    const int from = owner_[i];
+    if (from == to && !forget) continue;
+    count(regions_[static_cast<std::size_t>(from)], i, values_[i], -1);
+    owner_[i] = static_cast<std::int16_t>(to);
+    if (forget) {
+      values_[i] = start_values_[i];
+      seen_from_z2_[i] = 0;
+    }
+    count(target, i, values_[i], +1);
+  }
+}
+
 void LocalMaps::write_off(const grid::Grid<std::uint8_t>& reach) {
   reach_ = &reach;
   for (int i = 0; i < owner_.size(); ++i) {
@@ -117,6 +181,7 @@ void LocalMaps::write_off(const grid::Grid<std::uint8_t>& reach) {
       set_value(i, sim::kUnknown);
     }
   }
+  start_values_ = values_;
 }
 
 LocalEvents LocalMaps::ingest(int k, std::span<const sim::Reading> readings) {

@@ -4,15 +4,18 @@
 #include <chrono>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/planners/part_tsp_share.hpp"
 #include "hullinspect/planners/prior_weights.hpp"
 
 namespace hullinspect::planners {
 
 using part_tsp::divide_into_segments;
 using part_tsp::evaluate_fsm;
+using part_tsp::flight_field;
 using part_tsp::FsmDecision;
 using part_tsp::FsmInput;
 using part_tsp::has_targets;
+using part_tsp::helper_piece;
 using part_tsp::kModeAscending;
 using part_tsp::kModeCoverZ1;
 using part_tsp::kModeCoverZ2;
@@ -23,6 +26,8 @@ using part_tsp::kModeInspectZ1;
 using part_tsp::LocalEvents;
 using part_tsp::LocalMaps;
 using part_tsp::PlannedVisit;
+using part_tsp::region_cells;
+using part_tsp::remaining_work;
 using part_tsp::segment_ends;
 using part_tsp::StripSegment;
 using part_tsp::target_value;
@@ -55,6 +60,24 @@ void PartTspPlanner::start(const PlannerContext& context) {
   for (int k = 0; k < n; ++k)
     uavs_[static_cast<std::size_t>(k)].path.set_distances(&flights_.of(k));
   stats_ = {};
+  failed_regions_taken_ = 0;
+  pieces_taken_ = 0;
+  if (options_.share_work) {
+    part_of_.assign(static_cast<std::size_t>(n), 0);
+    if (flights_.split()) {
+      for (int k = 0; k < n; ++k) {
+        part_of_[static_cast<std::size_t>(k)] =
+            context.reach->flight_component[context.starts[static_cast<std::size_t>(k)]];
+      }
+    }
+    declined_.assign(static_cast<std::size_t>(n * n), -1);
+    const auto cells = static_cast<std::size_t>(context.hull.cell_count());
+    share_cells_.reserve(cells);
+    share_piece_.reserve(cells);
+    share_order_.reserve(cells);
+    helper_field_ = grid::Grid<int>(context.hull.width(), context.hull.height(), 0);
+    owner_field_ = helper_field_;
+  }
 }
 
 void PartTspPlanner::decide(const sim::PlannerView& view, std::span<sim::Action> actions) {
@@ -66,7 +89,69 @@ void PartTspPlanner::decide(const sim::PlannerView& view, std::span<sim::Action>
     if (events.detection) p.last_detection = view.time;
     if (events.inspection) p.last_inspection = view.time;
     actions[k] = decide_uav(uav_id, view.uavs[k], view.time);
+    if (options_.share_work && p.mode == kModeDone && take_over(uav_id, view)) {
+      actions[k] = decide_uav(uav_id, view.uavs[k], view.time);
+    }
   }
+}
+
+bool PartTspPlanner::take_over(int j, const sim::PlannerView& view) {
+  const auto n = uavs_.size();
+  const int part = part_of_[static_cast<std::size_t>(j)];
+  // A failed UAV's region first (no one else will ever do it), the one with the most work left,
+  // ties to the lowest id. Its map failed with it: the region comes back as it was at the start.
+  int donor = -1;
+  double most = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!view.uavs[k].failed || part_of_[k] != part) continue;
+    const double work = remaining_work(*maps_, static_cast<int>(k));
+    if (work > most) {
+      most = work;
+      donor = static_cast<int>(k);
+    }
+  }
+  if (donor >= 0) {
+    region_cells(*maps_, donor, true, share_cells_);
+    maps_->hand_over(share_cells_, j, true);
+    ++failed_regions_taken_;
+    return true;
+  }
+  // Else a piece of the working UAV with the most work left (ties: lowest id), unless j declined
+  // it already at no less work.
+  for (std::size_t k = 0; k < n; ++k) {
+    if (static_cast<int>(k) == j || view.uavs[k].failed || part_of_[k] != part) continue;
+    const int left = maps_->unknown_cells(static_cast<int>(k)) +
+                     maps_->corrosion_to_inspect(static_cast<int>(k));
+    const int declined_at = declined_[static_cast<std::size_t>(j) * n + k];
+    if (declined_at >= 0 && left <= declined_at) continue;
+    const double work = remaining_work(*maps_, static_cast<int>(k));
+    if (work > most) {
+      most = work;
+      donor = static_cast<int>(k);
+    }
+  }
+  if (donor < 0) return false;
+  const auto k = static_cast<std::size_t>(donor);
+  region_cells(*maps_, donor, false, share_cells_);
+  grid::DistanceService& distances = flights_.of(j);
+  flight_field(distances, view.uavs[static_cast<std::size_t>(j)].pos, helper_field_);
+  flight_field(distances, view.uavs[k].pos, owner_field_);
+  // The owner's steps left: its plan, or its work at a z = 2 sweep's rate if that is more (the
+  // plan covers one plane). A piece that saves it less than s2 steps is not worth two replans.
+  const double s2 = maps_->layout(2).s;
+  const double owner_steps = std::max(
+      static_cast<double>(part_tsp::plan_length(view.uavs[k].pos, uavs_[k].path.remaining())),
+      most / s2);
+  const bool got = helper_piece(*maps_, share_cells_, helper_field_, owner_field_, owner_steps, s2,
+                                share_order_, share_piece_);
+  if (!got) {
+    declined_[static_cast<std::size_t>(j) * n + k] = static_cast<int>(share_cells_.size());
+    return false;
+  }
+  maps_->hand_over(share_piece_, j, false);
+  uavs_[k].path.clear();  // the owner replans without the piece at its next decision
+  ++pieces_taken_;
+  return true;
 }
 
 sim::Action PartTspPlanner::decide_uav(int k, const sim::UavState& u, int time) {
@@ -165,7 +250,17 @@ bool PartTspPlanner::idle(const sim::PlannerView& view) const {
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     if (!view.uavs[k].failed && uavs_[k].mode != part_tsp::kModeDone) return false;
   }
-  return true;
+  return !(options_.share_work && failed_work_reachable(view));
+}
+
+bool PartTspPlanner::failed_work_reachable(const sim::PlannerView& view) const {
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    if (!view.uavs[k].failed || remaining_work(*maps_, static_cast<int>(k)) == 0) continue;
+    for (std::size_t j = 0; j < uavs_.size(); ++j) {
+      if (!view.uavs[j].failed && part_of_[j] == part_of_[k]) return true;
+    }
+  }
+  return false;
 }
 
 void PartTspPlanner::annotate(AnnotationSink& sink) const {

@@ -72,6 +72,9 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
           },
           "option <key> of the partitioner (e.g. partitioner.iteration-limit=4000 for darp)");
   declare_prior_weight_options(p);
+  p.flag("share-work", &PartTspOptions::share_work,
+         "beyond the paper: a UAV that is done takes over a failed UAV's region, else part of the "
+         "most loaded UAV's remaining work (docs/beyond.md)");
   return p;
 }
 

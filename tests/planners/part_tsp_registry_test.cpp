@@ -32,10 +32,10 @@ TEST(PartTspRegistry, BothPlannersDeclareTheirOptions) {
   for (const char* name : {"part-tsp", "part-tsp0"}) {
     std::vector<std::string> names;
     for (const auto& o : info(name).options) names.push_back(o.name);
-    EXPECT_EQ(names,
-              (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner", "partition-seed",
-                                        "skip-resolved", "trim-ends", "tsp.<key>",
-                                        "partitioner.<key>", "prior-weights", "prior-statistics"}))
+    EXPECT_EQ(names, (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner",
+                                               "partition-seed", "skip-resolved", "trim-ends",
+                                               "tsp.<key>", "partitioner.<key>", "prior-weights",
+                                               "prior-statistics", "share-work"}))
         << name;
     EXPECT_EQ(info(name).options[0].default_value, "2");
     EXPECT_EQ(info(name).options[1].default_value, "0");
@@ -80,7 +80,7 @@ TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {
   EXPECT_EQ(error_of("part-tsp0", {{"alpha", "0.5"}}),
             "part-tsp0.alpha: unknown option (known: r1, r2, tsp-solver, partitioner, "
             "partition-seed, skip-resolved, trim-ends, tsp.<key>, partitioner.<key>, "
-            "prior-weights, prior-statistics)");
+            "prior-weights, prior-statistics, share-work)");
   EXPECT_EQ(error_of("part-tsp", {{"tsp-solver", "nope"}})
                 .rfind("part-tsp.tsp-solver: unknown name 'nope'", 0),
             0u);

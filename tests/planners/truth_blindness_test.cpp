@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
+#include "hullinspect/planners/mission.hpp"
+#include "hullinspect/planners/part_tsp_planner.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/truth_blindness.hpp"
 
 namespace hullinspect::planners {
@@ -33,6 +38,75 @@ TEST(TruthBlindness, PriorWeightedPartitionsAreTruthBlind) {
           << algorithm;
       EXPECT_GE(report.first_differing_reading, 1) << algorithm;
     }
+  }
+}
+
+// Part-TSP's work sharing (share-work): hand-overs read the local maps and the UAVs' positions and
+// failed flags only. UAV 3 fails at t = 0 and the second instance differs only deep inside its
+// region (farther than s2 from every other region and from every start), which nobody sees before
+// someone has taken the region over: the decisions compared include the hand-overs.
+TEST(TruthBlindness, PartTspWorkSharingIsTruthBlind) {
+  const auto& hull = world::default_hull();
+  world::MissionParams params;
+  params.uavs = 8;
+  params.s2 = 11;
+  MissionOptions mission;
+  mission.failures.at = {{3, 0}};
+  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
+  mission.corrosion = &corrosion;
+  for (const char* algorithm : {"part-tsp", "part-tsp0"}) {
+    const OptionMap options{{"share-work", "true"}};
+    struct Watch final : MissionObserver {
+      grid::Grid<std::int16_t> owner;
+      int t = 0;
+      int first_hand_over = -1;
+      void on_start(const sim::Simulator&, const Planner& planner) override {
+        const auto& maps = dynamic_cast<const PartTspPlanner&>(planner).local_maps();
+        owner = grid::Grid<std::int16_t>(maps.width(), maps.height(), -1);
+        for (int i = 0; i < owner.size(); ++i) owner[i] = static_cast<std::int16_t>(maps.owner(i));
+      }
+      void on_step(const sim::Simulator&, const Planner& planner) override {
+        ++t;
+        const auto& p = dynamic_cast<const PartTspPlanner&>(planner);
+        if (first_hand_over < 0 && p.failed_regions_taken() + p.pieces_taken() > 0)
+          first_hand_over = t;
+      }
+    } watch;
+    mission.observers = {&watch};
+    auto planner = make_planner(algorithm, options);
+    run_mission(hull, world::generate_instance(hull, corrosion, 5), params, *planner, mission);
+    ASSERT_GT(watch.first_hand_over, 0) << algorithm;
+    const int r = params.s2;
+    const auto starts = world::start_cells(params, hull);
+    auto deep_in_region_3 = [&](grid::Cell c) {
+      for (int y = c.y - r; y <= c.y + r; ++y) {
+        for (int x = c.x - r; x <= c.x + r; ++x) {
+          if (watch.owner.contains(grid::Cell{x, y}) && watch.owner(x, y) >= 0 &&
+              watch.owner(x, y) != 3)
+            return false;
+        }
+      }
+      for (const grid::Cell& start : starts) {  // seen at t = 0, before the failure
+        if (std::abs(start.x - c.x) <= r && std::abs(start.y - c.y) <= r) return false;
+      }
+      return watch.owner[c] == 3;
+    };
+    int altered = 0;
+    auto alter = [&](grid::Grid<std::int8_t>& truth) {
+      for (int i : hull.cells()) {
+        const grid::Cell c = truth.cell(i);
+        if ((c.x + c.y) % 3 == 0 && deep_in_region_3(c)) {
+          truth[i] = 1;
+          ++altered;
+        }
+      }
+    };
+    testing::TruthBlindnessReport report;
+    EXPECT_TRUE(testing::planner_is_truth_blind(algorithm, options, params, 5, &report,
+                                                mission.failures, alter))
+        << algorithm;
+    EXPECT_GT(altered, 0) << algorithm;
+    EXPECT_GT(report.first_differing_reading, watch.first_hand_over) << algorithm;
   }
 }
 

@@ -38,18 +38,21 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
 
 }  // namespace
 
-::testing::AssertionResult planner_is_truth_blind(const std::string& algorithm,
-                                                  const OptionMap& options,
-                                                  const world::MissionParams& params,
-                                                  std::uint64_t seed,
-                                                  TruthBlindnessReport* report) {
+::testing::AssertionResult planner_is_truth_blind(
+    const std::string& algorithm, const OptionMap& options, const world::MissionParams& params,
+    std::uint64_t seed, TruthBlindnessReport* report, const world::FailurePlan& failures,
+    const std::function<void(grid::Grid<std::int8_t>&)>& alter_truth) {
   const auto& hull = world::default_hull();
   const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
   const auto a = world::generate_instance(hull, corrosion, seed);
   world::Instance b = a;
-  for (int i : hull.cells()) {
-    const auto c = hull.mask().cell(i);
-    if (c.y >= hull.height() - 6 && (c.x / 3 + c.y / 3) % 4 == 0) b.truth[i] = 1;
+  if (alter_truth) {
+    alter_truth(b.truth);
+  } else {
+    for (int i : hull.cells()) {
+      const auto c = hull.mask().cell(i);
+      if (c.y >= hull.height() - 6 && (c.x / 3 + c.y / 3) % 4 == 0) b.truth[i] = 1;
+    }
   }
   Recording ra;
   Recording rb;
@@ -60,9 +63,11 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
   planners::MissionOptions oa;
   oa.observers = {&ra};
   oa.corrosion = &corrosion;
+  oa.failures = failures;
   planners::MissionOptions ob;
   ob.observers = {&rb};
   ob.corrosion = &corrosion;
+  ob.failures = failures;
   planners::run_mission(hull, a, params, *pa, oa);
   planners::run_mission(hull, b, params, *pb, ob);
 

@@ -1,14 +1,17 @@
 #pragma once
-// Shared check that a planner cannot reach the ground truth C: run it on two instances with the same
-// prior and different truth. Until the first step at which some UAV's readings differ, the two
+// Shared check that a planner cannot reach the ground truth C: run it on two instances with the
+// same prior and different truth. Until the first step at which some UAV's readings differ, the two
 // missions must make identical decisions — whatever the planner does, it can only react to what
 // was sensed.
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <string>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/world/failures.hpp"
+#include "hullinspect/world/instance.hpp"
 #include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::testing {
@@ -19,9 +22,13 @@ struct TruthBlindnessReport {
 };
 
 /// Builds instance A (seed) and instance B = A with extra corrosion in the top six rows (out of
-/// sight at t = 0), identical prior, runs `algorithm` on both and compares the applied actions.
-::testing::AssertionResult planner_is_truth_blind(const std::string& algorithm, const OptionMap& options,
-                                                  const world::MissionParams& params, std::uint64_t seed,
-                                                  TruthBlindnessReport* report = nullptr);
+/// sight at t = 0), identical prior, runs `algorithm` on both (with the same `failures`) and
+/// compares the applied actions. `alter_truth`, when given, makes B's truth instead of the top
+/// rows (to place the difference where it is seen late).
+::testing::AssertionResult planner_is_truth_blind(
+    const std::string& algorithm, const OptionMap& options, const world::MissionParams& params,
+    std::uint64_t seed, TruthBlindnessReport* report = nullptr,
+    const world::FailurePlan& failures = {},
+    const std::function<void(grid::Grid<std::int8_t>&)>& alter_truth = {});
 
 }  // namespace hullinspect::testing

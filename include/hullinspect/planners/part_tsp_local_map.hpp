@@ -54,6 +54,14 @@ class LocalMaps {
   /// Applies UAV k's readings of one step to M^k (the model.md §3 table, cells of R_k only).
   LocalEvents ingest(int k, std::span<const sim::Reading> readings);
 
+  /// Work sharing (docs/beyond.md, "Work sharing in Part-TSP"): the hull cells `cells` (flat
+  /// indices, owned by any UAV) join R_to with what their owner's map knew of them — the value and
+  /// whether they were seen from z = 2 — or, with `forget`, with what every UAV knew at the start
+  /// (the value before any reading: the prior's 2s, the no-fly write-offs; not seen). Counts move
+  /// with them; R_to's column range grows when it has to (O(strips · width) then, never a rescan
+  /// of the grid).
+  void hand_over(std::span<const int> cells, int to, bool forget);
+
   int uavs() const { return static_cast<int>(regions_.size()); }
   int width() const { return owner_.width(); }
   int height() const { return owner_.height(); }
@@ -93,10 +101,15 @@ class LocalMaps {
   const Region& region(int k) const { return regions_[static_cast<std::size_t>(k)]; }
   std::size_t column_slot(const Region& r, int z, int x, int y) const;
   void set_value(int index, std::int8_t value);
+  /// Adds (+1) or removes (−1) cell `index` with value `value` to/from the counts of `r`.
+  void count(Region& r, int index, std::int8_t value, int delta);
+  /// Widens r's column range to [x_begin, x_end), keeping its counts.
+  void widen(Region& r, int x_begin, int x_end);
 
   grid::Grid<std::int16_t> owner_;
   grid::Grid<std::int8_t> values_;
   grid::Grid<std::uint8_t> seen_from_z2_;            // UAV A(i) has seen cell i from z = 2
+  grid::Grid<std::int8_t> start_values_;             // values_ before any reading
   const grid::Grid<std::uint8_t>* reach_ = nullptr;  // set by write_off()
   std::array<StripLayout, 2> layouts_;
   std::vector<Region> regions_;

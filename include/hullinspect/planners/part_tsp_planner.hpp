@@ -39,6 +39,9 @@ struct PartTspOptions {
   // Beyond the paper, off by default (prior_weights.hpp, docs/beyond.md).
   bool prior_weights = false;    ///< partition weighted by the expected work per cell
   bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
+  /// A UAV that is done takes over a failed UAV's region, else part of the most loaded UAV's
+  /// remaining work (docs/beyond.md, "Work sharing in Part-TSP").
+  bool share_work = false;
 };
 
 class PartTspPlanner final : public Planner {
@@ -52,7 +55,8 @@ class PartTspPlanner final : public Planner {
   bool sees_truth() const override { return options_.oracle; }
   const partition::Partition* partition() const override { return partition_.get(); }
   /// Every working UAV is done (nothing left in its local map): without communication nobody takes
-  /// over a failed UAV's region, so the mission ends there (docs/beyond.md).
+  /// over a failed UAV's region, so the mission ends there (docs/beyond.md). With share-work, not
+  /// while a failed UAV's region has work left that a working UAV can fly to.
   bool idle(const sim::PlannerView& view) const override;
   /// Per UAV: mode (cover-z2, inspect-z1, cover-z1, descending, ascending, done, failed), the next
   /// waypoint and the waypoints still ahead.
@@ -68,6 +72,9 @@ class PartTspPlanner final : public Planner {
   std::int8_t plan_value(int k) const { return uav(k).plan_value; }
   /// Plans UAV k has made so far.
   int plans_made(int k) const { return uav(k).plans; }
+  /// share-work: regions of failed UAVs taken over, and pieces taken from working UAVs.
+  int failed_regions_taken() const { return failed_regions_taken_; }
+  int pieces_taken() const { return pieces_taken_; }
 
  private:
   struct UavState {
@@ -85,6 +92,10 @@ class PartTspPlanner final : public Planner {
   sim::Action decide_uav(int k, const sim::UavState& u, int time);
   void make_plan(int k, grid::Cell pos, int z);
   void skip_resolved(int k, grid::Cell pos);
+  /// share-work: done UAV j takes over work; true when it got some (both UAVs then replan).
+  bool take_over(int j, const sim::PlannerView& view);
+  /// share-work: a failed UAV's region with work left in a flight part where a UAV still works.
+  bool failed_work_reachable(const sim::PlannerView& view) const;
 
   PartTspOptions options_;
   std::unique_ptr<tsp::TspSolver> solver_;
@@ -100,6 +111,16 @@ class PartTspPlanner final : public Planner {
   std::vector<std::pair<grid::Cell, grid::Cell>> ends_;
   std::vector<tsp::Visit> order_;
   tsp::SegmentTsp problem_;
+  // share-work (reserved at start; used only at hand-over events).
+  std::vector<int> part_of_;  // per UAV: its flight part (0 when the flight space is one)
+  std::vector<int> declined_;  // [j·n + k]: k's cells left when j declined a piece of k (−1: never)
+  std::vector<int> share_cells_;
+  std::vector<int> share_piece_;
+  std::vector<std::pair<long long, int>> share_order_;
+  grid::Grid<int> helper_field_;
+  grid::Grid<int> owner_field_;
+  int failed_regions_taken_ = 0;
+  int pieces_taken_ = 0;
 };
 
 }  // namespace hullinspect::planners
