@@ -9,15 +9,21 @@ endif()
 if(HULLINSPECT_WERROR)
   target_compile_options(hullinspect_warnings INTERFACE -Werror)
 endif()
-# The asan preset and the fuzz preset build with clang and libFuzzer: every object is instrumented
-# for coverage-guided fuzzing (fuzz/ links the fuzzer's main into its targets only), so one
-# sanitizer build serves both the test suite and the fuzzers.
+# With HULLINSPECT_FUZZ every object is instrumented for coverage-guided fuzzing (fuzz/ links the
+# fuzzer's main into its targets only). The asan preset adds ASan + UBSan (HULLINSPECT_SANITIZE),
+# so one sanitizer build serves both the test suite and the brief fuzz runs; the fuzz-campaign
+# preset adds only UBSan (HULLINSPECT_FUZZ_UBSAN), several times faster per input, for the long
+# campaigns of scripts/fuzz (docs/reliability.md, "Fuzzing").
+option(HULLINSPECT_FUZZ_UBSAN "With HULLINSPECT_FUZZ and without HULLINSPECT_SANITIZE: UBSan only (the fuzz-campaign preset)" OFF)
 if(HULLINSPECT_FUZZ)
   add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
-if(HULLINSPECT_SANITIZE OR HULLINSPECT_FUZZ)
+if(HULLINSPECT_SANITIZE)
   # Tests give sanitized builds time slack; GCC defines __SANITIZE_ADDRESS__, clang does not.
   add_compile_definitions(HULLINSPECT_SANITIZED)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)
+elseif(HULLINSPECT_FUZZ_UBSAN)
+  add_compile_options(-fsanitize=undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=undefined)
 endif()
