@@ -216,9 +216,10 @@ TEST(Transfer, RandomHullsWithRandomStarts) {
       converged += p.converged;
     }
   }
-  // Small hulls with holes, 2-8 UAVs at random (often adjacent) cells: measured 78 of 84. A start
-  // walled into a pocket by its neighbours' regions can make balance impossible from own starts.
-  EXPECT_GE(converged, 78) << "of " << runs;
+  // Small hulls with holes, 2-8 UAVs at random (often adjacent) cells: measured 80 of 84 (78
+  // before the regrowth attempts); none of the other 4 is walled in by start cells (so not proved
+  // infeasible), but narrow passages between holes and bites may make them so.
+  EXPECT_GE(converged, 80) << "of " << runs;
 }
 
 TEST(Transfer, StartsAtOneLaunchPoint) {
