@@ -8,13 +8,18 @@
 //   build/release/bench/transfer_bench --benchmark_filter=RandomStarts
 //   build/release/bench/transfer_bench --benchmark_filter=FreshStarts
 //
-// Counters: rounds (transfer rounds), converged (1/0, or how many of 10 start sets), imbalance
-// (largest |cells − desired| of the last partition, or the worst over the start sets).
+// Counters: rounds (transfer rounds), converged (1/0, or how many of 10 start sets), infeasible
+// (how many of them were reported provably infeasible: a start walled in by other starts' cells),
+// imbalance (largest |cells − desired| of the last partition, or the worst over the start sets),
+// slowest_s (the largest Partition::seconds, wall time, of the ten), slowest_cpu_s (the largest
+// CPU time of one of the ten).
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
+#include <string_view>
 
 #include "hullinspect/partition/transfer_partitioner.hpp"
 #include "hullinspect/world/hull.hpp"
@@ -37,6 +42,16 @@ double imbalance(const partition::Partition& p) {
     worst = std::max(worst, std::abs(p.region_weight[k] - p.desired_weight[k]));
   }
   return worst;
+}
+
+// The warning of a provably infeasible start set (a start walled in by other starts' cells).
+constexpr std::string_view kInfeasible = "transfer: no balanced partition exists";
+
+// CPU time of this thread (the machine is shared: wall time measures the others' load too).
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 // n distinct hull cells drawn uniformly from a seeded stream.
@@ -83,22 +98,31 @@ void random_start_sets(benchmark::State& state, std::uint64_t multiplier, std::u
   }
   const partition::TransferPartitioner transfer;
   int converged = 0;
+  int infeasible = 0;
+  double slowest_cpu = 0;
   double worst = 0;
   double slowest = 0;
   for (auto _ : state) {
     converged = 0;
+    infeasible = 0;
+    slowest_cpu = 0;
     worst = 0;
     slowest = 0;
     for (const auto& request : requests) {
+      const double cpu0 = thread_cpu_seconds();
       const auto p = transfer.partition(request);
+      slowest_cpu = std::max(slowest_cpu, thread_cpu_seconds() - cpu0);
       converged += p.converged;
+      infeasible += !p.warnings.empty() && p.warnings[0].starts_with(kInfeasible);
       worst = std::max(worst, imbalance(p));
       slowest = std::max(slowest, p.seconds);
     }
   }
   state.counters["converged"] = converged;
+  state.counters["infeasible"] = infeasible;
   state.counters["imbalance"] = worst;
   state.counters["slowest_s"] = slowest;
+  state.counters["slowest_cpu_s"] = slowest_cpu;
 }
 void BM_TransferRandomStarts(benchmark::State& state) {
   random_start_sets(state, 1000, 0);

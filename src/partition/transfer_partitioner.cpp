@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <string>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
@@ -46,6 +47,8 @@ class TransferWorkspace {
         owner_(static_cast<std::size_t>(width_) * height_, -1),
         distance_(static_cast<std::size_t>(n_) * owner_.size(), 0),
         weight_(static_cast<std::size_t>(n_), 0.0),
+        cost_(static_cast<std::size_t>(n_), 128),
+        offset_(static_cast<std::size_t>(n_), 0),
         adjacent_(static_cast<std::size_t>(n_) * n_, 0),
         blocked_(static_cast<std::size_t>(n_) * n_, 0) {
     heap_.reserve(owner_.size() * 4);
@@ -60,12 +63,95 @@ class TransferWorkspace {
   // Back to the empty state for another attempt; `rs` (or none: attempt 0) draws the tie-breaking
   // jitter of every cell, which orders cells of equal distance differently.
   void reset(world::RandomStream* rs) {
-    std::fill(owner_.begin(), owner_.end(), -1);
-    std::fill(weight_.begin(), weight_.end(), 0.0);
-    clear_blocks();
+    clear_owners();
+    std::fill(offset_.begin(), offset_.end(), 0);
     jitter_.assign(owner_.size(), 0);
     if (rs != nullptr) {
       for (auto& j : jitter_) j = static_cast<int>(rs->below(kJitter));
+    }
+  }
+  // No cell owned (for another growth with the same jitter and new offsets).
+  void clear_owners() {
+    std::fill(owner_.begin(), owner_.end(), -1);
+    std::fill(weight_.begin(), weight_.end(), 0.0);
+    clear_blocks();
+  }
+  // Late starts for grow(), in 1/kOffsetScale of a distance step: region r's front reaches a cell
+  // at d_r(cell) + offset(r) / kOffsetScale, so a larger offset shrinks the region (0: the plain
+  // geodesic Voronoi growth).
+  long long offset(int r) const { return offset_[static_cast<std::size_t>(r)]; }
+  void set_offset(int r, long long o) { offset_[static_cast<std::size_t>(r)] = o; }
+  static constexpr long long kOffsetScale = 64;
+
+  // Step costs for grow_fronts(): region r's front crosses a cell side in cost(r) time units and a
+  // cell diagonal in ~√2 · cost(r), so a larger cost (a slower front) shrinks the region.
+  int cost(int r) const { return cost_[static_cast<std::size_t>(r)]; }
+  void set_cost(int r, int c) { cost_[static_cast<std::size_t>(r)] = c; }
+  static constexpr int kMinCost = 16;
+  static constexpr int kMaxCost = 1024;
+
+  // Competitive growth from the starts, all leaving at time 0, each front advancing through cells
+  // its region holds at its own speed in 8 directions (chamfer costs: no distance ties over whole
+  // quadrants as with 4-step distances, and a region's size changes smoothly with its speed). A
+  // cell joins the first front to reach it that holds one of its 4-neighbours, so every region
+  // stays 4-connected. Ignores no-fly zones and weights in the timing (sizes are weights).
+  // A ring of buckets over the next kBuckets times (> the largest step cost): O(N + time span),
+  // nothing allocated after the first call. Returns the number of hull cells no front reached.
+  int grow_fronts() {
+    clear_owners();
+    for (int r = 0; r < n_; ++r) {
+      const int s = starts_[static_cast<std::size_t>(r)];
+      owner_[static_cast<std::size_t>(s)] = r;
+      weight_[static_cast<std::size_t>(r)] += cell_weight(s);
+    }
+    for (auto& b : buckets_) b.clear();
+    std::size_t pending = 0;
+    long long t = 0;
+    auto push_ring = [&](int cell, int r, long long now) {
+      const int x = cell % width_;
+      const int y = cell / width_;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kRingDx[static_cast<std::size_t>(k)];
+        const int ny = y + kRingDy[static_cast<std::size_t>(k)];
+        if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
+        const int nb = ny * width_ + nx;
+        if (!hull_.is_hull(nb) || owner_[static_cast<std::size_t>(nb)] >= 0) continue;
+        const int c = cost(r);
+        const long long at = now + (k % 2 == 1 ? c : (c * 181 + 64) / 128);  // 181/128 ≈ √2
+        buckets_[static_cast<std::size_t>(at % kBuckets)].push_back(nb * n_ + r);
+        ++pending;
+      }
+    };
+    for (int r = 0; r < n_; ++r) push_ring(starts_[static_cast<std::size_t>(r)], r, 0);
+    while (pending > 0) {
+      auto& bucket = buckets_[static_cast<std::size_t>(t % kBuckets)];
+      for (std::size_t k = 0; k < bucket.size(); ++k) {
+        const int cell = bucket[k] / n_;
+        const int r = bucket[k] % n_;
+        if (owner_[static_cast<std::size_t>(cell)] >= 0 || !touches(cell, r)) continue;
+        owner_[static_cast<std::size_t>(cell)] = r;
+        weight_[static_cast<std::size_t>(r)] += cell_weight(cell);
+        push_ring(cell, r, t);
+      }
+      pending -= bucket.size();
+      bucket.clear();
+      ++t;
+    }
+    int unreached = 0;
+    for (int i : hull_.cells()) unreached += owner_[static_cast<std::size_t>(i)] < 0;
+    return unreached;
+  }
+
+  // For every region, how many of its cells touch another region (4-adjacency): the length of
+  // its boundary, which is how many cells it gains or loses per step its front moves.
+  void boundary_lengths(std::vector<int>& out) const {
+    out.assign(static_cast<std::size_t>(n_), 0);
+    for (int i : hull_.cells()) {
+      const int a = owner_[static_cast<std::size_t>(i)];
+      bool edge = false;
+      for_each_neighbour(i,
+                         [&](int nb) { edge = edge || owner_[static_cast<std::size_t>(nb)] != a; });
+      out[static_cast<std::size_t>(a)] += edge;
     }
   }
   const std::vector<int>& owner() const { return owner_; }
@@ -335,10 +421,9 @@ class TransferWorkspace {
     for_each_neighbour(cell, [&](int nb) {
       if (owner_[static_cast<std::size_t>(nb)] >= 0) return;
       // One key orders by (distance, UAV, cell); the entry's cell field carries cell · n + UAV.
-      const long long key = (static_cast<long long>(distance(r, nb)) * kJitter +
-                             jitter_[static_cast<std::size_t>(nb)]) *
-                                n_ +
-                            r;
+      const long long arrival = static_cast<long long>(distance(r, nb)) * kOffsetScale +
+                                offset_[static_cast<std::size_t>(r)];
+      const long long key = (arrival * kJitter + jitter_[static_cast<std::size_t>(nb)]) * n_ + r;
       heap_.push_back({key, nb * n_ + r});
       std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
     });
@@ -409,6 +494,10 @@ class TransferWorkspace {
   std::vector<int> owner_;
   std::vector<int> distance_;  // n × grid cells
   std::vector<double> weight_;
+  std::vector<int> cost_;
+  std::vector<long long> offset_;
+  static constexpr int kBuckets = 2048;  // > the largest step cost (a diagonal at kMaxCost)
+  std::vector<std::vector<int>> buckets_ = std::vector<std::vector<int>>(kBuckets);
   std::vector<std::uint8_t> adjacent_;
   std::vector<std::uint8_t> blocked_;
   std::vector<HeapEntry> heap_;
@@ -467,6 +556,164 @@ std::vector<int> spread_virtual_starts(const world::HullMask& hull, std::span<co
   return out;
 }
 
+// Regrowth with head starts (the regrowth attempts): the plain growth gives every start its
+// geodesic Voronoi cell, which for starts a few cells apart can be a pocket far smaller than its
+// share, walled in by its neighbours' cells; the transfers must then pass the share through long
+// chains of regions, which wind into thin arms and get stuck. Here the regions grow as competing
+// fronts (TransferWorkspace::grow_fronts), each leaving its start late by an offset, and the
+// offsets are adjusted until the sizes are near their targets: a walled-in start gets a head start
+// and its neighbours' regions grow around it instead. The transfers then start from compact, nearly
+// balanced regions. Deterministic; at most kRegrowIterations growths, the best one kept.
+constexpr int kRegrowIterations = 30;
+constexpr int kOffsetIterations = 20;
+
+void regrow_with_offsets(TransferWorkspace& ws, const std::vector<double>& target, double goal) {
+  const int n = ws.n();
+  std::vector<int> boundary;
+  std::vector<long long> best(static_cast<std::size_t>(n), 0);
+  double best_error = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < kOffsetIterations; ++iteration) {
+    double error = 0;
+    double worst = 0;
+    for (int r = 0; r < n; ++r) {
+      const double e = std::abs(ws.weight(r) - target[static_cast<std::size_t>(r)]);
+      error += e;
+      worst = std::max(worst, e);
+    }
+    if (error < best_error) {
+      best_error = error;
+      for (int r = 0; r < n; ++r) best[static_cast<std::size_t>(r)] = ws.offset(r);
+    }
+    if (worst <= goal) break;
+    ws.boundary_lengths(boundary);
+    for (int r = 0; r < n; ++r) {
+      const double e = ws.weight(r) - target[static_cast<std::size_t>(r)];
+      const double steps =
+          std::clamp(0.5 * e / std::max(1, boundary[static_cast<std::size_t>(r)]), -4.0, 4.0);
+      ws.set_offset(r, ws.offset(r) + std::llround(steps * TransferWorkspace::kOffsetScale));
+    }
+    ws.clear_owners();
+    ws.grow();
+  }
+  for (int r = 0; r < n; ++r) ws.set_offset(r, best[static_cast<std::size_t>(r)]);
+  ws.clear_owners();
+  ws.grow();
+}
+
+void regrow_with_fronts(TransferWorkspace& ws, const std::vector<double>& target, double goal) {
+  const int n = ws.n();
+  std::vector<double> speed(static_cast<std::size_t>(n), 1.0);
+  std::vector<double> power(static_cast<std::size_t>(n), 0.5);
+  std::vector<int> last_sign(static_cast<std::size_t>(n), 0);
+  std::vector<int> best(static_cast<std::size_t>(n), 0);
+  auto apply = [&]() {
+    for (int r = 0; r < n; ++r) {
+      ws.set_cost(
+          r, std::clamp(static_cast<int>(std::lround(128.0 / speed[static_cast<std::size_t>(r)])),
+                        TransferWorkspace::kMinCost, TransferWorkspace::kMaxCost));
+    }
+    ws.grow_fronts();
+  };
+  double best_error = std::numeric_limits<double>::infinity();
+  apply();
+  for (int iteration = 0; iteration < kRegrowIterations; ++iteration) {
+    double error = 0;
+    double worst = 0;
+    for (int r = 0; r < n; ++r) {
+      const double e = std::abs(ws.weight(r) - target[static_cast<std::size_t>(r)]);
+      error += e;
+      worst = std::max(worst, e);
+    }
+    if (error < best_error) {
+      best_error = error;
+      for (int r = 0; r < n; ++r) best[static_cast<std::size_t>(r)] = ws.cost(r);
+    }
+    if (worst <= goal) break;
+    double mean_log = 0;
+    for (int r = 0; r < n; ++r) {
+      // Speed × (target / size)^power: a region's size grows with its speed between linearly (a
+      // strip across the hull) and quadratically (a disc). The power is halved when the error
+      // flips sign (the size is not smooth in the speed: a front escaping a pocket takes a whole
+      // area at once) and the factor bounded, as in Rprop.
+      const auto k = static_cast<std::size_t>(r);
+      const double e = ws.weight(r) - target[k];
+      const int sign = e > goal ? 1 : e < -goal ? -1 : 0;
+      if (sign != 0 && sign == -last_sign[k]) power[k] = std::max(0.05, power[k] * 0.5);
+      if (sign != 0) last_sign[k] = sign;
+      const double ratio = target[k] / std::max(ws.weight(r), 1e-9);
+      speed[k] *= std::clamp(std::pow(ratio, power[k]), 0.5, 2.0);
+      mean_log += std::log(speed[k]);
+    }
+    const double mean = std::exp(mean_log / n);  // only the ratios matter
+    for (auto& v : speed) v /= mean;
+    apply();
+  }
+  for (int r = 0; r < n; ++r) ws.set_cost(r, best[static_cast<std::size_t>(r)]);
+  ws.grow_fronts();
+}
+
+// A start walled in by other starts' cells: no region holding its start can contain another
+// start cell, so region r lies inside the 4-connected component of its start in the hull without
+// the other start cells (its "pocket"). When that pocket's weight is below r's target minus the
+// goal, no connected partition holding the starts balances, whatever the algorithm. Returns the
+// warning for the lowest such UAV, or "" when none (checked by a search from each start that stops
+// once it has found the target's weight, so O(N) in all for open hulls).
+std::string walled_start_warning(const world::HullMask& hull, std::span<const int> starts,
+                                 const grid::Grid<double>* weights,
+                                 const std::vector<double>& target, double goal) {
+  const int n = static_cast<int>(starts.size());
+  const grid::Grid<std::uint8_t>& mask = hull.mask();
+  std::vector<int> start_of(static_cast<std::size_t>(mask.size()), -1);
+  for (int r = 0; r < n; ++r)
+    start_of[static_cast<std::size_t>(starts[static_cast<std::size_t>(r)])] = r;
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(mask.size()), 0);
+  std::vector<int> queue;
+  std::vector<int> walls;
+  for (int r = 0; r < n; ++r) {
+    const double need = target[static_cast<std::size_t>(r)] - goal;
+    const int s = starts[static_cast<std::size_t>(r)];
+    queue.assign(1, s);
+    walls.clear();
+    seen[static_cast<std::size_t>(s)] = 1;
+    double reached = 0;
+    for (std::size_t head = 0; head < queue.size() && reached < need; ++head) {
+      const int c = queue[head];
+      reached += weights ? (*weights)[c] : 1.0;
+      const grid::Cell at = mask.cell(c);
+      for (const grid::Cell nb : {grid::Cell{at.x - 1, at.y}, grid::Cell{at.x + 1, at.y},
+                                  grid::Cell{at.x, at.y - 1}, grid::Cell{at.x, at.y + 1}}) {
+        if (!mask.contains(nb) || !hull.is_hull(nb)) continue;
+        const int i = mask.index(nb);
+        if (seen[static_cast<std::size_t>(i)]) continue;
+        seen[static_cast<std::size_t>(i)] = 1;
+        if (start_of[static_cast<std::size_t>(i)] >= 0) {
+          walls.push_back(start_of[static_cast<std::size_t>(i)]);
+        } else {
+          queue.push_back(i);
+        }
+      }
+    }
+    for (int c : queue) seen[static_cast<std::size_t>(c)] = 0;
+    for (int w : walls) seen[static_cast<std::size_t>(starts[static_cast<std::size_t>(w)])] = 0;
+    if (reached >= need) continue;
+    std::sort(walls.begin(), walls.end());
+    std::string names;
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      names += k == 0 ? "" : k + 1 == walls.size() ? " and " : ", ";
+      names += std::to_string(walls[k]);
+    }
+    const grid::Cell at = mask.cell(s);
+    const double want = target[static_cast<std::size_t>(r)];
+    return fmt::format(
+        "transfer: no balanced partition exists: UAV {}'s start ({}, {}) is walled in by the "
+        "start {} of {} {}, so its region can hold at most {:g} of its target {}",
+        r, at.x, at.y, walls.size() == 1 ? "cell" : "cells", walls.size() == 1 ? "UAV" : "UAVs",
+        names, reached,
+        weights ? fmt::format("weight {:g}", want) : fmt::format("{:g} cells", want));
+  }
+  return "";
+}
+
 }  // namespace
 
 const Params<TransferOptions>& transfer_params() {
@@ -476,6 +723,9 @@ const Params<TransferOptions>& transfer_params() {
               "largest number of transfer rounds (one path of adjacent regions each), all attempts")
         .integer("attempts", &TransferOptions::attempts, 1, 1000,
                  "restarts with seeded tie-breaking when the transfers get stuck")
+        .flag("regrow", &TransferOptions::regrow,
+              "regrowth attempts with per-region head starts (after attempt 0 and after the "
+              "seeded attempts)")
         .flag("spread-starts", &TransferOptions::spread_starts,
               "grow regions from spread virtual starts (UAVs launching together fly to theirs)");
     return p;
@@ -522,16 +772,35 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   int attempt = 0;
   bool converged = n == 1;
   bool hit_limit = false;
-  for (; attempt < options_.attempts && !converged; ++attempt) {
-    ws.reset(attempt == 0 ? nullptr : &rs);
+  // Attempt 0 (the plain growth), then (n > 1) the two regrowth attempts, then the seeded ones,
+  // then the two regrowths again with the last seeded jitter. The regrowths draw nothing from the
+  // stream, so the seeded attempts are those they were without them: a start set that balanced in
+  // attempt 0 is unchanged, and one that balanced in a seeded attempt still balances (in a regrowth
+  // attempt or the same seeded one). A provably infeasible set (a start walled in by other starts)
+  // gets one attempt: its connected partition, with the proof as the warning.
+  const std::string walled =
+      walled_start_warning(hull, starts, weighted ? &request.weights : nullptr, target, goal);
+  const int regrowths = options_.regrow && n > 1 && walled.empty() ? 4 : 0;
+  const int attempts = walled.empty() ? options_.attempts : 1;
+  for (; attempt < attempts + regrowths && !converged; ++attempt) {
+    // Regrowths: attempts 1 and 2 without jitter, and the last two with the seeded jitter (which
+    // orders the transfers' ties differently), after the seeded attempts.
+    const int last = attempts + regrowths;
+    const bool offsets = regrowths > 0 && (attempt == 1 || attempt == last - 2);
+    const bool fronts = regrowths > 0 && (attempt == 2 || attempt == last - 1);
+    ws.reset(attempt == 1 || attempt == 2 ? (regrowths > 0 ? nullptr : &rs)
+             : attempt == 0               ? nullptr
+                                          : &rs);
     if (const int unreached = ws.grow(); unreached > 0) {
       throw Error(
           fmt::format("transfer: {} of hull '{}' not 4-connected to any start cell; every "
                       "region must be connected",
                       plural(unreached, "hull cell"), hull.source()));
     }
-
     auto excess = [&](int r) { return ws.weight(r) - target[static_cast<std::size_t>(r)]; };
+    if (offsets) regrow_with_offsets(ws, target, goal);
+    if (fronts) regrow_with_fronts(ws, target, goal);
+
     auto imbalance = [&]() {
       double sum = 0;
       for (int r = 0; r < n; ++r) sum += std::abs(excess(r));
@@ -672,6 +941,11 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   if (converged) {
     // As DARP reports it: 0 when the shares divide the hull exactly, else one cell (unit).
     out.tolerance = weighted || worst > 1e-9 ? unit : 0.0;
+  } else if (!walled.empty()) {
+    out.tolerance = worst;
+    out.warnings.push_back(
+        fmt::format("{}; returned the best connected partition reached (largest imbalance {:g})",
+                    walled, worst));
   } else {
     out.tolerance = worst;
     out.warnings.push_back(fmt::format(

@@ -132,13 +132,37 @@ bool PartTspPlanner::take_over(int j, const sim::PlannerView& view) {
   }
   if (donor < 0) return false;
   const auto k = static_cast<std::size_t>(donor);
+  const double s2 = maps_->layout(2).s;
+  // The tail of k's plan, when handing it over ends both sooner by s2 steps or more: whole
+  // segments, in the order k would have flown them.
+  if (!uavs_[k].path.finished()) {
+    const part_tsp::SegmentPath& path = uavs_[k].path;
+    const auto waypoints = path.remaining();
+    const auto visits = path.visits().subspan(path.visits().size() - (waypoints.size() + 1) / 2);
+    const int m = part_tsp::plan_tail(visits, waypoints, view.uavs[k].pos,
+                                      view.uavs[static_cast<std::size_t>(j)].pos, s2);
+    share_piece_.clear();
+    for (std::size_t i = m > 0 ? static_cast<std::size_t>(m) : visits.size(); i < visits.size();
+         ++i) {
+      part_tsp::visit_cells(*maps_, donor, uavs_[k].plan_z, uavs_[k].plan_value, visits[i],
+                            share_piece_);
+    }
+    std::sort(share_piece_.begin(), share_piece_.end());
+    share_piece_.erase(std::unique(share_piece_.begin(), share_piece_.end()), share_piece_.end());
+    if (!share_piece_.empty()) {
+      maps_->hand_over(share_piece_, j, false);
+      uavs_[k].path.clear();
+      ++pieces_taken_;
+      return true;
+    }
+  }
   region_cells(*maps_, donor, false, share_cells_);
   grid::DistanceService& distances = flights_.of(j);
   flight_field(distances, view.uavs[static_cast<std::size_t>(j)].pos, helper_field_);
   flight_field(distances, view.uavs[k].pos, owner_field_);
-  // The owner's steps left: its plan, or its work at a z = 2 sweep's rate if that is more (the
-  // plan covers one plane). A piece that saves it less than s2 steps is not worth two replans.
-  const double s2 = maps_->layout(2).s;
+  // Else the cells relatively nearer to j. The owner's steps left: its plan, or its work at a
+  // z = 2 sweep's rate if that is more (the plan covers one plane). A piece that saves it less
+  // than s2 steps is not worth two replans.
   const double owner_steps = std::max(
       static_cast<double>(part_tsp::plan_length(view.uavs[k].pos, uavs_[k].path.remaining())),
       most / s2);

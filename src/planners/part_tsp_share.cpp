@@ -69,6 +69,60 @@ bool helper_piece(const LocalMaps& maps, std::span<const int> cells,
   return true;
 }
 
+int plan_tail(std::span<const PlannedVisit> visits, std::span<const grid::Cell> waypoints,
+              grid::Cell owner_pos, grid::Cell helper_pos, double min_steps) {
+  const std::size_t v = visits.size();
+  if (v < 2 || waypoints.size() + 1 < 2 * v) return -1;
+  // waypoints[w(i)] is visit i's entry (i ≥ 1); a begun first visit has only its exit left.
+  const std::size_t offset = 2 * v - waypoints.size();  // 1 when the first visit is begun
+  auto entry = [&](std::size_t i) { return waypoints[2 * i - offset]; };
+  const int total = plan_length(owner_pos, waypoints);
+  int best = -1;
+  int best_end = total;
+  int prefix = 0;  // the owner's flight to the exit of visit m − 1
+  grid::Cell at = owner_pos;
+  std::size_t w = 0;
+  for (std::size_t m = 1; m < v; ++m) {
+    const std::size_t exit_of_previous = 2 * m - 1 - offset;
+    for (; w <= exit_of_previous; ++w) {
+      prefix += grid::manhattan(at, waypoints[w]);
+      at = waypoints[w];
+    }
+    const int tail = total - prefix - grid::manhattan(at, entry(m));
+    const int helper_end = grid::manhattan(helper_pos, entry(m)) + tail;
+    const int end = std::max(prefix, helper_end);
+    if (end < best_end) {
+      best_end = end;
+      best = static_cast<int>(m);
+    }
+  }
+  if (best < 0 || total - best_end < min_steps) return -1;
+  return best;
+}
+
+void visit_cells(const LocalMaps& maps, int k, int z, std::int8_t value, const PlannedVisit& visit,
+                 std::vector<int>& out) {
+  const StripLayout& layout = maps.layout(z);
+  const StripSegment& s = visit.segment;
+  int x0 = s.x_left;
+  int x1 = s.x_right;
+  int y0 = layout.first_row(s.strip);
+  int y1 = layout.last_row(s.strip);
+  if (s.point != grid::kNoCell) {
+    const int half = (layout.s - 1) / 2;
+    x0 = std::max(0, s.point.x - half);
+    x1 = std::min(maps.width() - 1, s.point.x + half);
+    y0 = std::max(0, s.point.y - half);
+    y1 = std::min(maps.height() - 1, s.point.y + half);
+  }
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const int i = y * maps.width() + x;
+      if (maps.owner(i) == k && maps.value(i) == value) out.push_back(i);
+    }
+  }
+}
+
 int plan_length(grid::Cell pos, std::span<const grid::Cell> waypoints) {
   int steps = 0;
   for (const grid::Cell& w : waypoints) {

@@ -110,6 +110,91 @@ TEST(Transfer, EscapeRoundsFreeRegionsStuckBehindArms) {
   }
 }
 
+TEST(Transfer, RegrowthBalancesTheSetsTheSeededAttemptsLeft) {
+  // Random start sets on the default hull that ended unbalanced after all 8 seeded attempts
+  // (bench/transfer_bench: RandomStarts n = 17 draw 9, n = 23 draw 4, n = 30 draw 3; FreshStarts
+  // n = 19 draw 7, n = 28 draw 0): each holds starts a few cells apart whose Voronoi cells are
+  // pockets far below their share, and the transfers wound the regions into arms. None is walled
+  // in by start cells (no warning says so); the regrowth attempts (offsets, then fronts) balance
+  // them. Start lists as drawn, so the test does not depend on the draw.
+  const std::vector<std::vector<grid::Cell>> sets = {
+      {{33, 18},
+       {47, 12},
+       {70, 26},
+       {112, 20},
+       {131, 15},
+       {51, 16},
+       {20, 18},
+       {72, 2},
+       {109, 24},
+       {70, 25},
+       {110, 13},
+       {74, 26},
+       {150, 21},
+       {84, 29},
+       {98, 22},
+       {46, 10},
+       {41, 28}},
+      {{179, 24}, {83, 24},  {204, 15}, {224, 26}, {202, 5},  {138, 4},  {79, 16}, {188, 24},
+       {66, 22},  {23, 25},  {146, 10}, {102, 24}, {135, 19}, {138, 5},  {161, 4}, {175, 16},
+       {181, 8},  {160, 21}, {47, 17},  {207, 10}, {197, 4},  {141, 20}, {157, 13}},
+      {{197, 3},  {132, 17}, {186, 15}, {146, 14}, {49, 21},  {119, 15}, {148, 29}, {148, 22},
+       {161, 27}, {156, 24}, {89, 6},   {71, 8},   {127, 16}, {51, 13},  {108, 25}, {199, 3},
+       {155, 8},  {124, 11}, {161, 9},  {42, 14},  {78, 18},  {182, 5},  {205, 17}, {185, 20},
+       {26, 16},  {165, 28}, {226, 27}, {57, 12},  {169, 29}, {92, 27}},
+      {{63, 22},
+       {190, 21},
+       {80, 29},
+       {106, 11},
+       {30, 3},
+       {48, 10},
+       {192, 18},
+       {107, 1},
+       {107, 23},
+       {67, 29},
+       {96, 27},
+       {146, 12},
+       {181, 15},
+       {125, 4},
+       {82, 17},
+       {73, 0},
+       {118, 15},
+       {86, 28},
+       {84, 9}},
+      {{144, 22}, {1, 17},   {79, 12}, {63, 21}, {183, 16}, {49, 25},  {198, 14},
+       {6, 9},    {179, 10}, {29, 2},  {57, 19}, {0, 14},   {112, 23}, {86, 7},
+       {28, 10},  {207, 19}, {5, 28},  {53, 27}, {6, 27},   {0, 22},   {163, 20},
+       {211, 10}, {66, 15},  {52, 5},  {82, 9},  {1, 26},   {20, 23},  {208, 23}},
+  };
+  const auto& hull = world::default_hull();
+  const TransferPartitioner transfer;
+  for (const auto& starts : sets) {
+    SCOPED_TRACE(starts.size());
+    const auto request = request_for(hull, starts);
+    expect_balanced(request, transfer.partition(request));
+  }
+  // The seeded attempts alone still end unbalanced (what the regrowths are for; one set, as each
+  // run of 8 failing attempts is slow under the sanitizers).
+  const auto first = request_for(hull, sets.front());
+  EXPECT_FALSE(TransferPartitioner({.attempts = 8, .regrow = false}).partition(first).converged);
+}
+
+TEST(Transfer, AStartWalledInByStartCellsIsReportedAsInfeasible) {
+  // UAV 0 starts in a corner whose two neighbours are UAV 1's and UAV 2's starts: any region
+  // holding UAV 0's start and no other start is that one cell, so no partition reaches its 8.
+  const auto hull = text_hull("XXXXXX\nXXXXXX\nXXXXXX\nXXXXXX\n");
+  const auto request = request_for(hull, {{0, 0}, {1, 0}, {0, 1}});
+  const Partition p = TransferPartitioner().partition(request);
+  EXPECT_FALSE(p.converged);
+  EXPECT_TRUE(valid_partition(request, p));
+  EXPECT_EQ(p.region_cells[0], 1);
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_EQ(p.warnings[0],
+            "transfer: no balanced partition exists: UAV 0's start (0, 0) is walled in by the "
+            "start cells of UAVs 1 and 2, so its region can hold at most 1 of its target 8 cells; "
+            "returned the best connected partition reached (largest imbalance 7)");
+}
+
 TEST(Transfer, RandomHullsWithRandomStarts) {
   const TransferPartitioner transfer;
   int runs = 0;
@@ -131,9 +216,10 @@ TEST(Transfer, RandomHullsWithRandomStarts) {
       converged += p.converged;
     }
   }
-  // Small hulls with holes, 2-8 UAVs at random (often adjacent) cells: measured 78 of 84. A start
-  // walled into a pocket by its neighbours' regions can make balance impossible from own starts.
-  EXPECT_GE(converged, 78) << "of " << runs;
+  // Small hulls with holes, 2-8 UAVs at random (often adjacent) cells: measured 80 of 84 (78
+  // before the regrowth attempts); none of the other 4 is walled in by start cells (so not proved
+  // infeasible), but narrow passages between holes and bites may make them so.
+  EXPECT_GE(converged, 80) << "of " << runs;
 }
 
 TEST(Transfer, StartsAtOneLaunchPoint) {
@@ -232,7 +318,13 @@ TEST(Transfer, WalledInStartReturnsTheConnectedPartitionWithAWarning) {
   EXPECT_TRUE(valid_partition(request, p));
   EXPECT_EQ(p.region_cells[1], 1);
   ASSERT_EQ(p.warnings.size(), 1u);
-  EXPECT_NE(p.warnings[0].find("no movable boundary cell left"), std::string::npos)
+  // UAV 1's start is the tip of the dead end, whose only neighbour is UAV 0's start: provably
+  // infeasible, so one attempt and the proof as the warning.
+  EXPECT_NE(p.warnings[0].find("transfer: no balanced partition exists: UAV 1's start (0, 0) is "
+                               "walled in by the start cell of UAV 0, so its region can hold at "
+                               "most 1 of its target 10 cells; returned the best connected "
+                               "partition reached (largest imbalance "),
+            std::string::npos)
       << p.warnings[0];
   double worst = 0;
   for (std::size_t k = 0; k < 3; ++k) {

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -153,6 +155,42 @@ TEST(PartTspShare, TheHelpersPieceIsTheNearHalfOfTheWork) {
   // Not worth it when that is below the minimum.
   EXPECT_FALSE(part_tsp::helper_piece(far_maps, cells, far_helper, far_own, 40, 6, order, piece));
   EXPECT_TRUE(piece.empty());
+}
+
+TEST(PartTspShare, ThePlansTailEndsBothSoonest) {
+  // Four segments along row 0 flown left to right: [0, 9], [10, 19], [20, 29], [30, 39].
+  std::vector<part_tsp::PlannedVisit> visits;
+  std::vector<grid::Cell> waypoints;
+  for (int i = 0; i < 4; ++i) {
+    const grid::Cell entry{10 * i, 0};
+    const grid::Cell exit{10 * i + 9, 0};
+    visits.push_back({part_tsp::StripSegment{0, 0, entry.x, exit.x}, entry, exit});
+    waypoints.push_back(entry);
+    waypoints.push_back(exit);
+  }
+  // Owner at (0, 0): 39 steps alone. Helper at (39, 0): the owner keeps three segments (29 steps)
+  // while the helper flies 9 to (30, 0) and 9 along the last one; m = 2 would end at 38.
+  EXPECT_EQ(part_tsp::plan_tail(visits, waypoints, {0, 0}, {39, 0}, 10), 3);
+  EXPECT_EQ(part_tsp::plan_tail(visits, waypoints, {0, 0}, {39, 0}, 11), -1);  // saves 10 only
+  // The first segment begun (owner at (5, 0), its entry passed): 34 steps alone, 24 with help.
+  const std::span<const grid::Cell> begun(waypoints.begin() + 1, waypoints.end());
+  EXPECT_EQ(part_tsp::plan_tail(visits, begun, {5, 0}, {39, 0}, 10), 3);
+  // A helper far away takes nothing; one segment left: nothing to split.
+  EXPECT_EQ(part_tsp::plan_tail(visits, waypoints, {0, 0}, {200, 0}, 1), -1);
+  EXPECT_EQ(part_tsp::plan_tail(std::span(visits).subspan(3), std::span(waypoints).subspan(6),
+                                {30, 0}, {0, 0}, 0),
+            -1);
+  // The cells a visit targets: strip 0 of z = 2 (s2 = 3: rows 0–2), columns 2–4, value 0.
+  grid::Grid<std::int16_t> owner(12, 5, 0);
+  owner(3, 1) = 1;
+  grid::Grid<std::int8_t> prior(12, 5, 0);
+  prior(4, 2) = 1;
+  LocalMaps maps(owner, prior, true, 2, 1, 3);
+  std::vector<int> cells;
+  part_tsp::visit_cells(maps, 0, 2, sim::kUnknown,
+                        {part_tsp::StripSegment{0, 1, 2, 4}, {2, 1}, {4, 1}}, cells);
+  EXPECT_EQ(cells.size(), 7U);  // 9 less UAV 1's cell and the prior's 2
+  EXPECT_EQ(std::count(cells.begin(), cells.end(), owner.index(3, 1)), 0);
 }
 
 MissionSpec spec_for(const std::string& scenario_name, int s2, int n, std::uint64_t seed,

@@ -20,6 +20,12 @@ struct TransferOptions {
   /// cell without splitting), start again from the Voronoi partition with cells of equal distance
   /// ordered by a seeded random jitter instead of by index. The best-balanced attempt is returned.
   int attempts = 8;
+  /// Regrowth attempts (n > 1): after attempt 0 and again after the seeded attempts, the regions
+  /// grown with per-region head starts (offsets on the distances, then competing fronts with
+  /// per-region speeds) adjusted until their sizes are near the targets, then balanced by the same
+  /// transfers. For start sets whose Voronoi cells are pockets far below their share (starts a few
+  /// cells apart). They draw nothing from the seeded stream.
+  bool regrow = true;
   /// Grow the regions from spread virtual starts (the model's default start cells for n UAVs)
   /// instead of the UAVs' own starts, for UAVs that launch close together: a region then need not
   /// hold its UAV's start, and the UAV flies to it first (the mission counts that transit). UAVs

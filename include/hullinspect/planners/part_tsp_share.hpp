@@ -12,6 +12,7 @@
 #include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/planners/part_tsp_local_map.hpp"
+#include "hullinspect/planners/part_tsp_path.hpp"
 
 namespace hullinspect::planners::part_tsp {
 
@@ -34,6 +35,21 @@ bool helper_piece(const LocalMaps& maps, std::span<const int> cells,
                   const grid::Grid<int>& d_helper, const grid::Grid<int>& d_owner,
                   double owner_steps, double min_steps,
                   std::vector<std::pair<long long, int>>& order, std::vector<int>& piece);
+
+/// The tail of the owner's plan for the helper: `visits` are the visits the owner still has to fly
+/// (the first one possibly begun, ending at `waypoints[0]`... as SegmentPath::remaining() lists
+/// them: `waypoints` = the exit of a begun first visit, then entry and exit of each other one).
+/// Returns the index m of the first visit handed over: the one that minimises the later of the two
+/// ends — the owner flying visits [0, m), the helper flying from its position to visit m's entry
+/// and on to the end (Manhattan estimates) — or −1 when no m ≥ 1 saves `min_steps` against the
+/// owner flying everything.
+int plan_tail(std::span<const PlannedVisit> visits, std::span<const grid::Cell> waypoints,
+              grid::Cell owner_pos, grid::Cell helper_pos, double min_steps);
+
+/// Appends to `out` the cells of R_k that `visit` (planned on plane z for `value`) targets: in its
+/// strip and columns, or for a point visit those in the footprint around its point.
+void visit_cells(const LocalMaps& maps, int k, int z, std::int8_t value, const PlannedVisit& visit,
+                 std::vector<int>& out);
 
 /// Steps of a flight from `pos` through `waypoints` in order (Manhattan: an estimate).
 int plan_length(grid::Cell pos, std::span<const grid::Cell> waypoints);
