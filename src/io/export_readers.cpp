@@ -72,7 +72,13 @@ ReadPlan read_export_csv(std::string_view text, const std::string& source) {
     w.y = number(f[3], source, line, "y_m");
     w.z = number(f[4], source, line, "z_m");
     w.yaw_deg = number(f[5], source, line, "yaw_deg");
-    w.plane = static_cast<int>(number(f[6], source, line, "plane"));
+    // Range-checked before the conversion, which is undefined for 1e56 (found by
+    // fuzz_export_readers under UBSan).
+    const double plane = number(f[6], source, line, "plane");
+    if (!(plane >= -1e9 && plane <= 1e9)) {
+      throw InputError(source, line, fmt::format("plane: '{}' is out of range", f[6]));
+    }
+    w.plane = static_cast<int>(plane);
     w.action = std::string(f[7]);
     plan.waypoints.push_back(w);
   }

@@ -231,5 +231,15 @@ TEST(ExportReaders, AQgcPlanWithANumberTooLargeForADoubleIsNotJson) {
   EXPECT_THROW((void)io::read_qgc_plan("5003e5003e-eF-eF", "x.plan"), InputError);
 }
 
+// Found by fuzz_export_readers under UBSan: a plane of 5.6e56 was converted to int unchecked.
+TEST(ExportReaders, ACsvPlaneOutsideTheIntRangeIsRefused) {
+  const std::string header =
+      "index,t_s,x_m,y_m,z_m,yaw_deg,plane,action,duration_s,cell_x,cell_y\n";
+  EXPECT_THROW((void)io::read_export_csv(header + "0,0,0,0,0,0,5.6e56,a,0,0,0\n", "x.csv"),
+               InputError);
+  EXPECT_EQ(io::read_export_csv(header + "0,0,0,0,0,0,2,a,0,0,0\n", "x.csv").waypoints.at(0).plane,
+            2);
+}
+
 }  // namespace
 }  // namespace hullinspect::testing
