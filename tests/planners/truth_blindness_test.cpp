@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
@@ -21,6 +23,51 @@ TEST(TruthBlindness, EveryRegisteredPlannerDecidesOnlyFromWhatWasSensed) {
     testing::TruthBlindnessReport report;
     EXPECT_TRUE(testing::planner_is_truth_blind(info.name, {}, params, 5, &report)) << info.name;
     EXPECT_GE(report.first_differing_reading, 1) << info.name;  // the two missions did diverge
+  }
+}
+
+// The same check with the difference where each planner looks last (cells first sensed in the
+// last 10 % of the time it took to sense everything): the decisions of most of the mission —
+// help, hand-overs, take-overs of a failed UAV's work, the end game — are compared, not only the
+// first ~20 steps before the default change (the top rows) comes into view.
+TEST(TruthBlindness, LateDecisionsDependOnlyOnWhatWasSensed) {
+  world::MissionParams params;
+  params.uavs = 4;
+  struct Case {
+    std::string algorithm;
+    OptionMap options;
+    world::FailurePlan failures;
+  };
+  std::vector<Case> cases;
+  for (const auto& info : planner_registry()) {
+    if (!info.sees_truth) cases.push_back({info.name, {}, {}});
+  }
+  world::FailurePlan one_fails;
+  one_fails.at = {{1, 40}};
+  cases.push_back({"part-tsp", {{"share-work", "true"}}, {}});
+  cases.push_back({"part-tsp", {{"share-work", "true"}}, one_fails});
+  cases.push_back({"sweep-inspect", {}, one_fails});
+  cases.push_back({"coop-frontier", {}, one_fails});
+  for (const auto& c : cases) {
+    int last = 0;
+    int altered = 0;
+    const auto alter = testing::corrosion_where_sensed_last(c.algorithm, c.options, params, 7,
+                                                            c.failures, &last, &altered);
+    testing::TruthBlindnessReport report;
+    EXPECT_TRUE(testing::planner_is_truth_blind(c.algorithm, c.options, params, 7, &report,
+                                                c.failures, alter))
+        << c.algorithm;
+    EXPECT_GT(altered, 0) << c.algorithm;
+    // The missions saw the same until late: most of the mission's decisions were compared.
+    EXPECT_GE(10 * report.first_differing_reading, 9 * last) << c.algorithm;
+    EXPECT_GE(last, 100) << c.algorithm;
+  }
+  // And it can tell: an oracle, whose decisions read C, is caught with this change too.
+  for (const auto& info : planner_registry()) {
+    if (!info.sees_truth) continue;
+    const auto alter = testing::corrosion_where_sensed_last(info.name, {}, params, 7);
+    EXPECT_FALSE(testing::planner_is_truth_blind(info.name, {}, params, 7, nullptr, {}, alter))
+        << info.name;
   }
 }
 

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/world/scenario.hpp"
 
@@ -36,14 +39,68 @@ bool same(const std::vector<sim::Reading>& a, const std::vector<sim::Reading>& b
   return true;
 }
 
+// The time at which each hull cell was first sensed (-1: never).
+struct FirstSensed final : planners::MissionObserver {
+  std::vector<int> time;
+  int t = 0;
+  void record(const sim::Simulator& sim) {
+    for (int k = 0; k < static_cast<int>(sim.uavs().size()); ++k) {
+      for (const auto& r : sim.view().sensed.readings(k)) {
+        auto& first = time[static_cast<std::size_t>(r.index)];
+        if (first < 0) first = t;
+      }
+    }
+  }
+  void on_start(const sim::Simulator& sim, const planners::Planner&) override { record(sim); }
+  void on_step(const sim::Simulator& sim, const planners::Planner&) override {
+    ++t;
+    record(sim);
+  }
+};
+
+const world::HullMask& checked_hull() {
+  return world::default_hull();
+}
+world::CorrosionParams checked_corrosion() {
+  return world::scenario("imperfect").corrosion(checked_hull().width());
+}
+
 }  // namespace
+
+std::function<void(grid::Grid<std::int8_t>&)> corrosion_where_sensed_last(
+    const std::string& algorithm, const OptionMap& options, const world::MissionParams& params,
+    std::uint64_t seed, const world::FailurePlan& failures, int* last_first_sensed, int* altered) {
+  const auto& hull = checked_hull();
+  const auto corrosion = checked_corrosion();
+  const auto a = world::generate_instance(hull, corrosion, seed);
+  FirstSensed seen;
+  seen.time.assign(static_cast<std::size_t>(hull.mask().size()), -1);
+  planners::MissionOptions options_a;
+  options_a.observers = {&seen};
+  options_a.corrosion = &corrosion;
+  options_a.failures = failures;
+  auto planner = planners::make_planner(algorithm, options);
+  planners::run_mission(hull, a, params, *planner, options_a);
+  int last = 0;
+  for (int i : hull.cells()) last = std::max(last, seen.time[static_cast<std::size_t>(i)]);
+  if (last_first_sensed) *last_first_sensed = last;
+  std::vector<int> cells;
+  for (int i : hull.cells()) {
+    const int t = seen.time[static_cast<std::size_t>(i)];
+    if (t >= 0 && 10 * t >= 9 * last && a.truth[i] == 0) cells.push_back(i);
+  }
+  if (altered) *altered = static_cast<int>(cells.size());
+  return [cells](grid::Grid<std::int8_t>& truth) {
+    for (int i : cells) truth[i] = 1;
+  };
+}
 
 ::testing::AssertionResult planner_is_truth_blind(
     const std::string& algorithm, const OptionMap& options, const world::MissionParams& params,
     std::uint64_t seed, TruthBlindnessReport* report, const world::FailurePlan& failures,
     const std::function<void(grid::Grid<std::int8_t>&)>& alter_truth) {
-  const auto& hull = world::default_hull();
-  const auto corrosion = world::scenario("imperfect").corrosion(hull.width());
+  const auto& hull = checked_hull();
+  const auto corrosion = checked_corrosion();
   const auto a = world::generate_instance(hull, corrosion, seed);
   world::Instance b = a;
   if (alter_truth) {

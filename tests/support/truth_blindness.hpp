@@ -31,4 +31,15 @@ struct TruthBlindnessReport {
     const world::FailurePlan& failures = {},
     const std::function<void(grid::Grid<std::int8_t>&)>& alter_truth = {});
 
+/// An `alter_truth` for planner_is_truth_blind that places the difference where `algorithm` looks
+/// last: it flies instance A (the same hull, scenario and seed) once and makes corroded the clean
+/// hull cells it first sensed last (those first sensed at or after 90 % of the time at which the
+/// last new cell was sensed). The top rows of the default change are seen within about 20 steps,
+/// so late decisions (help, hand-overs, the end game) were never compared; with this change
+/// they are. `last_first_sensed` receives that time, `altered` the number of cells changed.
+std::function<void(grid::Grid<std::int8_t>&)> corrosion_where_sensed_last(
+    const std::string& algorithm, const OptionMap& options, const world::MissionParams& params,
+    std::uint64_t seed, const world::FailurePlan& failures = {}, int* last_first_sensed = nullptr,
+    int* altered = nullptr);
+
 }  // namespace hullinspect::testing
