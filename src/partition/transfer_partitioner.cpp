@@ -9,6 +9,7 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
@@ -567,19 +568,26 @@ std::vector<int> spread_virtual_starts(const world::HullMask& hull, std::span<co
 constexpr int kRegrowIterations = 30;
 constexpr int kOffsetIterations = 20;
 
+// Sum and largest of |weight − target| over the regions: how far a regrowth is from its targets.
+std::pair<double, double> size_errors(const TransferWorkspace& ws,
+                                      const std::vector<double>& target) {
+  double sum = 0;
+  double worst = 0;
+  for (int r = 0; r < ws.n(); ++r) {
+    const double e = std::abs(ws.weight(r) - target[static_cast<std::size_t>(r)]);
+    sum += e;
+    worst = std::max(worst, e);
+  }
+  return {sum, worst};
+}
+
 void regrow_with_offsets(TransferWorkspace& ws, const std::vector<double>& target, double goal) {
   const int n = ws.n();
   std::vector<int> boundary;
   std::vector<long long> best(static_cast<std::size_t>(n), 0);
   double best_error = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < kOffsetIterations; ++iteration) {
-    double error = 0;
-    double worst = 0;
-    for (int r = 0; r < n; ++r) {
-      const double e = std::abs(ws.weight(r) - target[static_cast<std::size_t>(r)]);
-      error += e;
-      worst = std::max(worst, e);
-    }
+    const auto [error, worst] = size_errors(ws, target);
     if (error < best_error) {
       best_error = error;
       for (int r = 0; r < n; ++r) best[static_cast<std::size_t>(r)] = ws.offset(r);
@@ -617,13 +625,7 @@ void regrow_with_fronts(TransferWorkspace& ws, const std::vector<double>& target
   double best_error = std::numeric_limits<double>::infinity();
   apply();
   for (int iteration = 0; iteration < kRegrowIterations; ++iteration) {
-    double error = 0;
-    double worst = 0;
-    for (int r = 0; r < n; ++r) {
-      const double e = std::abs(ws.weight(r) - target[static_cast<std::size_t>(r)]);
-      error += e;
-      worst = std::max(worst, e);
-    }
+    const auto [error, worst] = size_errors(ws, target);
     if (error < best_error) {
       best_error = error;
       for (int r = 0; r < n; ++r) best[static_cast<std::size_t>(r)] = ws.cost(r);
