@@ -50,7 +50,8 @@ class TransferWorkspace {
         weight_(static_cast<std::size_t>(n_), 0.0),
         cost_(static_cast<std::size_t>(n_), 128),
         offset_(static_cast<std::size_t>(n_), 0),
-        adjacent_(static_cast<std::size_t>(n_) * n_, 0),
+        pairs_(static_cast<std::size_t>(n_) * n_, 0),
+        box_(static_cast<std::size_t>(n_)),
         blocked_(static_cast<std::size_t>(n_) * n_, 0) {
     heap_.reserve(owner_.size() * 4);
     for (auto* v : {&seen_, &parent_, &disc_, &low_}) v->assign(owner_.size(), 0);
@@ -212,18 +213,26 @@ class TransferWorkspace {
     return unreached;
   }
 
-  // Which regions touch which (4-adjacency), rebuilt from the owners.
-  void rebuild_adjacency() {
-    std::fill(adjacent_.begin(), adjacent_.end(), 0);
-    for (int i : hull_.cells()) {
-      const int a = owner_[static_cast<std::size_t>(i)];
-      const int x = i % width_;
-      if (x + 1 < width_) mark_adjacent(a, owner_[static_cast<std::size_t>(i + 1)]);
-      if (i + width_ < static_cast<int>(owner_.size()))
-        mark_adjacent(a, owner_[static_cast<std::size_t>(i + width_)]);
+  // Which regions touch which (the number of 4-adjacent cell pairs between them) and each region's
+  // bounding box, counted from the owners once per attempt before its rounds; every later change
+  // of owner goes through reassign(), which keeps both up to date, so a round costs what it moves
+  // and the boxes it scans, not a pass over the hull.
+  void recount_adjacency() {
+    std::fill(pairs_.begin(), pairs_.end(), 0);
+    for (auto& b : box_) b = Box{};
+    for (int y = 0; y < height_; ++y) {
+      const int* row = owner_.data() + static_cast<std::ptrdiff_t>(y) * width_;
+      const int* below = y + 1 < height_ ? row + width_ : nullptr;
+      for (int x = 0; x < width_; ++x) {
+        const int a = row[x];
+        if (a < 0) continue;
+        box_[static_cast<std::size_t>(a)].add(x, y);
+        if (x + 1 < width_) count_pair(a, row[x + 1], 1);
+        if (below != nullptr) count_pair(a, below[x], 1);
+      }
     }
   }
-  bool adjacent(int a, int b) const { return adjacent_[index(a, b)] != 0; }
+  bool adjacent(int a, int b) const { return pairs_[index(a, b)] > 0; }
   bool blocked(int from, int to) const { return blocked_[index(from, to)] != 0; }
   void block(int from, int to) { blocked_[index(from, to)] = 1; }
   void clear_blocks() { std::fill(blocked_.begin(), blocked_.end(), 0); }
@@ -235,14 +244,14 @@ class TransferWorkspace {
   // to `from`'s go first, which keeps the boundary where the distance fields put it.
   double transfer(int from, int to, double amount, bool overshoot) {
     heap_.clear();
-    for (int i : hull_.cells()) {
+    for_each_in_box(from, [&](int i) {
       if (owner_[static_cast<std::size_t>(i)] == from && touches(i, to))
         push_candidate(i, from, to);
-    }
+    });
     double moved = 0;
     const int from_start = starts_[static_cast<std::size_t>(from)];
     auto move = [&](int cell) {
-      owner_[static_cast<std::size_t>(cell)] = to;
+      reassign(cell, to);
       const double w = cell_weight(cell);
       weight_[static_cast<std::size_t>(from)] -= w;
       weight_[static_cast<std::size_t>(to)] += w;
@@ -267,14 +276,13 @@ class TransferWorkspace {
         move(cell);
         // Cells the move cut off from `from`'s start follow it into `to` (they touch it through
         // the moved cell, so both regions stay connected).
-        for (int i : hull_.cells()) {
-          if (owner_[static_cast<std::size_t>(i)] == from)
-            owner_[static_cast<std::size_t>(i)] = kMark;
-        }
+        for_each_in_box(from, [&](int i) {
+          if (owner_[static_cast<std::size_t>(i)] == from) reassign(i, kMark);
+        });
         flood_back(from_start, from);
-        for (int i : hull_.cells()) {
+        for_each_in_box(from, [&](int i) {
           if (owner_[static_cast<std::size_t>(i)] == kMark) move(i);
-        }
+        });
         continue;
       }
       std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
@@ -357,7 +365,7 @@ class TransferWorkspace {
       for (int k = 0; k < 4; ++k) {
         const int w = neighbour(v, k);
         if (w < 0 || owner_[static_cast<std::size_t>(w)] != kMark) continue;
-        owner_[static_cast<std::size_t>(w)] = region;
+        reassign(w, region);
         dfs_.push_back({w, 0});
       }
     }
@@ -387,10 +395,43 @@ class TransferWorkspace {
     }
   }
   std::size_t index(int a, int b) const { return static_cast<std::size_t>(a) * n_ + b; }
-  void mark_adjacent(int a, int b) {
+  // Gives `cell` to `region`, or to no region (kMark), keeping the pair counts and the bounding
+  // boxes: a cell taken from every region (marked) counts in no pair until it is given back.
+  void reassign(int cell, int region) {
+    const int old = owner_[static_cast<std::size_t>(cell)];
+    for_each_neighbour(cell, [&](int nb) {
+      const int o = owner_[static_cast<std::size_t>(nb)];
+      count_pair(old, o, -1);
+      count_pair(region, o, 1);
+    });
+    owner_[static_cast<std::size_t>(cell)] = region;
+    if (region >= 0) box_[static_cast<std::size_t>(region)].add(cell % width_, cell / width_);
+  }
+  // Adds `delta` to the number of 4-adjacent cell pairs between regions a and b (nothing when
+  // either is not a region or they are the same).
+  void count_pair(int a, int b, int delta) {
     if (a < 0 || b < 0 || a == b) return;
-    adjacent_[index(a, b)] = 1;
-    adjacent_[index(b, a)] = 1;
+    pairs_[index(a, b)] += delta;
+    pairs_[index(b, a)] += delta;
+  }
+  // A region's bounding box; it only grows between recounts (cells leaving it do not shrink it),
+  // so it always holds the region.
+  struct Box {
+    int x0 = std::numeric_limits<int>::max(), y0 = std::numeric_limits<int>::max();
+    int x1 = -1, y1 = -1;
+    void add(int x, int y) {
+      x0 = std::min(x0, x);
+      y0 = std::min(y0, y);
+      x1 = std::max(x1, x);
+      y1 = std::max(y1, y);
+    }
+  };
+  template <typename F>
+  void for_each_in_box(int region, F f) const {
+    const Box& b = box_[static_cast<std::size_t>(region)];
+    for (int y = b.y0; y <= b.y1; ++y) {
+      for (int x = b.x0; x <= b.x1; ++x) f(y * width_ + x);
+    }
   }
 
   template <typename Field>
@@ -499,7 +540,8 @@ class TransferWorkspace {
   std::vector<long long> offset_;
   static constexpr int kBuckets = 2048;  // > the largest step cost (a diagonal at kMaxCost)
   std::vector<std::vector<int>> buckets_ = std::vector<std::vector<int>>(kBuckets);
-  std::vector<std::uint8_t> adjacent_;
+  std::vector<int> pairs_;  // n × n: 4-adjacent cell pairs between two regions
+  std::vector<Box> box_;
   std::vector<std::uint8_t> blocked_;
   std::vector<HeapEntry> heap_;
   long long key_scale_ = 1;
@@ -841,6 +883,7 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
     std::vector<std::uint8_t> stuck(static_cast<std::size_t>(n), 0);
     int escapes = 0;  // escape rounds in this attempt
     double last_imbalance = imbalance();
+    ws.recount_adjacency();
     while (!converged) {
       if (rounds >= options_.round_limit) {
         hit_limit = true;
@@ -884,7 +927,6 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
       }
       if (worst < 0) break;  // every unbalanced region is stuck: nothing movable on any path
       ++rounds;
-      ws.rebuild_adjacency();
       const bool over = excess(worst) > 0;
       find_path(worst, over);
       if (path.empty()) {
