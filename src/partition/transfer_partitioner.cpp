@@ -110,19 +110,13 @@ class TransferWorkspace {
     std::size_t pending = 0;
     long long t = 0;
     auto push_ring = [&](int cell, int r, long long now) {
-      const int x = cell % width_;
-      const int y = cell / width_;
-      for (int k = 0; k < 8; ++k) {
-        const int nx = x + kRingDx[static_cast<std::size_t>(k)];
-        const int ny = y + kRingDy[static_cast<std::size_t>(k)];
-        if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
-        const int nb = ny * width_ + nx;
-        if (!hull_.is_hull(nb) || owner_[static_cast<std::size_t>(nb)] >= 0) continue;
+      for_each_in_ring(cell, [&](int k, int nb) {
+        if (!hull_.is_hull(nb) || owner_[static_cast<std::size_t>(nb)] >= 0) return;
         const int c = cost(r);
         const long long at = now + (k % 2 == 1 ? c : (c * 181 + 64) / 128);  // 181/128 ≈ √2
         buckets_[static_cast<std::size_t>(at % kBuckets)].push_back(nb * n_ + r);
         ++pending;
-      }
+      });
     };
     for (int r = 0; r < n_; ++r) push_ring(starts_[static_cast<std::size_t>(r)], r, 0);
     while (pending > 0) {
@@ -257,15 +251,9 @@ class TransferWorkspace {
       weight_[static_cast<std::size_t>(to)] += w;
       moved += w;
       // The move can make any cell of `from` around it movable (its ring changed).
-      const int x = cell % width_;
-      const int y = cell / width_;
-      for (int k = 0; k < 8; ++k) {
-        const int nx = x + kRingDx[static_cast<std::size_t>(k)];
-        const int ny = y + kRingDy[static_cast<std::size_t>(k)];
-        if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
-        const int nb = ny * width_ + nx;
+      for_each_in_ring(cell, [&](int, int nb) {
         if (owner_[static_cast<std::size_t>(nb)] == from) push_candidate(nb, from, to);
-      }
+      });
     };
     while (moved < amount - 1e-9) {
       if (heap_.empty()) {
@@ -449,6 +437,18 @@ class TransferWorkspace {
     return distance_[static_cast<std::size_t>(r) * owner_.size() + static_cast<std::size_t>(cell)];
   }
 
+  // f(k, ring cell) for the positions k = 0 … 7 of the 8-ring around `cell` (kRingDx/kRingDy
+  // order) that lie on the grid.
+  template <typename F>
+  void for_each_in_ring(int cell, F f) const {
+    const int x = cell % width_;
+    const int y = cell / width_;
+    for (int k = 0; k < 8; ++k) {
+      const int nx = x + kRingDx[static_cast<std::size_t>(k)];
+      const int ny = y + kRingDy[static_cast<std::size_t>(k)];
+      if (nx >= 0 && ny >= 0 && nx < width_ && ny < height_) f(k, ny * width_ + nx);
+    }
+  }
   template <typename F>
   void for_each_neighbour(int cell, F f) const {
     const int x = cell % width_;
@@ -498,19 +498,11 @@ class TransferWorkspace {
   // 4-adjacent), so they stay joined without the cell. Sufficient, not necessary: a cell joining
   // two parts that also meet far away is kept, which only costs a candidate.
   bool removable(int cell, int region) const {
-    const int x = cell % width_;
-    const int y = cell / width_;
-    std::array<bool, 8> in{};
-    bool any_out = false;
-    for (int k = 0; k < 8; ++k) {
-      const int nx = x + kRingDx[static_cast<std::size_t>(k)];
-      const int ny = y + kRingDy[static_cast<std::size_t>(k)];
-      in[static_cast<std::size_t>(k)] =
-          nx >= 0 && ny >= 0 && nx < width_ && ny < height_ &&
-          owner_[static_cast<std::size_t>(ny * width_ + nx)] == region;
-      any_out = any_out || !in[static_cast<std::size_t>(k)];
-    }
-    if (!any_out) return true;
+    std::array<bool, 8> in{};  // ring positions off the grid stay out
+    for_each_in_ring(cell, [&](int k, int nb) {
+      in[static_cast<std::size_t>(k)] = owner_[static_cast<std::size_t>(nb)] == region;
+    });
+    if (std::all_of(in.begin(), in.end(), [](bool b) { return b; })) return true;
     int first_out = 0;
     while (in[static_cast<std::size_t>(first_out)]) ++first_out;
     int runs_with_neighbour = 0;
