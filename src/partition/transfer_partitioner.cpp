@@ -54,6 +54,7 @@ class TransferWorkspace {
         box_(static_cast<std::size_t>(n_)),
         blocked_(static_cast<std::size_t>(n_) * n_, 0) {
     heap_.reserve(owner_.size() * 4);
+    waiting_.reserve(owner_.size() * 4 + static_cast<std::size_t>(n_) * 4);
     for (auto* v : {&seen_, &parent_, &disc_, &low_}) v->assign(owner_.size(), 0);
     subtree_.assign(owner_.size(), 0.0);
     cut_off_.assign(owner_.size(), 0.0);
@@ -198,7 +199,8 @@ class TransferWorkspace {
     }
     bucket_base_ = lo;
     const auto span = static_cast<std::size_t>(key_scale_ + (hi - lo) / kOffsetScale + 2);
-    if (growth_buckets_.size() < span) growth_buckets_.resize(span);
+    if (bucket_head_.size() < span) bucket_head_.resize(span, -1);
+    waiting_.clear();
     current_bucket_ = -1;
     for (int r = 0; r < n_; ++r) {
       const int s = starts_[static_cast<std::size_t>(r)];
@@ -208,14 +210,17 @@ class TransferWorkspace {
     for (int r = 0; r < n_; ++r)
       push_neighbours_for_growth(starts_[static_cast<std::size_t>(r)], r);
     for (std::size_t b = 0; b < span; ++b) {
-      std::vector<HeapEntry>& bucket = growth_buckets_[b];
-      if (bucket.empty()) continue;
+      if (bucket_head_[b] < 0) continue;
       current_bucket_ = static_cast<long long>(b);
-      std::make_heap(bucket.begin(), bucket.end(), std::greater<>());
-      while (!bucket.empty()) {
-        std::pop_heap(bucket.begin(), bucket.end(), std::greater<>());
-        const HeapEntry e = bucket.back();
-        bucket.pop_back();
+      heap_.clear();
+      for (int k = bucket_head_[b]; k >= 0; k = waiting_[static_cast<std::size_t>(k)].next)
+        heap_.push_back(waiting_[static_cast<std::size_t>(k)].entry);
+      bucket_head_[b] = -1;
+      std::make_heap(heap_.begin(), heap_.end(), std::greater<>());
+      while (!heap_.empty()) {
+        std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+        const HeapEntry e = heap_.back();
+        heap_.pop_back();
         const int cell = e.cell / n_;
         const int r = e.cell % n_;
         if (owner_[static_cast<std::size_t>(cell)] >= 0) continue;
@@ -509,11 +514,12 @@ class TransferWorkspace {
       const long long key = (arrival * kJitter + jitter_[static_cast<std::size_t>(nb)]) * n_ + r;
       const long long b = (arrival - bucket_base_) / kOffsetScale;
       if (b <= current_bucket_) {
-        std::vector<HeapEntry>& bucket = growth_buckets_[static_cast<std::size_t>(current_bucket_)];
-        bucket.push_back({key, nb * n_ + r});
-        std::push_heap(bucket.begin(), bucket.end(), std::greater<>());
+        heap_.push_back({key, nb * n_ + r});
+        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
       } else {
-        growth_buckets_[static_cast<std::size_t>(b)].push_back({key, nb * n_ + r});
+        int& head = bucket_head_[static_cast<std::size_t>(b)];
+        waiting_.push_back({{key, nb * n_ + r}, head});
+        head = static_cast<int>(waiting_.size()) - 1;
       }
     });
   }
@@ -583,8 +589,15 @@ class TransferWorkspace {
   std::vector<Box> box_;
   std::vector<std::uint8_t> blocked_;
   std::vector<HeapEntry> heap_;
-  // grow(): one bucket per arrival time from the least offset on, and the one being emptied.
-  std::vector<std::vector<HeapEntry>> growth_buckets_;
+  // grow(): the entries waiting in later buckets, each bucket a list through `next` from its head
+  // (-1: empty), the least offset (bucket 0) and the bucket being emptied (its heap is heap_).
+  // Every hull cell pushes at most its 4 neighbours, so waiting_ never outgrows 4 N.
+  struct Waiting {
+    HeapEntry entry;
+    int next;
+  };
+  std::vector<Waiting> waiting_;
+  std::vector<int> bucket_head_;
   long long bucket_base_ = 0;
   long long current_bucket_ = -1;
   long long key_scale_ = 1;
