@@ -32,6 +32,7 @@ struct HeapEntry {
   long long key;  // smaller first
   int cell;
   bool operator>(const HeapEntry& o) const { return key != o.key ? key > o.key : cell > o.cell; }
+  bool operator<(const HeapEntry& o) const { return o > *this; }
 };
 
 // The state of one run: owners, region totals and the per-start distance fields.
@@ -55,6 +56,7 @@ class TransferWorkspace {
         blocked_(static_cast<std::size_t>(n_) * n_, 0) {
     heap_.reserve(owner_.size() * 4);
     waiting_.reserve(owner_.size() * 4 + static_cast<std::size_t>(n_) * 4);
+    run_.reserve(waiting_.capacity());
     for (auto* v : {&seen_, &parent_, &disc_, &low_}) v->assign(owner_.size(), 0);
     subtree_.assign(owner_.size(), 0.0);
     cut_off_.assign(owner_.size(), 0.0);
@@ -185,11 +187,12 @@ class TransferWorkspace {
   // cells no start reaches.
   //
   // The queue is a bucket per distance step of arrival time (distance · kOffsetScale + offset,
-  // from the least offset on), each bucket made a heap on the whole key when its turn comes: cells
+  // from the least offset on), each bucket sorted on the whole key when its turn comes: cells
   // leave in exactly the order of one heap over all of them (every later bucket arrives later; an
-  // entry arriving no later than the bucket being emptied joins that bucket's heap), but a heap
-  // holds one step of the fronts instead of the whole hull's. O(N log front + distance span); the
-  // regrowths grow the hull ~20 times per attempt.
+  // entry pushed while a bucket is emptied arriving no later than it, possible with flight
+  // distances, goes into a heap merged with the sorted bucket), but one sort per distance step
+  // replaces a heap operation per entry. O(N log front + distance span); the regrowths grow the
+  // hull 20-30 times per attempt.
   int grow() {
     long long lo = std::numeric_limits<long long>::max();
     long long hi = std::numeric_limits<long long>::min();
@@ -212,15 +215,22 @@ class TransferWorkspace {
     for (std::size_t b = 0; b < span; ++b) {
       if (bucket_head_[b] < 0) continue;
       current_bucket_ = static_cast<long long>(b);
-      heap_.clear();
+      run_.clear();
       for (int k = bucket_head_[b]; k >= 0; k = waiting_[static_cast<std::size_t>(k)].next)
-        heap_.push_back(waiting_[static_cast<std::size_t>(k)].entry);
+        run_.push_back(waiting_[static_cast<std::size_t>(k)].entry);
       bucket_head_[b] = -1;
-      std::make_heap(heap_.begin(), heap_.end(), std::greater<>());
-      while (!heap_.empty()) {
-        std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
-        const HeapEntry e = heap_.back();
-        heap_.pop_back();
+      std::sort(run_.begin(), run_.end(), std::less<>());
+      heap_.clear();
+      std::size_t next = 0;
+      while (next < run_.size() || !heap_.empty()) {
+        HeapEntry e;
+        if (!heap_.empty() && (next == run_.size() || run_[next] > heap_.front())) {
+          std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+          e = heap_.back();
+          heap_.pop_back();
+        } else {
+          e = run_[next++];
+        }
         const int cell = e.cell / n_;
         const int r = e.cell % n_;
         if (owner_[static_cast<std::size_t>(cell)] >= 0) continue;
@@ -597,6 +607,7 @@ class TransferWorkspace {
     int next;
   };
   std::vector<Waiting> waiting_;
+  std::vector<HeapEntry> run_;  // the bucket being emptied, sorted (heap_: entries pushed into it)
   std::vector<int> bucket_head_;
   long long bucket_base_ = 0;
   long long current_bucket_ = -1;
