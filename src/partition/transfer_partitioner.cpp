@@ -639,8 +639,8 @@ enum class Attempt {
 constexpr int kEscapesPerUav = 1;
 
 // An attempt whose escape rounds keep failing is stuck: it ends after max(kFruitlessEscapes,
-// n / 2) escape rounds in a row that brought Σ|error| below its least value in the attempt. In
-// the 1280 random start sets of transfer_bench, the attempts that balanced needed at most 7 such
+// n / 2) escape rounds in a row that did not bring Σ|error| below its least value in the attempt.
+// In the 1280 random start sets of transfer_bench, the attempts that balanced needed at most 7 such
 // escape rounds in a row (n = 24) and most none; the attempts that did not balance went on through
 // up to n escape rounds and hundreds of rounds after their best, which only made them slower.
 constexpr int kFruitlessEscapes = 8;
