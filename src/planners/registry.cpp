@@ -96,8 +96,8 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "after an inspection rejoin the strip up to s2/2 columns ahead (already seen) instead "
             "of where it was left")
       .flag("nearer-sweep-end", &SweepInspectOptions::nearer_sweep_end,
-            "plan the sweep from where the prior's inspections ended, from its nearer end "
-            "(false: bottom-up from the start cell)")
+            "plan the sweep from where the prior's inspections ended, over the cells they did not "
+            "see, from its nearer end (false: the whole region bottom-up from the start cell)")
       .number("prior-trust", &SweepInspectOptions::prior_trust, 0.0, 1.0,
               "stop the prior's inspections once fewer than this fraction of the prior cells "
               "seen so far were corroded (0: never)")
@@ -110,6 +110,10 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "a failed UAV's unswept cells go at once to the working UAVs, split so that they end "
             "together; each sweeps its share after its own strips (false: they wait for the "
             "helpers)")
+      .flag("share-prior", &SweepInspectOptions::share_prior,
+            "neighbours re-split their prior cells so that their tours end together (at the start "
+            "and after a failure), and a UAV whose tour is done takes the part of the longest tour "
+            "left that makes the two end earliest (false: each tours its region's prior cells)")
       .flag("yield-claims", &SweepInspectOptions::yield_claims,
             "a claimed target goes to a UAV nearer to it than its claimer (false: claims hold)")
       .nested(
