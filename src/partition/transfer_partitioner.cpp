@@ -942,11 +942,12 @@ Partition TransferPartitioner::partition(const PartitionRequest& request) const 
   const bool regrow = options_.regrow && n > 1 && walled.empty();
   std::vector<Attempt> schedule{Attempt::kPlain};
   if (walled.empty()) {
-    if (regrow) {
-      schedule.insert(schedule.end(),
-                      {Attempt::kOffsets, Attempt::kFronts, Attempt::kAdaptiveOffsets});
-    }
-    schedule.insert(schedule.end(), static_cast<std::size_t>(options_.attempts - 1),
+    if (regrow) schedule.insert(schedule.end(), {Attempt::kOffsets, Attempt::kFronts});
+    // The first seeded attempt before the adaptive regrowth: it balances sets the adaptive one
+    // does not (and costs less than it).
+    if (options_.attempts > 1) schedule.push_back(Attempt::kSeeded);
+    if (regrow) schedule.push_back(Attempt::kAdaptiveOffsets);
+    schedule.insert(schedule.end(), static_cast<std::size_t>(std::max(options_.attempts - 2, 0)),
                     Attempt::kSeeded);
     if (regrow) schedule.insert(schedule.end(), {Attempt::kSeededOffsets, Attempt::kSeededFronts});
   }
