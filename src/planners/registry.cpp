@@ -106,6 +106,10 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("take-over-prior", &SweepInspectOptions::take_over_prior,
             "a failed UAV's prior cells go at once to the nearest working UAV (false: they wait "
             "for the helpers)")
+      .flag("take-over-sweep", &SweepInspectOptions::take_over_sweep,
+            "a failed UAV's unswept cells go at once to the working UAVs, split so that they end "
+            "together; each sweeps its share after its own strips (false: they wait for the "
+            "helpers)")
       .flag("yield-claims", &SweepInspectOptions::yield_claims,
             "a claimed target goes to a UAV nearer to it than its claimer (false: claims hold)")
       .nested(

@@ -15,6 +15,50 @@ namespace {
 int chebyshev(grid::Cell a, grid::Cell b) {
   return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y));
 }
+/// Splits `cells` (flat indices, sorted by column) into consecutive column slabs, left to right,
+/// one per UAV of `uavs` (id and position, sorted by x): the earliest common end t for which each
+/// UAV's load, its flight to the nearer end of its slab (per_column per column) and its slab
+/// (1 per cell) fit in t, found by bisection. Calls assign(uav, cell) for every cell.
+template <class Assign>
+void split_in_slabs(const std::vector<int>& cells, int width,
+                    const std::vector<std::pair<int, grid::Cell>>& uavs,
+                    const std::vector<double>& load, double per_column, Assign assign) {
+  if (cells.empty() || uavs.empty()) return;
+  const auto split = [&](double t, bool give) {
+    std::size_t c = 0;
+    for (const auto& uav : uavs) {
+      const int k = uav.first;
+      const grid::Cell pos = uav.second;
+      const std::size_t first = c;
+      while (c < cells.size()) {
+        const int x_lo = cells[first] % width;
+        const int x_hi = cells[c] % width;
+        const int flight = pos.x < x_lo   ? x_lo - pos.x
+                           : pos.x > x_hi ? pos.x - x_hi
+                                          : std::min(pos.x - x_lo, x_hi - pos.x);
+        const double cost = load[static_cast<std::size_t>(k)] + per_column * flight +
+                            static_cast<double>(c - first + 1);
+        if (cost > t) break;
+        if (give) assign(k, cells[c]);
+        ++c;
+      }
+    }
+    return c == cells.size();
+  };
+  double lo = 0.0;
+  double hi = 1.0;
+  while (!split(hi, false)) hi *= 2.0;
+  for (int round = 0; round < 60 && hi - lo > 0.25; ++round) {
+    const double mid = 0.5 * (lo + hi);
+    (split(mid, false) ? hi : lo) = mid;
+  }
+  split(hi, true);
+}
+
+/// Not yet observed: unknown, or expected corroded by the prior and not yet seen.
+bool unobserved(const sim::PlannerView& view, int i) {
+  return view.map[i] == sim::kUnknown || (view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0);
+}
 }  // namespace
 
 grid::Cell SweepInspectPlanner::reach_position(int k, grid::Cell pos, grid::Cell c, int h) const {
@@ -37,9 +81,10 @@ sim::Action SweepInspectPlanner::step(int k, grid::Cell pos, grid::Cell to) cons
   return sim::step_towards(pos, uav_distances_[static_cast<std::size_t>(k)]->next_step(pos, to));
 }
 
-std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
+std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::int16_t>& owner,
+                                                         int k, grid::Cell from) {
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
-  auto waypoints = LawnmowerPlanner::sweep(partition_->owner, k, h2_ * 2 + 1, from);
+  auto waypoints = LawnmowerPlanner::sweep(owner, k, h2_ * 2 + 1, from);
   if (reach_ != nullptr) {
     // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
     // the flight between waypoints goes around no-fly positions, and whatever the strips then
@@ -80,6 +125,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   add_no_fly(request, context);
   add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
+  owner_ = partition_->owner;
   const int n = p.uavs;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});
   for (int k = 0; k < n; ++k) {
@@ -102,6 +148,9 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   pending_.clear();
   pending_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
   hull_cells_ = context.hull.cells();
+  handed_over_.assign(static_cast<std::size_t>(n), 0);
+  split_cells_.clear();
+  split_cells_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
 }
 
 bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
@@ -184,6 +233,15 @@ void SweepInspectPlanner::decide(const sim::PlannerView& view, std::span<sim::Ac
   }
   for (std::size_t k = 0; k < uavs_.size(); ++k) positions_[k] = view.uavs[k].pos;
   if (options_.take_over_prior) hand_over_prior(view);
+  if (options_.take_over_sweep) {
+    bool failure = false;
+    for (std::size_t j = 0; j < uavs_.size(); ++j) {
+      if (!view.uavs[j].failed || handed_over_[j] != 0) continue;
+      handed_over_[j] = 1;
+      failure = true;
+    }
+    if (failure) resplit(view);
+  }
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     actions[k] = decide_uav(static_cast<int>(k), view.uavs[k], view);
   }
@@ -241,7 +299,10 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
         p.mode = Mode::kSweep;
         p.sweep_planned = true;
         // Plan the sweep from where the prior's inspections ended.
-        if (options_.nearer_sweep_end) p.sweep.assign(sweep_from(k, u.pos));
+        if (options_.nearer_sweep_end) {
+          p.sweep.assign(sweep_from(k, u.pos));
+          p.replan = false;
+        }
       }
     } else {
       if (u.z == 2) return sim::Action::kChangePlane;
@@ -264,6 +325,12 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     if (u.z == 1) {  // arrived below for an inspection
       p.mode = Mode::kInspect;
     } else {
+      if (p.replan) {
+        // Its cells were re-split after a failure: strips over its new share from here.
+        p.replan = false;
+        p.mode = Mode::kSweep;
+        p.sweep.assign(sweep_from(k, u.pos));
+      }
       if (p.mode == Mode::kReturn && u.pos == p.resume) p.mode = Mode::kSweep;
       if (p.mode == Mode::kSweep && options_.inspect_on_the_way) {
         // Descend when a detected cell is abreast: its column within reach of the z = 1 footprint.
@@ -284,6 +351,18 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
   }
   if (p.mode == Mode::kDone)
     p.mode = Mode::kHelp;  // work may have appeared (a failure, a claim freed)
+  if (p.mode == Mode::kHelp && p.replan && u.z == 2) {
+    // Cells re-split after a failure while it was helping: sweep them.
+    p.replan = false;
+    p.sweep.assign(sweep_from(k, u.pos));
+    p.sweep_planned = true;
+    p.target_cell = -1;
+    const sim::Action a = p.sweep.next_action(u.pos);
+    if (a != sim::Action::kHover) {
+      p.mode = Mode::kSweep;
+      return a;
+    }
+  }
 
   if (p.mode == Mode::kInspect) {
     if (u.z == 2) {  // climbed back: resume the sweep
@@ -334,6 +413,47 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     return step(k, u.pos, p.target);
   }
   return sim::Action::kHover;  // kDone
+}
+
+void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
+  const std::size_t n = uavs_.size();
+  for (int i : hull_cells_) owner_[i] = -1;
+  // The working UAVs' loads: the prior's cells each still has to visit, in cells (a visit costs
+  // about kPriorVisitSteps steps, a step of sweep sees about kSweepRate·s2 new cells).
+  const double cells_per_step = kSweepRate * (2 * h2_ + 1);
+  split_load_.assign(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (view.uavs[k].failed) continue;
+    split_load_[k] = kPriorVisitSteps * cells_per_step * static_cast<double>(prior_[k].size());
+    uavs_[k].replan = true;
+  }
+  // One split per flight part (docs/model.md §8; one part without a no-fly wall): the cells not
+  // yet observed that the part sees, in column order (then row), among its working UAVs in the
+  // order of their positions (x).
+  for (std::size_t g = 0; g < n; ++g) {
+    if (view.uavs[g].failed) continue;
+    bool first_of_part = true;
+    for (std::size_t k = 0; k < g; ++k) {
+      if (!view.uavs[k].failed && uav_distances_[k] == uav_distances_[g]) first_of_part = false;
+    }
+    if (!first_of_part) continue;
+    split_helpers_.clear();
+    for (std::size_t k = g; k < n; ++k) {
+      if (!view.uavs[k].failed && uav_distances_[k] == uav_distances_[g])
+        split_helpers_.push_back({static_cast<int>(k), view.uavs[k].pos});
+    }
+    std::stable_sort(split_helpers_.begin(), split_helpers_.end(),
+                     [](const auto& a, const auto& b) { return a.second.x < b.second.x; });
+    split_cells_.clear();
+    for (int i : hull_cells_) {
+      if (unobserved(view, i) && reachable(static_cast<int>(g), i, world::kReachZ2))
+        split_cells_.push_back(i);
+    }
+    std::stable_sort(split_cells_.begin(), split_cells_.end(),
+                     [&](int a, int b) { return a % width_ < b % width_; });
+    split_in_slabs(split_cells_, width_, split_helpers_, split_load_, cells_per_step,
+                   [&](int k, int i) { owner_[i] = static_cast<std::int16_t>(k); });
+  }
 }
 
 grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos) const {

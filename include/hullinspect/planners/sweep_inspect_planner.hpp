@@ -40,6 +40,10 @@ struct SweepInspectOptions {
   /// A failed UAV's prior cells go at once to the nearest working UAV, which interrupts its sweep
   /// for them (false: they wait for the helpers, after their sweeps).
   bool take_over_prior = true;
+  /// A failed UAV's unswept cells go at once to the working UAVs, split so that they end together
+  /// (each sweeps its share after its own strips; false: they wait for the helpers' nearest-cell
+  /// search after their sweeps).
+  bool take_over_sweep = true;
   /// A claimed target goes to a UAV nearer to it than its claimer (false: claims hold).
   bool yield_claims = true;
 };
@@ -63,6 +67,7 @@ class SweepInspectPlanner final : public Planner {
     int target_cell = -1;             // the cell that target serves (help claims it)
     bool sweep_planned = false;       // its sweep was planned (it left the prior's cells once)
     Mode after_prior = Mode::kSweep;  // where to go on when prior cells handed over are done
+    bool replan = false;              // its cells were re-split (a failure): plan strips anew
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
@@ -77,8 +82,19 @@ class SweepInspectPlanner final : public Planner {
     return options_.prior_trust > 0 && seen >= options_.prior_check_cells &&
            prior_true_ < options_.prior_trust * seen;
   }
-  /// The strips of UAV k's region (waypoints at z = 2) flown from `from`.
-  std::vector<grid::Cell> sweep_from(int k, grid::Cell from);
+  /// The strips of UAV k's region (waypoints at z = 2) flown from `from` (its cells in owner_).
+  std::vector<grid::Cell> sweep_from(int k, grid::Cell from) {
+    return strips_from(owner_, k, from);
+  }
+  /// The strips over the cells where `owner` is k (waypoints at z = 2) flown from `from`, from the
+  /// nearer end (nearer-sweep-end).
+  std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k,
+                                      grid::Cell from);
+  /// At a failure (take-over-sweep): every cell not yet observed is split anew among the working
+  /// UAVs in column slabs, left to right in the order of their positions, so that their predicted
+  /// ends — the prior's cells left to visit, the flight to the slab, the slab — are as early as
+  /// can be; each then sweeps its slab's strips from where it is.
+  void resplit(const sim::PlannerView& view);
   /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
   void hand_over_prior(const sim::PlannerView& view);
   /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
@@ -99,6 +115,18 @@ class SweepInspectPlanner final : public Planner {
   std::vector<int> pending_;  // detected (seen at z = 2), not yet inspected cells, flat indices
   std::vector<int> hull_cells_;
   std::vector<std::vector<int>> prior_;  // per UAV: the prior's cells of its region still M = 2
+  // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
+  // observed among the working UAVs (take-over-sweep; -1: nobody's).
+  grid::Grid<std::int16_t> owner_;
+  std::vector<char> handed_over_;  // per UAV: its failure was handled
+  std::vector<int> split_cells_;
+  std::vector<double> split_load_;                         // per UAV, in cells
+  std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
+  /// The planning estimates of the split: a sweep sees about this fraction of s2 new cells per
+  /// step (its inspections included; measured on the tuning seeds), a visit of a prior cell
+  /// costs about this many steps.
+  static constexpr double kSweepRate = 0.6;
+  static constexpr double kPriorVisitSteps = 1.5;
   grid::DistanceService own_distances_;
   grid::DistanceService* distances_ = nullptr;
   FlightDistances flights_;
