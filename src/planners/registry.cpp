@@ -110,6 +110,10 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "a failed UAV's unswept cells go at once to the working UAVs, split so that they end "
             "together; each sweeps its share after its own strips (false: they wait for the "
             "helpers)")
+      .flag("share-prior", &SweepInspectOptions::share_prior,
+            "neighbours re-split their prior cells so that their tours end together (at the start "
+            "and after a failure), and a UAV whose tour is done takes the part of the longest tour "
+            "left that makes the two end earliest (false: each tours its region's prior cells)")
       .flag("yield-claims", &SweepInspectOptions::yield_claims,
             "a claimed target goes to a UAV nearer to it than its claimer (false: claims hold)")
       .nested(

@@ -174,7 +174,7 @@ TEST(SweepInspect, IsTruthBlind) {
     for (const auto& options :
          {OptionMap{}, OptionMap{{"prior-weights", "false"}}, OptionMap{{"prior-trust", "0"}},
           OptionMap{{"resume-ahead", "false"}, {"nearer-sweep-end", "false"}},
-          OptionMap{{"take-over-sweep", "false"}}}) {
+          OptionMap{{"take-over-sweep", "false"}}, OptionMap{{"share-prior", "false"}}}) {
       EXPECT_TRUE(testing::planner_is_truth_blind("sweep-inspect", options, params, 5));
     }
   }
@@ -188,7 +188,8 @@ TEST(SweepInspect, TakeOverSweepIsTruthBlind) {
   params.uavs = 4;
   world::FailurePlan fails;
   fails.at = {{2, 60}};
-  for (const auto& options : {OptionMap{}, OptionMap{{"take-over-sweep", "false"}}}) {
+  for (const auto& options : {OptionMap{}, OptionMap{{"take-over-sweep", "false"}},
+                              OptionMap{{"share-prior", "false"}}}) {
     int last = 0;
     const auto alter =
         testing::corrosion_where_sensed_last("sweep-inspect", options, params, 4, fails, &last);
@@ -258,6 +259,58 @@ TEST(SweepInspect, TakeOverSweepStaysInsideAFlightPart) {
     ASSERT_TRUE(r.complete);
     EXPECT_TRUE(checker.ok());
     EXPECT_LE(*r.t_m, 2 * *failure_free.t_m);
+  }
+}
+
+// share-prior: with a right prior T_c is the end of the prior's tours. Neighbours re-split their
+// prior cells at the start so that their tours end together, and a UAV done early takes part of
+// the longest tour left: T_c drops (summed over the seeds; in each mission it may tie) and every
+// mission completes under the checker, also with a failure (whose prior cells are re-split among
+// the neighbours).
+TEST(SweepInspect, SharePriorBalancesThePriorsTours) {
+  const auto& hull = world::default_hull();
+  for (const char* scenario : {"perfect", "inhomogeneous"}) {
+    for (int n : {4, 8}) {
+      int with_sum = 0;
+      int without_sum = 0;
+      for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        for (bool failure : {false, true}) {
+          auto with = spec_for("sweep-inspect", scenario, 9, n, seed);
+          if (failure) with.failures.at = {{1, 30}};
+          auto without = with;
+          without.planner_options = {{"share-prior", "false"}};
+          testing::MissionChecker checker;
+          MissionOptions options;
+          options.observers = {&checker};
+          const auto a = run_mission(with, hull, options);
+          const auto b = run_mission(without, hull);
+          SCOPED_TRACE(::testing::Message()
+                       << scenario << " n=" << n << " seed=" << seed << " failure=" << failure);
+          ASSERT_TRUE(a.complete);
+          ASSERT_TRUE(b.complete);
+          EXPECT_TRUE(checker.ok());
+          with_sum += *a.t_c;
+          without_sum += *b.t_c;
+        }
+      }
+      EXPECT_LT(with_sum, without_sum) << scenario << " n=" << n;
+    }
+  }
+}
+
+// A small radius-factor once left a UAV descending for a detected cell abreast of it that lay
+// outside the inspection radius, climbing at once and descending again until the time limit.
+TEST(SweepInspect, ASmallInspectionRadiusStillCompletes) {
+  for (const char* factor : {"0", "0.3"}) {
+    auto spec = spec_for("sweep-inspect", "imperfect", 7, 4, 1);
+    spec.planner_options = {{"radius-factor", factor}};
+    spec.params.time_limit = 3000;
+    testing::MissionChecker checker;
+    MissionOptions options;
+    options.observers = {&checker};
+    const auto r = run_mission(spec, world::default_hull(), options);
+    EXPECT_TRUE(r.complete) << factor;
+    EXPECT_TRUE(checker.ok()) << factor;
   }
 }
 

@@ -44,6 +44,11 @@ struct SweepInspectOptions {
   /// (each sweeps its share after its own strips; false: they wait for the helpers' nearest-cell
   /// search after their sweeps).
   bool take_over_sweep = true;
+  /// Neighbours re-split their prior cells so that their tours (estimated) end together, at the
+  /// start and after a failure's prior cells were handed over; a UAV whose tour is done takes the
+  /// part of the longest tour left (of a UAV of its flight part) that makes the later of the two
+  /// end earliest (false: each tours its region's prior cells).
+  bool share_prior = true;
   /// A claimed target goes to a UAV nearer to it than its claimer (false: claims hold).
   bool yield_claims = true;
 };
@@ -95,8 +100,23 @@ class SweepInspectPlanner final : public Planner {
   /// ends — the prior's cells left to visit, the flight to the slab, the slab — are as early as
   /// can be; each then sweeps its slab's strips from where it is.
   void resplit(const sim::PlannerView& view);
+  /// share-prior: UAV k at `pos`, its prior tour done, takes part of the longest prior tour left;
+  /// true if it took cells.
+  bool take_prior_share(int k, grid::Cell pos);
+  /// Splits `cells` between UAV a at pa and UAV b at pb: a takes the first t of them (the order is
+  /// left in `cells`), t making the later of the two estimated tours end earliest (`*later`).
+  std::size_t split_tours(int a, grid::Cell pa, int b, grid::Cell pb, std::vector<int>& cells,
+                          int* later);
+  /// share-prior at the start and after a failure's prior cells were handed over: neighbours (by
+  /// x of `at`, working UAVs only when `view` is given) re-split their prior cells so that their
+  /// tours from `at` end together (kBalancePasses passes over the neighbour pairs).
+  void balance_prior_tours(std::span<const grid::Cell> at, const sim::PlannerView* view = nullptr);
+  static constexpr int kBalancePasses = 3;
+  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells`.
+  int tour_steps(grid::Cell from, std::span<const int> cells);
   /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
-  void hand_over_prior(const sim::PlannerView& view);
+  /// True when some cells were handed over.
+  bool hand_over_prior(const sim::PlannerView& view);
   /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
   grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
@@ -119,6 +139,7 @@ class SweepInspectPlanner final : public Planner {
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
   std::vector<char> handed_over_;  // per UAV: its failure was handled
+  std::vector<int> tour_left_;     // scratch of tour_steps
   std::vector<int> split_cells_;
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
