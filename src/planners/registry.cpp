@@ -96,8 +96,8 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "after an inspection rejoin the strip up to s2/2 columns ahead (already seen) instead "
             "of where it was left")
       .flag("nearer-sweep-end", &SweepInspectOptions::nearer_sweep_end,
-            "plan the sweep from where the prior's inspections ended, from its nearer end "
-            "(false: bottom-up from the start cell)")
+            "plan the sweep from where the prior's inspections ended, over the cells they did not "
+            "see, from its nearer end (false: the whole region bottom-up from the start cell)")
       .number("prior-trust", &SweepInspectOptions::prior_trust, 0.0, 1.0,
               "stop the prior's inspections once fewer than this fraction of the prior cells "
               "seen so far were corroded (0: never)")

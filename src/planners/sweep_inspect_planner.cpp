@@ -313,8 +313,12 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       } else {
         p.mode = Mode::kSweep;
         p.sweep_planned = true;
-        // Plan the sweep from where the prior's inspections ended.
+        // Plan the sweep from where the prior's inspections ended, over the region's cells they
+        // did not see (a strip band's ends that the tour saw are not flown again).
         if (options_.nearer_sweep_end) {
+          for (int i : hull_cells_) {
+            if (owner_[i] == k && !unobserved(view, i)) owner_[i] = -1;
+          }
           p.sweep.assign(sweep_from(k, u.pos));
           p.replan = false;
         }

@@ -22,8 +22,8 @@ struct TransferOptions {
   int attempts = 8;
   /// Regrowth attempts (n > 1): after attempt 0 and again after the seeded attempts, the regions
   /// grown with per-region head starts (offsets on the distances, then competing fronts with
-  /// per-region speeds) adjusted until their sizes are near the targets, then balanced by the same
-  /// transfers. For start sets whose Voronoi cells are pockets far below their share (starts a few
+  /// per-region speeds, then after attempt 0 also offsets with adaptive step bounds) adjusted until
+  /// their sizes are near the targets, then balanced by the same transfers. For start sets whose Voronoi cells are pockets far below their share (starts a few
   /// cells apart). They draw nothing from the seeded stream.
   bool regrow = true;
   /// Grow the regions from spread virtual starts (the model's default start cells for n UAVs)

@@ -30,8 +30,9 @@ struct SweepInspectOptions {
   /// After an inspection, rejoin the strip up to s2/2 columns ahead of where it was left (those
   /// columns were already seen from there) instead of flying back to that point.
   bool resume_ahead = true;
-  /// Plan the sweep from where the prior's inspections ended, bottom-up or top-down, whichever
-  /// end is nearer (false: bottom-up from the start cell).
+  /// Plan the sweep from where the prior's inspections ended, over the region's cells they did
+  /// not see, bottom-up or top-down, whichever end is nearer (false: the whole region bottom-up
+  /// from the start cell).
   bool nearer_sweep_end = true;
   /// Stop the prior's inspections (and sweep) once at least `prior_check_cells` of the prior's
   /// cells have been seen and fewer than this fraction of them were corroded (0: never).
