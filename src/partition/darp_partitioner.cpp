@@ -40,6 +40,9 @@ const Params<DarpOptions>& darp_params() {
     Params<DarpOptions> p("darp");
     p.integer("iteration-limit", &DarpOptions::iteration_limit, 1, 1'000'000,
               "iterations at the first tolerance; halves each time the tolerance grows")
+        .integer("work-budget", &DarpOptions::work_budget, 0, 1'000'000,
+                 "millions of (UAV, cell) evaluations per tolerance: caps the iterations at "
+                 "budget*1e6/(n*cells); 0 = no cap")
         .number("cc", &DarpOptions::cc, 0.0, 0.5,
                 "connectivity correction variation: factors in [1-cc, 1+cc]")
         .number("rl", &DarpOptions::rl, 0.0, 0.1, "random level: factors in [1-rl, 1+rl]")
@@ -71,6 +74,7 @@ DarpPartitioner::DarpPartitioner(DarpOptions options) : options_(options) {
     if (!ok) throw ParameterError(std::string("darp.") + name, problem);
   };
   check(options_.iteration_limit >= 1, "iteration-limit", "must be at least 1");
+  check(options_.work_budget >= 0, "work-budget", "must be at least 0");
   check(options_.cc >= 0 && options_.cc <= 0.5, "cc", "must be in [0, 0.5]");
   check(options_.rl >= 0 && options_.rl <= 0.1, "rl", "must be in [0, 0.1]");
   check(options_.max_discrepancy >= 0, "max-discrepancy", "must be at least 0");
@@ -136,6 +140,17 @@ Partition DarpPartitioner::partition(const PartitionRequest& request) const {
   int tolerance = divides_exactly(out.desired_weight, unit) ? 0 : 1;
   tolerance = std::min(tolerance, options_.max_discrepancy);
   int level_limit = options_.iteration_limit;
+  bool capped_by_budget = false;
+  if (options_.work_budget > 0) {
+    // An iteration evaluates every hull cell for every UAV; the budget bounds DARP's cost on
+    // large hulls and fleets, where it does not converge in any affordable number of iterations.
+    const double per_iteration = static_cast<double>(n) * hull.cell_count();
+    const double affordable = static_cast<double>(options_.work_budget) * 1e6 / per_iteration;
+    if (affordable < level_limit) {
+      level_limit = std::max(1, static_cast<int>(affordable));
+      capped_by_budget = true;
+    }
+  }
   int iterations = 0;
   bool converged = false;
   bool from_best = false;
@@ -187,9 +202,10 @@ Partition DarpPartitioner::partition(const PartitionRequest& request) const {
   out.tolerance = ws.best_connected_discrepancy();
   const bool repaired = connected_before_repair < 0 || out.tolerance < connected_before_repair;
   out.warnings.push_back(fmt::format(
-      "darp did not balance the regions within {} in {}; returned the best "
+      "darp did not balance the regions within {} in {}{}; returned the best "
       "connected partition found{} (largest imbalance {:g})",
       plural(options_.max_discrepancy, "cell"), plural(iterations, "iteration"),
+      capped_by_budget ? " (capped by darp.work-budget)" : "",
       repaired
           ? ", the best-balanced iterate with its stray pieces merged into neighbouring regions"
           : "",

@@ -100,13 +100,14 @@ TEST(ExperimentPlan, RunIdsAreStableAndUnique) {
                 "options=partition-seed=0;partitioner=darp;partitioner.cc=0.01;"
                 "partitioner.fairness-gain=1;partitioner.gain-growth=1.25;partitioner.gain-shrink="
                 "0.7;partitioner.iteration-limit=2000;partitioner.max-discrepancy=2;"
-                "partitioner.repair-fallback=true;partitioner.rl=0.0001;prior-statistics=true;"
-                "prior-weights=false");
+                "partitioner.repair-fallback=true;partitioner.rl=0.0001;partitioner.work-budget="
+                "200;prior-statistics=true;prior-weights=false");
   EXPECT_EQ(a.runs()[0].id, stable_id(a.cells()[0].canonical + "|seed=11"));
   EXPECT_EQ(a.config().hull_hash, "5f6762874a04fea0");
   // Effective options since the parameter system; changed on purpose when the lawnmower got the
-  // prior-aware partition options (issue 15; was ef3533719d160398).
-  EXPECT_EQ(a.runs()[0].id, "3e6eeea6eeb73ae0");
+  // prior-aware partition options (issue 15; was ef3533719d160398) and when DARP got its work
+  // budget (issue 16; was 3e6eeea6eeb73ae0).
+  EXPECT_EQ(a.runs()[0].id, "d8c2fa84a8527fd1");
 }
 
 TEST(ExperimentPlan, IdsDependOnTheirOwnCellOnly) {

@@ -321,11 +321,59 @@ TEST(Darp, BadRequestsAreRejected) {
                "weights: hull cell (40, 15) has weight -1; weights must be finite and > 0");
 }
 
+TEST(Darp, TheWorkBudgetCapsTheIterationsByUavsTimesCells) {
+  // The walled-in case never converges: it runs the whole schedule, so the iteration count shows
+  // the cap. 3 UAVs × 29 cells = 87 evaluations per iteration.
+  const auto corridor = text_hull(
+      "XXXXXXXX\n"
+      "XXXXXXXX\n"
+      "XXXXXXXX\n"
+      "XXXX....\n"
+      "X.......\n");
+  ASSERT_EQ(corridor.cell_count(), 29);
+  const auto walled = request_for(corridor, {{0, 1}, {0, 0}, {6, 3}}, 9);
+  DarpOptions o;
+  o.iteration_limit = 1'000'000;
+  o.work_budget = 1;  // 10⁶ / 87 = 11494 iterations at tolerance 1, then 5747 at tolerance 2
+  const Partition capped = DarpPartitioner(o).partition(walled);
+  expect_darp_contract(walled, capped, o);
+  EXPECT_EQ(capped.iterations, 11494 + 5747);
+  ASSERT_EQ(capped.warnings.size(), 1u);
+  EXPECT_NE(capped.warnings[0].find("in 17241 iterations (capped by darp.work-budget); returned"),
+            std::string::npos)
+      << capped.warnings[0];
+  // The iteration limit still applies when it is the smaller one; then the warning names no cap.
+  o.iteration_limit = 100;
+  const Partition limited = DarpPartitioner(o).partition(walled);
+  EXPECT_EQ(limited.iterations, 100 + 50);
+  EXPECT_EQ(limited.warnings.at(0).find("capped"), std::string::npos) << limited.warnings[0];
+  // 0 removes the cap.
+  o.iteration_limit = 20'000;
+  o.work_budget = 0;
+  EXPECT_EQ(DarpPartitioner(o).partition(walled).iterations, 20'000 + 10'000);
+}
+
+TEST(Darp, TheDefaultWorkBudgetLeavesThePaperScaleAlone) {
+  // 8 UAVs on the default hull (the paper's largest fleet): the budget allows more than the
+  // iteration limit, so the default run is the unbudgeted one, iteration for iteration.
+  const auto& hull = world::default_hull();
+  const auto request = request_for(hull, default_starts(hull, 8), 3);
+  DarpOptions unbudgeted;
+  unbudgeted.work_budget = 0;
+  const Partition with = DarpPartitioner().partition(request);
+  const Partition without = DarpPartitioner(unbudgeted).partition(request);
+  EXPECT_EQ(with.iterations, without.iterations);
+  EXPECT_EQ(with.owner, without.owner);
+  EXPECT_GT(200e6 / (8.0 * hull.cell_count()), DarpOptions{}.iteration_limit);
+}
+
 TEST(Darp, OptionsAreReadAndChecked) {
   const auto specs = partition::darp_option_specs();
-  ASSERT_EQ(specs.size(), 8u);
+  ASSERT_EQ(specs.size(), 9u);
   EXPECT_EQ(specs[0].name, "iteration-limit");
   EXPECT_EQ(specs[0].default_value, "2000");
+  EXPECT_EQ(specs[1].name, "work-budget");
+  EXPECT_EQ(specs[1].default_value, "200");
   const DarpOptions o = partition::read_darp_options({{"cc", "0.03"}, {"max-discrepancy", "4"}});
   EXPECT_EQ(o.cc, 0.03);
   EXPECT_EQ(o.max_discrepancy, 4);
