@@ -200,6 +200,11 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
                                          const sim::PlannerView& view) const {
   int best = -1;
   int best_d = std::numeric_limits<int>::max();
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
+  // Flight distances are symmetric (4-neighbour, unit steps), so one search from here gives every
+  // candidate's; copied, because claimed_by_other's searches may reuse the service's cache slot.
+  const bool searched = distances.has_no_fly();
+  if (searched) from_here_ = distances.field(pos);
   for (int i : hull_cells_) {
     if (view.map[i] != sim::kUnknown &&
         !(view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0)) {
@@ -208,8 +213,8 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
     if (!options_.help && partition_->owner[i] != k) continue;
     if (!reachable(k, i, world::kReachZ2) || claimed_by_other(k, i)) continue;
     const grid::Cell c = view.map.cell(i);
-    const int d =
-        uav_distances_[static_cast<std::size_t>(k)]->distance(pos, reach_position(k, pos, c, h2_));
+    const grid::Cell there = reach_position(k, pos, c, h2_);
+    const int d = searched ? from_here_[there] : grid::manhattan(pos, there);
     if (d < best_d) {
       best_d = d;
       best = i;

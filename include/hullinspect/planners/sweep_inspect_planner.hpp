@@ -155,6 +155,9 @@ class SweepInspectPlanner final : public Planner {
   std::vector<grid::DistanceService*> uav_distances_;  // per UAV: flights_.of(k)
   const grid::Grid<std::uint8_t>* reach_ = nullptr;    // null: no no-fly zones, all reachable
   std::vector<grid::Cell> positions_;                  // the UAVs' positions at this decision
+  /// Scratch of nearest_unknown: the distances from the deciding UAV's position, one search per
+  /// call (a distance() per candidate would search from every candidate cell).
+  mutable grid::Grid<int> from_here_;
   int width_ = 0;
   grid::Cell hull_cell(int index) const { return {index % width_, index / width_}; }
   int prior_true_ = 0;   // prior cells found corroded so far (fleet-wide)
