@@ -206,10 +206,7 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
   const bool searched = distances.has_no_fly();
   if (searched) from_here_ = distances.field(pos);
   for (int i : hull_cells_) {
-    if (view.map[i] != sim::kUnknown &&
-        !(view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0)) {
-      continue;
-    }
+    if (!unobserved(view, i)) continue;
     if (!options_.help && partition_->owner[i] != k) continue;
     if (!reachable(k, i, world::kReachZ2) || claimed_by_other(k, i)) continue;
     const grid::Cell c = view.map.cell(i);

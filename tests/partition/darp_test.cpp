@@ -42,6 +42,17 @@ world::HullMask text_hull(const std::string& rows) {
   return world::parse_text_mask(rows, "test");
 }
 
+// 29 cells; with starts (0, 1), (0, 0), (6, 3) UAV 1 sits in a dead end whose only hull
+// neighbour is UAV 0's start, so no balanced partition exists.
+world::HullMask walled_corridor() {
+  return text_hull(
+      "XXXXXXXX\n"
+      "XXXXXXXX\n"
+      "XXXXXXXX\n"
+      "XXXX....\n"
+      "X.......\n");
+}
+
 // What holds for every DARP result, converged or not.
 void expect_darp_contract(const PartitionRequest& request, const Partition& p,
                           const DarpOptions& o = {}, double unit = 1) {
@@ -208,12 +219,7 @@ TEST(Darp, OneCellWideBottleneck) {
 TEST(Darp, WalledInStartEndsInTheFallbackWithAWarning) {
   // UAV 1 starts in a dead-end cell whose only hull neighbour is UAV 0's start: its region can
   // never grow beyond one cell, so no tolerance up to max_discrepancy is reachable.
-  const auto corridor = text_hull(
-      "XXXXXXXX\n"
-      "XXXXXXXX\n"
-      "XXXXXXXX\n"
-      "XXXX....\n"
-      "X.......\n");
+  const auto corridor = walled_corridor();
   const auto walled = request_for(corridor, {{0, 1}, {0, 0}, {6, 3}}, 9);
   for (bool repair : {true, false}) {
     SCOPED_TRACE(repair);
@@ -324,12 +330,7 @@ TEST(Darp, BadRequestsAreRejected) {
 TEST(Darp, TheWorkBudgetCapsTheIterationsByUavsTimesCells) {
   // The walled-in case never converges: it runs the whole schedule, so the iteration count shows
   // the cap. 3 UAVs × 29 cells = 87 evaluations per iteration.
-  const auto corridor = text_hull(
-      "XXXXXXXX\n"
-      "XXXXXXXX\n"
-      "XXXXXXXX\n"
-      "XXXX....\n"
-      "X.......\n");
+  const auto corridor = walled_corridor();
   ASSERT_EQ(corridor.cell_count(), 29);
   const auto walled = request_for(corridor, {{0, 1}, {0, 0}, {6, 3}}, 9);
   DarpOptions o;

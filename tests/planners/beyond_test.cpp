@@ -33,22 +33,31 @@ MissionSpec spec_for(const std::string& algorithm, const std::string& scenario_n
   return spec;
 }
 
+/// A mission watched by the shared MissionChecker; `checked` is its verdict.
+sim::MissionResult run_checked(const MissionSpec& spec, const world::HullMask& hull,
+                               bool& checked) {
+  testing::MissionChecker checker;
+  MissionOptions options;
+  options.observers = {&checker};
+  sim::MissionResult result = run_mission(spec, hull, options);
+  checked = checker.ok();
+  return result;
+}
+
 TEST(Failures, PartTspLeavesAFailedUavsRegionUndoneAndReportsIncomplete) {
   const auto& hull = world::default_hull();
   for (const char* algorithm : {"part-tsp", "lawnmower"}) {
     auto spec = spec_for(algorithm, "perfect", 7, 4, 3);
     spec.failures.at = {{2, 40}};
-    testing::MissionChecker checker;
-    MissionOptions options;
-    options.observers = {&checker};
-    const auto r = run_mission(spec, hull, options);
+    bool checked = false;
+    const auto r = run_checked(spec, hull, checked);
     SCOPED_TRACE(algorithm);
     EXPECT_FALSE(r.complete);
     EXPECT_FALSE(r.t_m.has_value());
     EXPECT_TRUE(r.stopped_idle);  // ended when the working UAVs were done, not at the time limit
     EXPECT_LT(r.steps, spec.params.time_limit);
     EXPECT_EQ(r.failed_uavs, 1);
-    EXPECT_TRUE(checker.ok());
+    EXPECT_TRUE(checked);
   }
 }
 
@@ -144,14 +153,12 @@ TEST_P(SweepInspectMatrix, CompletesUnderTheCheckerWithAndWithoutFailures) {
       for (bool failure : {false, true}) {
         auto spec = spec_for("sweep-inspect", GetParam().scenario, GetParam().s2, n, seed);
         if (failure) spec.failures.one_within = 200;
-        testing::MissionChecker checker;
-        MissionOptions options;
-        options.observers = {&checker};
-        const auto r = run_mission(spec, hull, options);
+        bool checked = false;
+        const auto r = run_checked(spec, hull, checked);
         SCOPED_TRACE(::testing::Message() << GetParam().scenario << " s2=" << GetParam().s2 << " n="
                                           << n << " seed=" << seed << " failure=" << failure);
         ASSERT_TRUE(r.complete);  // with a failure: the others took over the failed UAV's work
-        EXPECT_TRUE(checker.ok());
+        EXPECT_TRUE(checked);
         EXPECT_EQ(r.failed_uavs, failure ? 1 : 0);
       }
     }
@@ -216,15 +223,13 @@ TEST(SweepInspect, TakeOverSweepSplitsAFailedUavsStripsAmongTheOthers) {
       with.failures.at = {{failed, 20}};
       auto without = with;
       without.planner_options = {{"take-over-sweep", "false"}};
-      testing::MissionChecker checker;
-      MissionOptions options;
-      options.observers = {&checker};
-      const auto a = run_mission(with, hull, options);
+      bool checked = false;
+      const auto a = run_checked(with, hull, checked);
       const auto b = run_mission(without, hull);
       SCOPED_TRACE(::testing::Message() << "UAV " << failed << " fails, seed " << seed);
       ASSERT_TRUE(a.complete);
       ASSERT_TRUE(b.complete);
-      EXPECT_TRUE(checker.ok());
+      EXPECT_TRUE(checked);
       EXPECT_LT(*a.t_m, *b.t_m);
       t_c_with += *a.t_c;
       t_c_without += *b.t_c;
@@ -251,13 +256,11 @@ TEST(SweepInspect, TakeOverSweepStaysInsideAFlightPart) {
     auto spec = spec_for("sweep-inspect", "imperfect", 7, 4, 3);
     spec.params.no_fly = wall;
     spec.failures.at = {{failed, 30}};
-    testing::MissionChecker checker;
-    MissionOptions options;
-    options.observers = {&checker};
-    const auto r = run_mission(spec, hull, options);
+    bool checked = false;
+    const auto r = run_checked(spec, hull, checked);
     SCOPED_TRACE(::testing::Message() << "UAV " << failed << " fails");
     ASSERT_TRUE(r.complete);
-    EXPECT_TRUE(checker.ok());
+    EXPECT_TRUE(checked);
     EXPECT_LE(*r.t_m, 2 * *failure_free.t_m);
   }
 }
@@ -279,16 +282,14 @@ TEST(SweepInspect, SharePriorBalancesThePriorsTours) {
           if (failure) with.failures.at = {{1, 30}};
           auto without = with;
           without.planner_options = {{"share-prior", "false"}};
-          testing::MissionChecker checker;
-          MissionOptions options;
-          options.observers = {&checker};
-          const auto a = run_mission(with, hull, options);
+          bool checked = false;
+          const auto a = run_checked(with, hull, checked);
           const auto b = run_mission(without, hull);
           SCOPED_TRACE(::testing::Message()
                        << scenario << " n=" << n << " seed=" << seed << " failure=" << failure);
           ASSERT_TRUE(a.complete);
           ASSERT_TRUE(b.complete);
-          EXPECT_TRUE(checker.ok());
+          EXPECT_TRUE(checked);
           with_sum += *a.t_c;
           without_sum += *b.t_c;
         }
@@ -305,12 +306,10 @@ TEST(SweepInspect, ASmallInspectionRadiusStillCompletes) {
     auto spec = spec_for("sweep-inspect", "imperfect", 7, 4, 1);
     spec.planner_options = {{"radius-factor", factor}};
     spec.params.time_limit = 3000;
-    testing::MissionChecker checker;
-    MissionOptions options;
-    options.observers = {&checker};
-    const auto r = run_mission(spec, world::default_hull(), options);
+    bool checked = false;
+    const auto r = run_checked(spec, world::default_hull(), checked);
     EXPECT_TRUE(r.complete) << factor;
-    EXPECT_TRUE(checker.ok()) << factor;
+    EXPECT_TRUE(checked) << factor;
   }
 }
 
@@ -373,13 +372,11 @@ TEST(SweepInspect, WithoutHelpAFailedUavsRegionStaysUndone) {
   auto spec = spec_for("sweep-inspect", "perfect", 7, 4, 2);
   spec.planner_options = {{"help", "false"}, {"take-over-sweep", "false"}};
   spec.failures.at = {{1, 30}};
-  testing::MissionChecker checker;
-  MissionOptions options;
-  options.observers = {&checker};
-  const auto r = run_mission(spec, world::default_hull(), options);
+  bool checked = false;
+  const auto r = run_checked(spec, world::default_hull(), checked);
   EXPECT_FALSE(r.complete);
   EXPECT_TRUE(r.stopped_idle);
-  EXPECT_TRUE(checker.ok());
+  EXPECT_TRUE(checked);
 }
 
 }  // namespace
