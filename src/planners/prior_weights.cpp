@@ -41,22 +41,31 @@ CorrosionOdds corrosion_odds(const world::CorrosionZone& zone, double p_tp, doub
   return odds;
 }
 
+namespace {
+/// The odds of the instance generator's zone of every column (one zone when unknown); the
+/// default odds ({1, 0}: a prior cell is corroded, no other) without statistics.
+std::vector<CorrosionOdds> column_odds(const PlannerContext& context, bool use_statistics) {
+  const int width = context.hull.width();
+  std::vector<CorrosionOdds> column(static_cast<std::size_t>(width), CorrosionOdds{});
+  if (use_statistics && context.corrosion != nullptr) {
+    const world::CorrosionParams& c = *context.corrosion;
+    const std::vector<world::CorrosionZone> zones =
+        c.zones.empty() ? std::vector<world::CorrosionZone>{{0, width}} : c.zones;
+    for (const auto& zone : zones) {
+      const CorrosionOdds odds = corrosion_odds(zone, c.p_tp, c.p_fp);
+      for (int x = std::max(0, zone.x_begin); x < std::min(width, zone.x_end); ++x)
+        column[static_cast<std::size_t>(x)] = odds;
+    }
+  }
+  return column;
+}
+}  // namespace
+
 grid::Grid<double> prior_work_weights(const PlannerContext& context, bool use_statistics) {
   const auto& hull = context.hull;
   const auto& p = context.params;
   const double ratio = static_cast<double>(p.s2) / p.s1;
-  // Odds per column: the zone of the instance generator that holds it (one zone when unknown).
-  std::vector<CorrosionOdds> column(static_cast<std::size_t>(hull.width()), CorrosionOdds{});
-  if (use_statistics && context.corrosion != nullptr) {
-    const world::CorrosionParams& c = *context.corrosion;
-    const std::vector<world::CorrosionZone> zones =
-        c.zones.empty() ? std::vector<world::CorrosionZone>{{0, hull.width()}} : c.zones;
-    for (const auto& zone : zones) {
-      const CorrosionOdds odds = corrosion_odds(zone, c.p_tp, c.p_fp);
-      for (int x = std::max(0, zone.x_begin); x < std::min(hull.width(), zone.x_end); ++x)
-        column[static_cast<std::size_t>(x)] = odds;
-    }
-  }
+  const std::vector<CorrosionOdds> column = column_odds(context, use_statistics);
   grid::Grid<double> weights(hull.width(), hull.height(), 0.0);
   for (int i : hull.cells()) {
     const CorrosionOdds& odds = column[static_cast<std::size_t>(i % hull.width())];
@@ -64,6 +73,19 @@ grid::Grid<double> prior_work_weights(const PlannerContext& context, bool use_st
     weights[i] = 1.0 + corroded * ratio;
   }
   return weights;
+}
+
+double expected_prior_precision(const PlannerContext& context) {
+  if (context.corrosion == nullptr) return -1.0;
+  const std::vector<CorrosionOdds> column = column_odds(context, true);
+  double sum = 0.0;
+  int cells = 0;
+  for (int i : context.hull.cells()) {
+    if (context.prior[i] != 1) continue;
+    sum += column[static_cast<std::size_t>(i % context.hull.width())].in_prior;
+    ++cells;
+  }
+  return cells == 0 ? -1.0 : sum / cells;
 }
 
 void add_prior_weights(partition::PartitionRequest& request, const PlannerContext& context,

@@ -103,6 +103,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
               "seen so far were corroded (0: never)")
       .integer("prior-check-cells", &SweepInspectOptions::prior_check_cells, 1, 1000000,
                "prior cells to see before prior-trust applies")
+      .flag("trust-statistics", &SweepInspectOptions::trust_statistics,
+            "drop the prior at the start when the scenario's statistics make fewer than "
+            "prior-trust of its cells corroded on average")
       .flag("take-over-prior", &SweepInspectOptions::take_over_prior,
             "a failed UAV's prior cells go at once to the nearest working UAV (false: they wait "
             "for the helpers)")
@@ -116,6 +119,20 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "left that makes the two end earliest (false: each tours its region's prior cells)")
       .flag("yield-claims", &SweepInspectOptions::yield_claims,
             "a claimed target goes to a UAV nearer to it than its claimer (false: claims hold)")
+      .choice(
+          "strips", &SweepInspectOptions::strips,
+          [] {
+            return std::vector<std::string>{"rows", "columns", "auto"};
+          },
+          "the sweep's bands of s2 cells: rows (flown along the hull), columns (flown up "
+          "and down its height) or auto (per region, whichever is the shorter flight)")
+      .flag("trim-strip-ends", &SweepInspectOptions::trim_strip_ends,
+            "fly a band only as far as the footprint needs to reach its ends")
+      .flag("follow-clusters", &SweepInspectOptions::follow_clusters,
+            "at z = 1 also look at the unobserved cells beside inspected ones (within the "
+            "inspection radius) before climbing")
+      .flag("skip-seen-bands", &SweepInspectOptions::skip_seen_bands,
+            "skip the rest of a band whose cells have all been observed already")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <limits>
 
-#include "hullinspect/planners/lawnmower_planner.hpp"
 #include "hullinspect/planners/prior_weights.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
@@ -55,6 +54,16 @@ void split_in_slabs(const std::vector<int>& cells, int width,
   split(hi, true);
 }
 
+/// Manhattan length of a flight from `from` through `waypoints`.
+int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints) {
+  int length = 0;
+  for (const grid::Cell w : waypoints) {
+    length += grid::manhattan(from, w);
+    from = w;
+  }
+  return length;
+}
+
 /// Not yet observed: unknown, or expected corroded by the prior and not yet seen.
 bool unobserved(const sim::PlannerView& view, int i) {
   return view.map[i] == sim::kUnknown || (view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0);
@@ -84,7 +93,18 @@ sim::Action SweepInspectPlanner::step(int k, grid::Cell pos, grid::Cell to) cons
 std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::int16_t>& owner,
                                                          int k, grid::Cell from) {
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
-  auto waypoints = LawnmowerPlanner::sweep(owner, k, h2_ * 2 + 1, from);
+  BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
+  axis = options_.strips == "columns" ? BandAxis::kColumns : BandAxis::kRows;
+  auto waypoints = band_sweep(owner, k, h2_ * 2 + 1, axis, options_.trim_strip_ends, from);
+  if (options_.strips == "auto") {
+    // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
+    auto columns =
+        band_sweep(owner, k, h2_ * 2 + 1, BandAxis::kColumns, options_.trim_strip_ends, from);
+    if (flight_length(from, columns) < flight_length(from, waypoints)) {
+      waypoints = std::move(columns);
+      axis = BandAxis::kColumns;
+    }
+  }
   if (reach_ != nullptr) {
     // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
     // the flight between waypoints goes around no-fly positions, and whatever the strips then
@@ -137,7 +157,10 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
     uav.sweep.set_distances(uav_distances_[static_cast<std::size_t>(k)]);
   }
   prior_.assign(static_cast<std::size_t>(n), {});
-  if (options_.prior_first) {
+  const double precision = expected_prior_precision(context);
+  prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
+                   precision < options_.prior_trust;
+  if (options_.prior_first && !prior_dropped_) {
     for (int i : context.hull.cells()) {
       const int owner = partition_->owner[i];
       if (context.prior[i] == 1 && reachable(owner, i, world::kReachZ1))
@@ -215,6 +238,39 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
     if (d < best_d) {
       best_d = d;
       best = i;
+    }
+  }
+  return best;
+}
+
+int SweepInspectPlanner::nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
+                                              const sim::PlannerView& view) const {
+  // Corrosion comes in rectangles: an unobserved cell beside an inspected one is likely corroded
+  // too, and looking at it now from z = 1 costs a step or two, against a climb, a descent and a
+  // flight back when the sweep detects it later.
+  const auto& map = view.map;
+  int best = -1;
+  int best_d = std::numeric_limits<int>::max();
+  const int x_lo = std::max(0, around.x - radius);
+  const int x_hi = std::min(map.width() - 1, around.x + radius);
+  const int y_lo = std::max(0, around.y - radius);
+  const int y_hi = std::min(map.height() - 1, around.y + radius);
+  for (int y = y_lo; y <= y_hi; ++y) {
+    for (int x = x_lo; x <= x_hi; ++x) {
+      const int i = map.index(x, y);
+      if (!unobserved(view, i)) continue;
+      const bool beside = (x > 0 && map(x - 1, y) == sim::kInspected) ||
+                          (x + 1 < map.width() && map(x + 1, y) == sim::kInspected) ||
+                          (y > 0 && map(x, y - 1) == sim::kInspected) ||
+                          (y + 1 < map.height() && map(x, y + 1) == sim::kInspected);
+      if (!beside || !reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+      const grid::Cell c{x, y};
+      const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
+          pos, reach_position(k, pos, c, h1_));
+      if (d < best_d) {
+        best_d = d;
+        best = i;
+      }
     }
   }
   return best;
@@ -354,17 +410,22 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       }
       if (p.mode == Mode::kReturn && u.pos == p.resume) p.mode = Mode::kSweep;
       if (p.mode == Mode::kSweep && options_.inspect_on_the_way) {
-        // Descend when a detected cell is abreast: its column within reach of the z = 1 footprint.
+        // Descend when a detected cell is abreast: its position along the band within reach of
+        // the z = 1 footprint (across it, within the band's width).
+        const bool rows = p.axis == BandAxis::kRows;
         for (int i : pending_) {
           const grid::Cell c = view.map.cell(i);
-          if (std::abs(c.x - u.pos.x) <= h1_ && std::abs(c.y - u.pos.y) <= h2_ &&
-              reachable(k, i, world::kReachZ1) && !claimed_by_other(k, i)) {
+          const int along = rows ? std::abs(c.x - u.pos.x) : std::abs(c.y - u.pos.y);
+          const int across = rows ? std::abs(c.y - u.pos.y) : std::abs(c.x - u.pos.x);
+          if (along <= h1_ && across <= h2_ && reachable(k, i, world::kReachZ1) &&
+              !claimed_by_other(k, i)) {
             p.resume = u.pos;
             return sim::Action::kChangePlane;
           }
         }
       }
       if (p.mode == Mode::kReturn) return step(k, u.pos, p.resume);
+      if (options_.skip_seen_bands) skip_seen_bands(p, u.pos, view);
       const sim::Action a = p.sweep.next_action(u.pos);
       if (a != sim::Action::kHover) return a;
       p.mode = Mode::kHelp;
@@ -391,10 +452,12 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       p.target_cell = -1;
       return u.pos == p.resume ? decide_uav(k, u, view) : step(k, u.pos, p.resume);
     }
-    const int cell = nearest_pending(k, u.pos, p.resume, radius_, view);
+    int cell = nearest_pending(k, u.pos, p.resume, radius_, view);
+    if (cell < 0 && options_.follow_clusters)
+      cell = nearest_cluster_edge(k, u.pos, p.resume, radius_, view);
     p.target_cell = cell;
     if (cell < 0) {
-      if (options_.resume_ahead) p.resume = rejoin_point(k, p, u.pos);
+      if (options_.resume_ahead) p.resume = rejoin_point(k, p, u.pos, view);
       return sim::Action::kChangePlane;
     }
     p.target = reach_position(k, u.pos, view.map.cell(cell), h1_);
@@ -619,17 +682,81 @@ void SweepInspectPlanner::balance_prior_tours(std::span<const grid::Cell> starts
   }
 }
 
-grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos) const {
-  // From the point where it left the strip (on the strip's flight row, at z = 2) the UAV saw the
-  // whole strip band up to h2 columns ahead; so it may rejoin anywhere up to there without
-  // leaving a gap — as far ahead as it now is, towards the strip end it is flying to.
+grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos,
+                                             const sim::PlannerView& view) const {
+  // From the point where it left the strip (on the strip's centre line, at z = 2) the UAV saw the
+  // strip band up to h2 cells ahead, and on the way below it saw more of it; from a point r of the
+  // centre line the footprint sees h2 cells behind r. So it may rejoin at any r, towards the strip
+  // end it is flying to, up to where it now is, that leaves no cell of the band between the two
+  // footprints unobserved.
   const grid::Cell end = p.sweep.target();
-  if (end.y != p.resume.y || end.x == p.resume.x) return p.resume;
-  const int dir = end.x > p.resume.x ? 1 : -1;
-  const int ahead =
-      std::min({std::max(0, dir * (pos.x - p.resume.x)), h2_, std::abs(end.x - p.resume.x)});
-  const grid::Cell rejoin{p.resume.x + dir * ahead, p.resume.y};
-  return uav_distances_[static_cast<std::size_t>(k)]->allowed(rejoin) ? rejoin : p.resume;
+  const bool rows = p.axis == BandAxis::kRows;
+  const int end_along = rows ? end.x : end.y;
+  const int resume_along = rows ? p.resume.x : p.resume.y;
+  const int line = rows ? p.resume.y : p.resume.x;
+  if ((rows ? end.y : end.x) != line || end_along == resume_along) return p.resume;
+  const int dir = end_along > resume_along ? 1 : -1;
+  const int reach = std::min(std::max(0, dir * ((rows ? pos.x : pos.y) - resume_along)),
+                             std::abs(end_along - resume_along));
+  const auto& map = view.map;
+  const int across_size = rows ? map.height() : map.width();
+  int ahead = 0;
+  for (int r = 1; r <= reach; ++r) {
+    // The band's cells across at `along`, just behind r's footprint, must have been observed.
+    const int along = resume_along + dir * (r - h2_ - 1);
+    if (r > 2 * h2_ + 1) {
+      bool gap = false;
+      for (int a = std::max(0, line - h2_); a <= std::min(across_size - 1, line + h2_); ++a) {
+        const int i = rows ? map.index(along, a) : map.index(a, along);
+        if (map[i] != sim::kNotHull && unobserved(view, i)) gap = true;
+      }
+      if (gap) break;
+    }
+    const grid::Cell candidate =
+        rows ? grid::Cell{resume_along + dir * r, line} : grid::Cell{line, resume_along + dir * r};
+    if (uav_distances_[static_cast<std::size_t>(k)]->allowed(candidate)) ahead = r;
+  }
+  return rows ? grid::Cell{resume_along + dir * ahead, line}
+              : grid::Cell{line, resume_along + dir * ahead};
+}
+
+bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b,
+                                              const sim::PlannerView& view) const {
+  const auto& map = view.map;
+  const int x_lo = std::max(0, std::min(a.x, b.x) - h2_);
+  const int x_hi = std::min(map.width() - 1, std::max(a.x, b.x) + h2_);
+  const int y_lo = std::max(0, std::min(a.y, b.y) - h2_);
+  const int y_hi = std::min(map.height() - 1, std::max(a.y, b.y) + h2_);
+  for (int y = y_lo; y <= y_hi; ++y) {
+    for (int x = x_lo; x <= x_hi; ++x) {
+      if (unobserved(view, map.index(x, y))) return true;
+    }
+  }
+  return false;
+}
+
+void SweepInspectPlanner::skip_seen_bands(Uav& p, grid::Cell pos,
+                                          const sim::PlannerView& view) const {
+  // The waypoints come in pairs, the two ends of a band, on one line. The leg being flown (from
+  // here, on the band's line, to its end) and each following band are dropped while their
+  // footprints would see nothing new: a helper or an inspection saw those cells already.
+  for (;;) {
+    const auto left = p.sweep.remaining();
+    if (left.empty()) return;
+    const grid::Cell end = left.front();
+    const bool on_line = (p.axis == BandAxis::kRows) ? pos.y == end.y : pos.x == end.x;
+    if (on_line && pos != end) {
+      if (leg_sees_unobserved(pos, end, view)) return;
+      p.sweep.skip(1);
+      continue;
+    }
+    // Flying to a band's first end: skip the whole band when it would see nothing.
+    if (left.size() < 2) return;
+    const grid::Cell other = left[1];
+    const bool band = (p.axis == BandAxis::kRows) ? end.y == other.y : end.x == other.x;
+    if (!band || leg_sees_unobserved(end, other, view)) return;
+    p.sweep.skip(2);
+  }
 }
 
 bool SweepInspectPlanner::idle(const sim::PlannerView& view) const {

@@ -35,6 +35,11 @@ CorrosionOdds corrosion_odds(const world::CorrosionZone& zone, double p_tp, doub
 /// `use_statistics` and it is known; otherwise a prior cell is corroded and no other is.
 grid::Grid<double> prior_work_weights(const PlannerContext& context, bool use_statistics);
 
+/// The mean of P(C = 1 | C' = 1) over the prior's cells from `context.corrosion` (what a cell of
+/// the prior is worth, by the statistics the instance was drawn with); −1 when the statistics are
+/// unknown (a user's prior map) or the prior is empty.
+double expected_prior_precision(const PlannerContext& context);
+
 /// Sets `request.weights` when `prior_weights` (else leaves them empty: uniform).
 void add_prior_weights(partition::PartitionRequest& request, const PlannerContext& context,
                        bool prior_weights, bool prior_statistics);

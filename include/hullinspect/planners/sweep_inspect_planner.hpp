@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/planners/waypoint_follower.hpp"
@@ -38,6 +39,9 @@ struct SweepInspectOptions {
   /// cells have been seen and fewer than this fraction of them were corroded (0: never).
   double prior_trust = 0.8;
   int prior_check_cells = 10;
+  /// Drop the prior at the start when the scenario's statistics (p_C, l_C, p_TP, p_FP) make fewer
+  /// than `prior_trust` of its cells corroded on average, instead of finding it out on a tour.
+  bool trust_statistics = true;
   /// A failed UAV's prior cells go at once to the nearest working UAV, which interrupts its sweep
   /// for them (false: they wait for the helpers, after their sweeps).
   bool take_over_prior = true;
@@ -52,6 +56,18 @@ struct SweepInspectOptions {
   bool share_prior = true;
   /// A claimed target goes to a UAV nearer to it than its claimer (false: claims hold).
   bool yield_claims = true;
+  /// The sweep's bands: "rows" (s2 rows from the grid's bottom, flown along the hull) or
+  /// "columns" (s2 columns from the region's leftmost, flown up and down the hull's height).
+  std::string strips = "auto";
+  /// Fly a band only as far as the footprint needs to reach its ends (false: end cell to end cell).
+  bool trim_strip_ends = true;
+  /// At z = 1, before climbing, also look at the unobserved cells next to a cell it inspected
+  /// (a corrosion rectangle going on beyond what was seen) within the inspection radius, instead
+  /// of climbing and descending again for its next rows.
+  bool follow_clusters = true;
+  /// While sweeping, skip the rest of a band whose cells (within the footprint of what is left of
+  /// it) have all been observed already — by a helper, or on the way of an inspection.
+  bool skip_seen_bands = true;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -74,16 +90,22 @@ class SweepInspectPlanner final : public Planner {
     bool sweep_planned = false;       // its sweep was planned (it left the prior's cells once)
     Mode after_prior = Mode::kSweep;  // where to go on when prior cells handed over are done
     bool replan = false;              // its cells were re-split (a failure): plan strips anew
+    BandAxis axis = BandAxis::kRows;  // the direction of its sweep's bands
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
   /// radius when radius < 0), not claimed by another UAV; −1 if none.
   int nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
                       const sim::PlannerView& view) const;
+  /// follow-clusters: the nearest unobserved cell with an inspected 4-neighbour within Chebyshev
+  /// radius `radius` of `around`, seen from z = 1 by UAV k; −1 if none.
+  int nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
+                           const sim::PlannerView& view) const;
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
   bool prior_distrusted() const {
+    if (prior_dropped_) return true;
     const int seen = prior_true_ + prior_false_;
     return options_.prior_trust > 0 && seen >= options_.prior_check_cells &&
            prior_true_ < options_.prior_trust * seen;
@@ -118,8 +140,13 @@ class SweepInspectPlanner final : public Planner {
   /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
   /// True when some cells were handed over.
   bool hand_over_prior(const sim::PlannerView& view);
+  /// skip-seen-bands: drops the follower's waypoints of UAV k's band legs ahead of `pos` whose
+  /// footprints would see no unobserved cell.
+  void skip_seen_bands(Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
+  /// Whether a flight at z = 2 along one band line from `a` to `b` would see an unobserved cell.
+  bool leg_sees_unobserved(grid::Cell a, grid::Cell b, const sim::PlannerView& view) const;
   /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
-  grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos) const;
+  grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
   /// footprint square); with no-fly zones, when that is not flyable by UAV k, the viewpoint of c
   /// in UAV k's service (kNoCell when its part of the flight space has none).
@@ -160,8 +187,9 @@ class SweepInspectPlanner final : public Planner {
   mutable grid::Grid<int> from_here_;
   int width_ = 0;
   grid::Cell hull_cell(int index) const { return {index % width_, index / width_}; }
-  int prior_true_ = 0;   // prior cells found corroded so far (fleet-wide)
-  int prior_false_ = 0;  // prior cells found clean so far
+  bool prior_dropped_ = false;  // trust-statistics: the prior is not worth a tour
+  int prior_true_ = 0;          // prior cells found corroded so far (fleet-wide)
+  int prior_false_ = 0;         // prior cells found clean so far
   int h1_ = 2;
   int h2_ = 3;
   int radius_ = 7;

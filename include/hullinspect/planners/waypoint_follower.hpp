@@ -27,13 +27,18 @@ class WaypointFollower {
     if (distances_ == nullptr) return sim::step_towards(pos, waypoints_[next_]);
     return sim::step_towards(pos, distances_->next_step(pos, waypoints_[next_]));
   }
+  /// Drops the next `count` waypoints not yet reached.
+  void skip(std::size_t count) { next_ = std::min(waypoints_.size(), next_ + count); }
   bool finished(grid::Cell pos) const {
-    return next_ >= waypoints_.size() || (next_ + 1 == waypoints_.size() && waypoints_[next_] == pos);
+    return next_ >= waypoints_.size() ||
+           (next_ + 1 == waypoints_.size() && waypoints_[next_] == pos);
   }
   std::span<const grid::Cell> remaining() const {
     return std::span<const grid::Cell>(waypoints_).subspan(std::min(next_, waypoints_.size()));
   }
-  grid::Cell target() const { return next_ < waypoints_.size() ? waypoints_[next_] : grid::Cell{-1, -1}; }
+  grid::Cell target() const {
+    return next_ < waypoints_.size() ? waypoints_[next_] : grid::Cell{-1, -1};
+  }
 
  private:
   std::vector<grid::Cell> waypoints_;

@@ -1,0 +1,27 @@
+#pragma once
+// The detection-plane sweep of Sweep-Inspect (docs/beyond.md): a boustrophedon over one UAV's cells
+// in bands of s cells, flown along each band's centre line only as far as the footprint needs.
+
+#include <cstdint>
+#include <vector>
+
+#include "hullinspect/grid/grid.hpp"
+
+namespace hullinspect::planners {
+
+enum class BandAxis {
+  kRows,     ///< bands of s rows from the grid's bottom, flown along x (the lawnmower's pattern)
+  kColumns,  ///< bands of s columns from the region's leftmost column, flown along y
+};
+
+/// The waypoints of a sweep at footprint side `s` (odd) over the cells where `owner` is `uav`,
+/// from `from`: one band after the other (in order along the band axis), each flown along its
+/// centre line from its nearer end. With `trim_ends` a band is flown only between the first and
+/// last positions whose footprint (half-width (s − 1)/2) reaches its extent, instead of from end
+/// cell to end cell: on the default hull's 30 rows a column band is then 23 moves long, not 29.
+/// Column bands start at the region's leftmost column, so that a region of width w needs
+/// ceil(w / s) of them. Returns no waypoints when the UAV owns no cell.
+std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
+                                   BandAxis axis, bool trim_ends, grid::Cell from);
+
+}  // namespace hullinspect::planners

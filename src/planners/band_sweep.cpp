@@ -1,0 +1,70 @@
+#include "hullinspect/planners/band_sweep.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace hullinspect::planners {
+
+namespace {
+struct Extent {
+  int lo = std::numeric_limits<int>::max();  // along the band
+  int hi = -1;
+};
+}  // namespace
+
+std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
+                                   BandAxis axis, bool trim_ends, grid::Cell from) {
+  const bool rows = axis == BandAxis::kRows;
+  const int across_size = rows ? owner.height() : owner.width();
+  // "along" runs along a band (x for row bands), "across" from band to band.
+  const auto along = [rows](int x, int y) { return rows ? x : y; };
+  const auto across = [rows](int x, int y) { return rows ? y : x; };
+  // Row bands start at the grid's bottom (as the lawnmower's strips); column bands at the
+  // region's leftmost column, so a region w columns wide needs ceil(w / s) of them.
+  int origin = rows ? 0 : std::numeric_limits<int>::max();
+  if (!rows) {
+    for (int y = 0; y < owner.height(); ++y) {
+      for (int x = 0; x < owner.width(); ++x) {
+        if (owner(x, y) == uav) origin = std::min(origin, x);
+      }
+    }
+    if (origin == std::numeric_limits<int>::max()) return {};
+  }
+  std::vector<Extent> bands(static_cast<std::size_t>((across_size - origin + s - 1) / s));
+  for (int y = 0; y < owner.height(); ++y) {
+    for (int x = 0; x < owner.width(); ++x) {
+      if (owner(x, y) != uav) continue;
+      Extent& e = bands[static_cast<std::size_t>((across(x, y) - origin) / s)];
+      e.lo = std::min(e.lo, along(x, y));
+      e.hi = std::max(e.hi, along(x, y));
+    }
+  }
+  const int h = (s - 1) / 2;
+  const auto cell = [rows](int along_at, int across_at) {
+    return rows ? grid::Cell{along_at, across_at} : grid::Cell{across_at, along_at};
+  };
+  std::vector<grid::Cell> waypoints;
+  grid::Cell at = from;
+  for (std::size_t j = 0; j < bands.size(); ++j) {
+    const Extent& e = bands[j];
+    if (e.hi < 0) continue;
+    // The footprint of a position on the centre line holds the whole band's width.
+    const int centre = std::min(origin + static_cast<int>(j) * s + h, across_size - 1);
+    int lo = e.lo;
+    int hi = e.hi;
+    if (trim_ends) {
+      // Its footprint reaches h cells beyond the position along the band as well.
+      lo = e.lo + h <= e.hi - h ? e.lo + h : (e.lo + e.hi) / 2;
+      hi = e.lo + h <= e.hi - h ? e.hi - h : lo;
+    }
+    grid::Cell first = cell(lo, centre);
+    grid::Cell last = cell(hi, centre);
+    if (grid::manhattan(at, last) < grid::manhattan(at, first)) std::swap(first, last);
+    waypoints.push_back(first);
+    if (last != first) waypoints.push_back(last);
+    at = last;
+  }
+  return waypoints;
+}
+
+}  // namespace hullinspect::planners
