@@ -1,0 +1,102 @@
+// The detection-plane sweep of Sweep-Inspect (planners/band_sweep.hpp): every owned cell lies in
+// the footprint of some position flown along a band, for both band directions, trimmed or not;
+// trimming only shortens the flight; exact waypoints on a small region.
+#include "hullinspect/planners/band_sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "hullinspect/partition/partitioner.hpp"
+#include "hullinspect/world/hull.hpp"
+
+namespace hullinspect::planners {
+namespace {
+
+int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints) {
+  int length = 0;
+  for (const grid::Cell w : waypoints) {
+    length += grid::manhattan(from, w);
+    from = w;
+  }
+  return length;
+}
+
+/// Cells of `owner == uav` that no position of the flown bands sees (footprint half-width h): a
+/// band is a pair of consecutive waypoints on one line; a one-waypoint band is a point.
+int unseen_cells(const grid::Grid<std::int16_t>& owner, int uav, int h, grid::Cell from,
+                 const std::vector<grid::Cell>& waypoints) {
+  grid::Grid<std::uint8_t> seen(owner.width(), owner.height(), 0);
+  const auto see = [&](grid::Cell p) {
+    for (int y = std::max(0, p.y - h); y <= std::min(owner.height() - 1, p.y + h); ++y)
+      for (int x = std::max(0, p.x - h); x <= std::min(owner.width() - 1, p.x + h); ++x)
+        seen(x, y) = 1;
+  };
+  // Every position of the flight: straight legs between consecutive points, x then y.
+  grid::Cell at = from;
+  for (const grid::Cell w : waypoints) {
+    while (at != w) {
+      see(at);
+      if (at.x != w.x) {
+        at.x += w.x > at.x ? 1 : -1;
+      } else {
+        at.y += w.y > at.y ? 1 : -1;
+      }
+    }
+    see(at);
+  }
+  int unseen = 0;
+  for (int y = 0; y < owner.height(); ++y)
+    for (int x = 0; x < owner.width(); ++x) unseen += owner(x, y) == uav && seen(x, y) == 0;
+  return unseen;
+}
+
+TEST(BandSweep, EveryOwnedCellIsSeenForBothDirectionsTrimmedOrNot) {
+  const auto& hull = world::default_hull();
+  for (int n : {1, 3, 4, 8}) {
+    partition::PartitionRequest request;
+    request.hull = &hull;
+    for (int k = 0; k < n; ++k)
+      request.starts.push_back({(2 * k + 1) * hull.width() / (2 * n), 15});
+    const auto partition = partition::make_partitioner("transfer", {})->partition(request);
+    for (int s : {3, 5, 7, 9, 11}) {
+      for (const BandAxis axis : {BandAxis::kRows, BandAxis::kColumns}) {
+        for (int k = 0; k < n; ++k) {
+          const grid::Cell from = request.starts[static_cast<std::size_t>(k)];
+          const auto full = band_sweep(partition.owner, k, s, axis, false, from);
+          const auto trimmed = band_sweep(partition.owner, k, s, axis, true, from);
+          SCOPED_TRACE(::testing::Message() << "n=" << n << " s=" << s << " uav=" << k
+                                            << " columns=" << (axis == BandAxis::kColumns));
+          EXPECT_EQ(unseen_cells(partition.owner, k, (s - 1) / 2, from, full), 0);
+          EXPECT_EQ(unseen_cells(partition.owner, k, (s - 1) / 2, from, trimmed), 0);
+          EXPECT_LE(flight_length(from, trimmed), flight_length(from, full));
+        }
+      }
+    }
+  }
+}
+
+TEST(BandSweep, ColumnBandsOfARectangleStartAtItsLeftEdgeAndAreTrimmed) {
+  // A 10 × 9 region at x = 4…13, y = 0…8 in a 20 × 9 grid; s = 3: bands x = 4–6, 7–9, 10–12 and
+  // 13 (ceil(10 / 3) = 4), flown at x = 5, 8, 11, 14 — the last clamped to the band's centre
+  // x = 13 + 1 — between y = 1 and 7 when trimmed (0 … 8 untrimmed).
+  grid::Grid<std::int16_t> owner(20, 9, -1);
+  for (int y = 0; y < 9; ++y)
+    for (int x = 4; x <= 13; ++x) owner(x, y) = 0;
+  const auto trimmed = band_sweep(owner, 0, 3, BandAxis::kColumns, true, {4, 0});
+  const std::vector<grid::Cell> expected{{5, 1},  {5, 7},  {8, 7},  {8, 1},
+                                         {11, 1}, {11, 7}, {14, 7}, {14, 1}};
+  EXPECT_EQ(trimmed, expected);
+  const auto full = band_sweep(owner, 0, 3, BandAxis::kColumns, false, {4, 0});
+  EXPECT_EQ(full.front(), (grid::Cell{5, 0}));
+  EXPECT_EQ(full[1], (grid::Cell{5, 8}));
+  // Rows: bands y = 0–2, 3–5, 6–8 at y = 1, 4, 7; trimmed between x = 5 and 12.
+  const auto rows = band_sweep(owner, 0, 3, BandAxis::kRows, true, {4, 0});
+  const std::vector<grid::Cell> expected_rows{{5, 1}, {12, 1}, {12, 4}, {5, 4}, {5, 7}, {12, 7}};
+  EXPECT_EQ(rows, expected_rows);
+  EXPECT_TRUE(band_sweep(owner, 1, 3, BandAxis::kColumns, true, {0, 0}).empty());
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
