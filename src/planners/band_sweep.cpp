@@ -67,4 +67,13 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
   return waypoints;
 }
 
+int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints) {
+  int length = 0;
+  for (const grid::Cell w : waypoints) {
+    length += grid::manhattan(from, w);
+    from = w;
+  }
+  return length;
+}
+
 }  // namespace hullinspect::planners

@@ -54,16 +54,6 @@ void split_in_slabs(const std::vector<int>& cells, int width,
   split(hi, true);
 }
 
-/// Manhattan length of a flight from `from` through `waypoints`.
-int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints) {
-  int length = 0;
-  for (const grid::Cell w : waypoints) {
-    length += grid::manhattan(from, w);
-    from = w;
-  }
-  return length;
-}
-
 /// Not yet observed: unknown, or expected corroded by the prior and not yet seen.
 bool unobserved(const sim::PlannerView& view, int i) {
   return view.map[i] == sim::kUnknown || (view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0);

@@ -14,15 +14,6 @@
 namespace hullinspect::planners {
 namespace {
 
-int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints) {
-  int length = 0;
-  for (const grid::Cell w : waypoints) {
-    length += grid::manhattan(from, w);
-    from = w;
-  }
-  return length;
-}
-
 /// Cells of `owner == uav` that no position of the flown bands sees (footprint half-width h): a
 /// band is a pair of consecutive waypoints on one line; a one-waypoint band is a point.
 int unseen_cells(const grid::Grid<std::int16_t>& owner, int uav, int h, grid::Cell from,

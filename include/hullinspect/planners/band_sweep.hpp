@@ -24,4 +24,8 @@ enum class BandAxis {
 std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
                                    BandAxis axis, bool trim_ends, grid::Cell from);
 
+/// Manhattan length of a flight from `from` through `waypoints` (how strips=auto compares two
+/// sweeps).
+int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints);
+
 }  // namespace hullinspect::planners
