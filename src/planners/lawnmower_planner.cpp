@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/lawnmower_no_fly.hpp"
 #include "hullinspect/planners/prior_weights.hpp"
 
@@ -9,24 +10,8 @@ namespace hullinspect::planners {
 
 std::vector<grid::Cell> LawnmowerPlanner::sweep(const grid::Grid<std::int16_t>& owner, int uav,
                                                 int s1, grid::Cell from) {
-  std::vector<grid::Cell> waypoints;
-  const int b = owner.height();
-  grid::Cell at = from;
-  for (int y_begin = 0; y_begin < b; y_begin += s1) {
-    const int y_end = std::min(b, y_begin + s1);
-    const StripColumns columns = strip_columns(owner, uav, y_begin, y_end);
-    if (columns.empty()) continue;
-    const int x_min = columns.first;
-    const int x_max = columns.last;
-    const int row = std::min(y_begin + (s1 - 1) / 2, b - 1);
-    grid::Cell left{x_min, row};
-    grid::Cell right{x_max, row};
-    if (grid::manhattan(at, right) < grid::manhattan(at, left)) std::swap(left, right);
-    waypoints.push_back(left);
-    waypoints.push_back(right);
-    at = right;
-  }
-  return waypoints;
+  // The paper's strips are row bands from the bottom, flown from end cell to end cell.
+  return band_sweep(owner, uav, s1, BandAxis::kRows, false, from);
 }
 
 void LawnmowerPlanner::start(const PlannerContext& context) {

@@ -183,8 +183,8 @@ void add_builtins(PlannerRegistry& r) {
   r.add_builtin(make_entry<Planner, SweepInspectOptions>(
       "sweep-inspect",
       "beyond the paper: sweep the region at z = 2 in bands of s2 rows or columns, inspect "
-      "detections as "
-      "they come abreast, then help with the nearest unclaimed work anywhere (docs/beyond.md)",
+      "detections as they come abreast, then help with the nearest unclaimed work anywhere "
+      "(docs/beyond.md)",
       sweep_inspect_params(),
       [](const SweepInspectOptions& o) { return std::make_unique<SweepInspectPlanner>(o); }));
   r.add_builtin(make_entry<Planner, PartTspOptions>(

@@ -1,3 +1,4 @@
+#include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/lawnmower_planner.hpp"
 
 #include <gtest/gtest.h>
@@ -83,12 +84,7 @@ TEST(Lawnmower, MissionTimeIsDescentPlusSweep) {
   request.starts = world::start_cells(spec.params, world::default_hull());
   const auto p = partition::make_partitioner("stripes")->partition(request);
   const auto w = LawnmowerPlanner::sweep(p.owner, 0, 5, request.starts[0]);
-  int length = 0;
-  grid::Cell at = request.starts[0];
-  for (const auto& c : w) {
-    length += grid::manhattan(at, c);
-    at = c;
-  }
+  const int length = flight_length(request.starts[0], w);
   ASSERT_TRUE(r.t_m);
   EXPECT_LE(*r.t_m, 1 + length);
   EXPECT_GE(*r.t_m, 1 + length - 230);  // the last strip is flown almost to its end
