@@ -61,17 +61,22 @@ std::vector<CorrosionOdds> column_odds(const PlannerContext& context, bool use_s
 }
 }  // namespace
 
-grid::Grid<double> prior_work_weights(const PlannerContext& context, bool use_statistics) {
+grid::Grid<double> corrosion_probabilities(const PlannerContext& context, bool use_statistics) {
   const auto& hull = context.hull;
-  const auto& p = context.params;
-  const double ratio = static_cast<double>(p.s2) / p.s1;
   const std::vector<CorrosionOdds> column = column_odds(context, use_statistics);
-  grid::Grid<double> weights(hull.width(), hull.height(), 0.0);
+  grid::Grid<double> probability(hull.width(), hull.height(), 0.0);
   for (int i : hull.cells()) {
     const CorrosionOdds& odds = column[static_cast<std::size_t>(i % hull.width())];
-    const double corroded = context.prior[i] == 1 ? odds.in_prior : odds.outside_prior;
-    weights[i] = 1.0 + corroded * ratio;
+    probability[i] = context.prior[i] == 1 ? odds.in_prior : odds.outside_prior;
   }
+  return probability;
+}
+
+grid::Grid<double> prior_work_weights(const PlannerContext& context, bool use_statistics) {
+  const auto& p = context.params;
+  const double ratio = static_cast<double>(p.s2) / p.s1;
+  grid::Grid<double> weights = corrosion_probabilities(context, use_statistics);
+  for (int i : context.hull.cells()) weights[i] = 1.0 + weights[i] * ratio;
   return weights;
 }
 

@@ -85,11 +85,11 @@ std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::i
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
   BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
   axis = options_.strips == "columns" ? BandAxis::kColumns : BandAxis::kRows;
-  auto waypoints = band_sweep(owner, k, h2_ * 2 + 1, axis, options_.trim_strip_ends, from);
+  const int band = uavs_[static_cast<std::size_t>(k)].low ? h1_ * 2 + 1 : h2_ * 2 + 1;
+  auto waypoints = band_sweep(owner, k, band, axis, options_.trim_strip_ends, from);
   if (options_.strips == "auto") {
     // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
-    auto columns =
-        band_sweep(owner, k, h2_ * 2 + 1, BandAxis::kColumns, options_.trim_strip_ends, from);
+    auto columns = band_sweep(owner, k, band, BandAxis::kColumns, options_.trim_strip_ends, from);
     if (flight_length(from, columns) < flight_length(from, waypoints)) {
       waypoints = std::move(columns);
       axis = BandAxis::kColumns;
@@ -101,7 +101,7 @@ std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::i
     // miss is found as unknown cells by the help phase.
     std::vector<grid::Cell> flyable;
     for (const grid::Cell w : waypoints) {
-      const grid::Cell v = distances.allowed(w) ? w : distances.viewpoint(w, h2_);
+      const grid::Cell v = distances.allowed(w) ? w : distances.viewpoint(w, band / 2);
       if (v != grid::kNoCell && (flyable.empty() || flyable.back() != v)) flyable.push_back(v);
     }
     waypoints = std::move(flyable);
@@ -141,15 +141,16 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   owner_ = partition_->owner;
   const int n = p.uavs;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});
+  const double precision = expected_prior_precision(context);
+  prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
+                   precision < options_.prior_trust;
+  mark_low_sweeps(context);
   for (int k = 0; k < n; ++k) {
     Uav& uav = uavs_[static_cast<std::size_t>(k)];
     uav.sweep.assign(sweep_from(k, context.starts[static_cast<std::size_t>(k)]));
     uav.sweep.set_distances(uav_distances_[static_cast<std::size_t>(k)]);
   }
   prior_.assign(static_cast<std::size_t>(n), {});
-  const double precision = expected_prior_precision(context);
-  prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
-                   precision < options_.prior_trust;
   if (options_.prior_first && !prior_dropped_) {
     for (int i : context.hull.cells()) {
       const int owner = partition_->owner[i];
@@ -170,6 +171,27 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   handed_over_.assign(static_cast<std::size_t>(n), 0);
   split_cells_.clear();
   split_cells_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
+}
+
+void SweepInspectPlanner::mark_low_sweeps(const PlannerContext& context) {
+  // Where corrosion is dense, a z = 2 sweep spends more on descents, inspections and flights
+  // back than it saves by its wider footprint: one z = 1 pass (bands of s1) sees and inspects
+  // every cell. The expected corroded fraction counts what the sweep will find: the prior's
+  // cells, when they are toured first, are inspected before it.
+  if (options_.low_sweep_above >= 1.0) return;
+  const grid::Grid<double> probability = corrosion_probabilities(context, true);
+  const bool toured = options_.prior_first && !prior_dropped_;
+  std::vector<double> corroded(uavs_.size(), 0.0);
+  std::vector<int> cells(uavs_.size(), 0);
+  for (int i : context.hull.cells()) {
+    const int k = owner_[i];
+    if (k < 0) continue;
+    if (!(toured && context.prior[i] == 1)) corroded[static_cast<std::size_t>(k)] += probability[i];
+    cells[static_cast<std::size_t>(k)] += 1;
+  }
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    uavs_[k].low = cells[k] > 0 && corroded[k] > options_.low_sweep_above * cells[k];
+  }
 }
 
 bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
@@ -355,7 +377,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       take_prior_share(k, u.pos);  // the longest tour left gives it the part it ends sooner
     }
     if (cells.empty()) {
-      if (u.z == 1) return sim::Action::kChangePlane;
+      if (u.z == 1 && !p.low) return sim::Action::kChangePlane;
       if (p.sweep_planned) {
         p.mode = p.after_prior;
       } else {
@@ -388,6 +410,17 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     }
   }
 
+  if (p.mode == Mode::kSweep && p.low) {
+    // low-sweep-above: a dense region is swept at z = 1; every cell seen is inspected.
+    if (p.replan) {
+      p.replan = false;
+      p.sweep.assign(sweep_from(k, u.pos));
+    }
+    if (u.z == 2) return sim::Action::kChangePlane;
+    const sim::Action a = p.sweep.next_action(u.pos);
+    if (a != sim::Action::kHover) return a;
+    p.mode = Mode::kHelp;
+  }
   if (p.mode == Mode::kSweep || p.mode == Mode::kReturn) {
     if (u.z == 1) {  // arrived below for an inspection
       p.mode = Mode::kInspect;

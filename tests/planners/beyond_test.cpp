@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 
 #include "hullinspect/planners/mission.hpp"
@@ -190,7 +191,8 @@ TEST(SweepInspect, IsTruthBlind) {
           OptionMap{{"strips", "rows"}, {"trim-strip-ends", "false"}},
           OptionMap{{"strips", "columns"}},
           OptionMap{{"follow-clusters", "false"}, {"skip-seen-bands", "false"}},
-          OptionMap{{"trust-statistics", "false"}}}) {
+          OptionMap{{"trust-statistics", "false"}}, OptionMap{{"low-sweep-above", "0"}},
+          OptionMap{{"low-sweep-above", "1"}}}) {
       EXPECT_TRUE(testing::planner_is_truth_blind("sweep-inspect", options, params, 5));
     }
   }
@@ -235,6 +237,81 @@ TEST(SweepInspect, TheBandOptionsEachLowerTheirTime) {
     }
     SCOPED_TRACE(off.options.begin()->first);
     EXPECT_LT(on_sum, off_sum);
+  }
+}
+
+// low-sweep-above: on the combined scenario the prior is dropped (p_TP = 0.4) and the front half's
+// regions expect about an eighth of their cells corroded (p_C = 0.01, rectangles up to 7 × 7):
+// they are swept at z = 1 (some UAV spends half its mission there with at most three plane
+// changes) and, summed over s2 = 7 and 11, n = 4 and 8, seeds 1–3, T_c and T_m drop against a
+// z = 2 sweep everywhere (`1`: never). With the right prior of the perfect scenario nothing is
+// left for the sweep to find: no region is low and the missions are the same.
+TEST(SweepInspect, ADenseRegionIsSweptAtTheClosePlane) {
+  const auto& hull = world::default_hull();
+  int t_c[2] = {0, 0};
+  int t_m[2] = {0, 0};
+  for (int s2 : {7, 11}) {
+    for (int n : {4, 8}) {
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        SCOPED_TRACE(::testing::Message() << "s2=" << s2 << " n=" << n << " seed=" << seed);
+        const auto low = spec_for("sweep-inspect", "combined", s2, n, seed);
+        auto high = low;
+        high.planner_options = {{"low-sweep-above", "1"}};
+        bool checked = false;
+        const auto a = run_checked(low, hull, checked);
+        const auto b = run_mission(high, hull);
+        ASSERT_TRUE(a.complete);
+        ASSERT_TRUE(b.complete);
+        EXPECT_TRUE(checked);
+        t_c[0] += *a.t_c;
+        t_m[0] += *a.t_m;
+        t_c[1] += *b.t_c;
+        t_m[1] += *b.t_m;
+        // A low UAV descends once and stays: half its mission or more at z = 1, with at most a
+        // climb and a descent to help at the end.
+        bool swept_low = false;
+        for (const auto& uav : a.uavs)
+          swept_low = swept_low || (2 * uav.steps_z1 >= *a.t_m && uav.plane_changes <= 3);
+        EXPECT_TRUE(swept_low);
+        if (s2 == 7 && seed == 1) {
+          auto perfect = spec_for("sweep-inspect", "perfect", s2, n, seed);
+          const auto p = run_mission(perfect, hull);
+          perfect.planner_options = {{"low-sweep-above", "1"}};
+          const auto q = run_mission(perfect, hull);
+          EXPECT_EQ(p.t_c, q.t_c);
+          EXPECT_EQ(p.t_m, q.t_m);
+          for (std::size_t k = 0; k < p.uavs.size(); ++k)
+            EXPECT_EQ(p.uavs[k].moves, q.uavs[k].moves);
+        }
+      }
+    }
+  }
+  EXPECT_LT(t_c[0], t_c[1]);
+  EXPECT_LT(t_m[0], t_m[1]);
+}
+
+// Every region swept at z = 1 (low-sweep-above = 0): the missions complete under the checker in
+// every scenario, with a failure (the re-split slabs are swept at z = 1 too) and across a no-fly
+// wall that cuts the flight space in two.
+TEST(SweepInspect, EveryRegionSweptLowCompletes) {
+  const auto& hull = world::default_hull();
+  auto wall = std::make_shared<testing::NoFlyMask>(hull.width(), hull.height(), 0);
+  testing::no_fly_box(*wall, 100, 0, 100, hull.height() - 1);
+  for (const char* scenario : {"perfect", "imperfect", "combined"}) {
+    for (bool failure : {false, true}) {
+      for (bool no_fly : {false, true}) {
+        auto spec = spec_for("sweep-inspect", scenario, 9, 5, 2);
+        spec.planner_options = {{"low-sweep-above", "0"}};
+        if (failure) spec.failures.at = {{2, 40}};
+        if (no_fly) spec.params.no_fly = wall;
+        bool checked = false;
+        const auto r = run_checked(spec, hull, checked);
+        SCOPED_TRACE(::testing::Message()
+                     << scenario << " failure=" << failure << " no-fly=" << no_fly);
+        ASSERT_TRUE(r.complete);
+        EXPECT_TRUE(checked);
+      }
+    }
   }
 }
 

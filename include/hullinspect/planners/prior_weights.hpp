@@ -29,10 +29,14 @@ struct CorrosionOdds {
 /// 1 − p_TP per true centre) covers it. p_TP = 1, p_FP = 0 gives exactly {1, 0}.
 CorrosionOdds corrosion_odds(const world::CorrosionZone& zone, double p_tp, double p_fp);
 
+/// P(C = 1 | C') of every hull cell (0 elsewhere): the odds of its column's zone from
+/// `context.corrosion` when `use_statistics` and it is known; otherwise a prior cell is corroded
+/// and no other is.
+grid::Grid<double> corrosion_probabilities(const PlannerContext& context, bool use_statistics);
+
 /// The weight of every hull cell for the partition (0 elsewhere), in units of one z = 2 sweep
 /// step per s2 cells: 1 + P(corroded | C')·s2/s1 (a z = 1 pass over a corroded cell costs 1/s1
-/// of a step, a z = 2 pass over any cell 1/s2). Odds from `context.corrosion` when
-/// `use_statistics` and it is known; otherwise a prior cell is corroded and no other is.
+/// of a step, a z = 2 pass over any cell 1/s2), P from corrosion_probabilities.
 grid::Grid<double> prior_work_weights(const PlannerContext& context, bool use_statistics);
 
 /// The mean of P(C = 1 | C' = 1) over the prior's cells from `context.corrosion` (what a cell of

@@ -69,6 +69,9 @@ struct SweepInspectOptions {
   /// While sweeping, skip the rest of a band whose cells (within the footprint of what is left of
   /// it) have all been observed already — by a helper, or on the way of an inspection.
   bool skip_seen_bands = true;
+  /// A region whose expected corroded fraction (the cells its sweep will find) exceeds this is
+  /// swept at z = 1 in bands of s1 (1: never).
+  double low_sweep_above = 0.1;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -92,6 +95,7 @@ class SweepInspectPlanner final : public Planner {
     Mode after_prior = Mode::kSweep;  // where to go on when prior cells handed over are done
     bool replan = false;              // its cells were re-split (a failure): plan strips anew
     BandAxis axis = BandAxis::kRows;  // the direction of its sweep's bands
+    bool low = false;                 // its sweep is flown at z = 1 (low-sweep-above)
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
@@ -105,6 +109,8 @@ class SweepInspectPlanner final : public Planner {
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
+  /// low-sweep-above: marks the UAVs whose regions are dense enough to sweep at z = 1.
+  void mark_low_sweeps(const PlannerContext& context);
   bool prior_distrusted() const {
     if (prior_dropped_) return true;
     const int seen = prior_true_ + prior_false_;
