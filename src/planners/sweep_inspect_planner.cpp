@@ -144,6 +144,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   const double precision = expected_prior_precision(context);
   prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
                    precision < options_.prior_trust;
+  hull_cells_ = context.hull.cells();
   mark_low_sweeps(context);
   for (int k = 0; k < n; ++k) {
     Uav& uav = uavs_[static_cast<std::size_t>(k)];
@@ -167,7 +168,6 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   prior_false_ = 0;
   pending_.clear();
   pending_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
-  hull_cells_ = context.hull.cells();
   handed_over_.assign(static_cast<std::size_t>(n), 0);
   split_cells_.clear();
   split_cells_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
@@ -178,19 +178,32 @@ void SweepInspectPlanner::mark_low_sweeps(const PlannerContext& context) {
   // back than it saves by its wider footprint: one z = 1 pass (bands of s1) sees and inspects
   // every cell. The expected corroded fraction counts what the sweep will find: the prior's
   // cells, when they are toured first, are inspected before it.
+  sweep_corrosion_ = grid::Grid<double>();
   if (options_.low_sweep_above >= 1.0) return;
-  const grid::Grid<double> probability = corrosion_probabilities(context, true);
-  const bool toured = options_.prior_first && !prior_dropped_;
+  sweep_corrosion_ = corrosion_probabilities(context, true);
+  if (options_.prior_first && !prior_dropped_) {
+    for (int i : context.hull.cells()) {
+      if (context.prior[i] == 1) sweep_corrosion_[i] = 0.0;
+    }
+  }
+  mark_low_regions(nullptr);
+}
+
+void SweepInspectPlanner::mark_low_regions(const sim::PlannerView* view) {
+  if (sweep_corrosion_.width() == 0) return;
   std::vector<double> corroded(uavs_.size(), 0.0);
   std::vector<int> cells(uavs_.size(), 0);
-  for (int i : context.hull.cells()) {
+  for (int i : hull_cells_) {
     const int k = owner_[i];
-    if (k < 0) continue;
-    if (!(toured && context.prior[i] == 1)) corroded[static_cast<std::size_t>(k)] += probability[i];
+    if (k < 0 || (view != nullptr && !unobserved(*view, i))) continue;
+    corroded[static_cast<std::size_t>(k)] += sweep_corrosion_[i];
     cells[static_cast<std::size_t>(k)] += 1;
   }
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
-    uavs_[k].low = cells[k] > 0 && corroded[k] > options_.low_sweep_above * cells[k];
+    const bool low = cells[k] > 0 && corroded[k] > options_.low_sweep_above * cells[k];
+    // A UAV that leaves a z = 1 sweep inspects what is pending around where it is, then climbs.
+    if (view != nullptr && uavs_[k].low && !low) uavs_[k].resume = view->uavs[k].pos;
+    uavs_[k].low = low;
   }
 }
 
@@ -456,7 +469,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
   }
   if (p.mode == Mode::kDone)
     p.mode = Mode::kHelp;  // work may have appeared (a failure, a claim freed)
-  if (p.mode == Mode::kHelp && p.replan && u.z == 2) {
+  if (p.mode == Mode::kHelp && p.replan && (u.z == 2 || p.low)) {
     // Cells re-split after a failure while it was helping: sweep them.
     p.replan = false;
     p.sweep.assign(sweep_from(k, u.pos));
@@ -553,7 +566,11 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
                      [](const auto& a, const auto& b) { return a.second.x < b.second.x; });
     split_cells_.clear();
     for (int i : hull_cells_) {
-      if (unobserved(view, i) && reachable(static_cast<int>(g), i, world::kReachZ2))
+      // Detected cells not yet inspected are work too: a band passing abreast inspects them
+      // (else they would wait, unowned, for the helpers at the end).
+      const bool detected = view.map[i] == sim::kCorrosionSeen && view.seen[i] != 0;
+      if ((unobserved(view, i) && reachable(static_cast<int>(g), i, world::kReachZ2)) ||
+          (detected && reachable(static_cast<int>(g), i, world::kReachZ1)))
         split_cells_.push_back(i);
     }
     std::stable_sort(split_cells_.begin(), split_cells_.end(),
@@ -561,6 +578,8 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
     split_in_slabs(split_cells_, width_, split_helpers_, split_load_, cells_per_step,
                    [&](int k, int i) { owner_[i] = static_cast<std::int16_t>(k); });
   }
+  // A slab's density decides again whether it is swept at z = 1 (low-sweep-above).
+  mark_low_regions(&view);
 }
 
 int SweepInspectPlanner::tour_steps(grid::Cell from, std::span<const int> cells) {

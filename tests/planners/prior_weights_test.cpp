@@ -148,6 +148,14 @@ TEST(PriorWorkWeights, AnImperfectPriorWeighsLessAndTheRestMore) {
   ASSERT_EQ(seen.size(), 4u);
   // The front half (p_C 0.01, l_C 7) hides more missed corrosion than the back (0.0025, 3).
   EXPECT_GT((seen[{true, false}]), (seen[{false, false}]));
+  // The weights are 1 + P·s2/s1 of corrosion_probabilities, which are the zone's odds.
+  const auto probability = corrosion_probabilities(context, true);
+  for (int i : hull.cells()) {
+    const auto& zone = corrosion.zones[i % hull.width() >= corrosion.zones[1].x_begin ? 1 : 0];
+    const CorrosionOdds odds = corrosion_odds(zone, corrosion.p_tp, corrosion.p_fp);
+    ASSERT_EQ(probability[i], instance.prior[i] == 1 ? odds.in_prior : odds.outside_prior) << i;
+    ASSERT_DOUBLE_EQ(aware[i], 1.0 + probability[i] * 7.0 / 5.0) << i;
+  }
 }
 
 struct Started {

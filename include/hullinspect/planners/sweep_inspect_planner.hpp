@@ -109,8 +109,12 @@ class SweepInspectPlanner final : public Planner {
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
-  /// low-sweep-above: marks the UAVs whose regions are dense enough to sweep at z = 1.
+  /// low-sweep-above: the corrosion each cell's sweep expects to find (sweep_corrosion_), then
+  /// mark_low_regions.
   void mark_low_sweeps(const PlannerContext& context);
+  /// Marks the UAVs whose cells in owner_ (only those not yet observed, when `view` is given) are
+  /// dense enough to sweep at z = 1.
+  void mark_low_regions(const sim::PlannerView* view);
   bool prior_distrusted() const {
     if (prior_dropped_) return true;
     const int seen = prior_true_ + prior_false_;
@@ -173,8 +177,10 @@ class SweepInspectPlanner final : public Planner {
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
-  std::vector<char> handed_over_;  // per UAV: its failure was handled
-  std::vector<int> tour_left_;     // scratch of tour_steps
+  std::vector<char> handed_over_;
+  grid::Grid<double> sweep_corrosion_;  // P(corroded) of what the sweep finds (low-sweep-above)  //
+                                        // per UAV: its failure was handled
+  std::vector<int> tour_left_;          // scratch of tour_steps
   std::vector<int> split_cells_;
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
