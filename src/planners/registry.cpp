@@ -134,8 +134,8 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("skip-seen-bands", &SweepInspectOptions::skip_seen_bands,
             "skip the rest of a band whose cells have all been observed already")
       .number("low-sweep-above", &SweepInspectOptions::low_sweep_above, 0.0, 1.0,
-              "sweep a region at z = 1, in bands of s1, when the fraction of its cells expected "
-              "corroded (beyond the prior's toured cells) exceeds this (1: never)")
+              "sweep a corrosion zone's cells at z = 1, in bands of s1, when the fraction of them "
+              "expected corroded (beyond the prior's toured cells) exceeds this (1: never)")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

@@ -145,7 +145,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
                    precision < options_.prior_trust;
   hull_cells_ = context.hull.cells();
-  mark_low_sweeps(context);
+  find_dense_columns(context);
   for (int k = 0; k < n; ++k) {
     Uav& uav = uavs_[static_cast<std::size_t>(k)];
     uav.sweep.assign(sweep_from(k, context.starts[static_cast<std::size_t>(k)]));
@@ -173,38 +173,79 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   split_cells_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
 }
 
-void SweepInspectPlanner::mark_low_sweeps(const PlannerContext& context) {
+void SweepInspectPlanner::find_dense_columns(const PlannerContext& context) {
   // Where corrosion is dense, a z = 2 sweep spends more on descents, inspections and flights
   // back than it saves by its wider footprint: one z = 1 pass (bands of s1) sees and inspects
-  // every cell. The expected corroded fraction counts what the sweep will find: the prior's
-  // cells, when they are toured first, are inspected before it.
-  sweep_corrosion_ = grid::Grid<double>();
+  // every cell. The expected corroded fraction is the zone's mean over what the sweep will find:
+  // the prior's cells, when they are toured first, are inspected before it.
+  dense_column_.clear();
   if (options_.low_sweep_above >= 1.0) return;
-  sweep_corrosion_ = corrosion_probabilities(context, true);
-  if (options_.prior_first && !prior_dropped_) {
+  const grid::Grid<double> corrosion = corrosion_probabilities(context, true);
+  const bool toured = options_.prior_first && !prior_dropped_;
+  const int width = context.hull.width();
+  std::vector<world::CorrosionZone> zones;
+  if (context.corrosion != nullptr) zones = context.corrosion->zones;
+  if (zones.empty()) zones.push_back({0, width});
+  dense_column_.assign(static_cast<std::size_t>(width), 0);
+  for (const auto& zone : zones) {
+    const int x_lo = std::max(0, zone.x_begin);
+    const int x_hi = std::min(width, zone.x_end);
+    double expected = 0.0;
+    int cells = 0;
     for (int i : context.hull.cells()) {
-      if (context.prior[i] == 1) sweep_corrosion_[i] = 0.0;
+      const int x = i % width;
+      if (x < x_lo || x >= x_hi) continue;
+      if (!(toured && context.prior[i] == 1)) expected += corrosion[i];
+      ++cells;
     }
+    if (cells == 0 || expected <= options_.low_sweep_above * cells) continue;
+    for (int x = x_lo; x < x_hi; ++x) dense_column_[static_cast<std::size_t>(x)] = 1;
   }
-  mark_low_regions(nullptr);
 }
 
-void SweepInspectPlanner::mark_low_regions(const sim::PlannerView* view) {
-  if (sweep_corrosion_.width() == 0) return;
-  std::vector<double> corroded(uavs_.size(), 0.0);
-  std::vector<int> cells(uavs_.size(), 0);
+std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::Cell from) {
+  part_owner_ = owner_;
   for (int i : hull_cells_) {
-    const int k = owner_[i];
-    if (k < 0 || (view != nullptr && !unobserved(*view, i))) continue;
-    corroded[static_cast<std::size_t>(k)] += sweep_corrosion_[i];
-    cells[static_cast<std::size_t>(k)] += 1;
+    if (part_owner_[i] == k && (dense_column_[static_cast<std::size_t>(i % width_)] != 0) != low)
+      part_owner_[i] = -1;
   }
-  for (std::size_t k = 0; k < uavs_.size(); ++k) {
-    const bool low = cells[k] > 0 && corroded[k] > options_.low_sweep_above * cells[k];
-    // A UAV that leaves a z = 1 sweep inspects what is pending around where it is, then climbs.
-    if (view != nullptr && uavs_[k].low && !low) uavs_[k].resume = view->uavs[k].pos;
-    uavs_[k].low = low;
+  uavs_[static_cast<std::size_t>(k)].low = low;
+  return strips_from(part_owner_, k, from);
+}
+
+std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  const bool was_low = p.low;
+  p.other_part = false;
+  p.low = false;
+  std::vector<grid::Cell> waypoints;
+  int dense = 0;
+  int sparse = 0;
+  if (!dense_column_.empty()) {
+    for (int i : hull_cells_) {
+      if (owner_[i] == k)
+        ++(dense_column_[static_cast<std::size_t>(i % width_)] != 0 ? dense : sparse);
+    }
   }
+  if (dense == 0) {
+    waypoints = strips_from(owner_, k, from);
+  } else if (sparse == 0) {
+    p.low = true;
+    waypoints = strips_from(owner_, k, from);
+  } else {
+    // Both planes: first the part whose sweep starts nearer, then the other from where it ends.
+    grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
+    const auto start = [&](const std::vector<grid::Cell>& w) {
+      return w.empty() ? std::numeric_limits<int>::max() : distances.distance(from, w.front());
+    };
+    const int high_start = start(part_strips(k, false, from));
+    const int low_start = start(part_strips(k, true, from));
+    waypoints = part_strips(k, low_start < high_start, from);
+    p.other_part = true;
+  }
+  // Leaving a z = 1 sweep: what is pending around here is inspected before it climbs.
+  if (was_low && !p.low) p.resume = from;
+  return waypoints;
 }
 
 bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
@@ -424,14 +465,16 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
   }
 
   if (p.mode == Mode::kSweep && p.low) {
-    // low-sweep-above: a dense region is swept at z = 1; every cell seen is inspected.
+    // low-sweep-above: dense columns are swept at z = 1; every cell seen is inspected.
     if (p.replan) {
       p.replan = false;
       p.sweep.assign(sweep_from(k, u.pos));
+      if (!p.low) return decide_uav(k, u, view);
     }
     if (u.z == 2) return sim::Action::kChangePlane;
     const sim::Action a = p.sweep.next_action(u.pos);
     if (a != sim::Action::kHover) return a;
+    if (p.other_part) return next_part(k, u, view);
     p.mode = Mode::kHelp;
   }
   if (p.mode == Mode::kSweep || p.mode == Mode::kReturn) {
@@ -464,6 +507,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       if (options_.skip_seen_bands) skip_seen_bands(p, u.pos, view);
       const sim::Action a = p.sweep.next_action(u.pos);
       if (a != sim::Action::kHover) return a;
+      if (p.other_part) return next_part(k, u, view);
       p.mode = Mode::kHelp;
     }
   }
@@ -535,6 +579,17 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
   return sim::Action::kHover;  // kDone
 }
 
+sim::Action SweepInspectPlanner::next_part(int k, const sim::UavState& u,
+                                           const sim::PlannerView& view) {
+  // One part of its cells swept: the other, planned from here, on its plane.
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  p.other_part = false;
+  const bool low = !p.low;
+  p.sweep.assign(part_strips(k, low, u.pos));
+  if (!low) p.resume = u.pos;  // from z = 1: inspect what is pending here, climb, sweep
+  return decide_uav(k, u, view);
+}
+
 void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
   const std::size_t n = uavs_.size();
   for (int i : hull_cells_) owner_[i] = -1;
@@ -578,8 +633,6 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
     split_in_slabs(split_cells_, width_, split_helpers_, split_load_, cells_per_step,
                    [&](int k, int i) { owner_[i] = static_cast<std::int16_t>(k); });
   }
-  // A slab's density decides again whether it is swept at z = 1 (low-sweep-above).
-  mark_low_regions(&view);
 }
 
 int SweepInspectPlanner::tour_steps(grid::Cell from, std::span<const int> cells) {

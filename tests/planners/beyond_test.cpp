@@ -240,13 +240,13 @@ TEST(SweepInspect, TheBandOptionsEachLowerTheirTime) {
   }
 }
 
-// low-sweep-above: on the combined scenario the prior is dropped (p_TP = 0.4) and the front half's
-// regions expect about an eighth of their cells corroded (p_C = 0.01, rectangles up to 7 × 7):
+// low-sweep-above: on the combined scenario the prior is dropped (p_TP = 0.4) and the front
+// zone's cells are expected corroded about one time in eight (p_C = 0.01, rectangles up to 7 × 7):
 // they are swept at z = 1 (some UAV spends half its mission there with at most three plane
 // changes) and, summed over s2 = 7 and 11, n = 4 and 8, seeds 1–3, T_c and T_m drop against a
 // z = 2 sweep everywhere (`1`: never). With the right prior of the perfect scenario nothing is
-// left for the sweep to find: no region is low and the missions are the same.
-TEST(SweepInspect, ADenseRegionIsSweptAtTheClosePlane) {
+// left for the sweep to find: no zone is dense and the missions are the same.
+TEST(SweepInspect, ADenseZoneIsSweptAtTheClosePlane) {
   const auto& hull = world::default_hull();
   int t_c[2] = {0, 0};
   int t_m[2] = {0, 0};
@@ -290,12 +290,32 @@ TEST(SweepInspect, ADenseRegionIsSweptAtTheClosePlane) {
   EXPECT_LT(t_m[0], t_m[1]);
 }
 
-// Every region with anything left to find swept at z = 1 (low-sweep-above = 0; the prior is
+// With n = 3 on the combined scenario the middle UAV starts on the zone boundary (x = 115) and
+// its region spans both zones: it sweeps its front (dense) cells at z = 1 and its back cells at
+// z = 2, one part after the other, so between a third and two thirds of its mission is at z = 1,
+// while the front UAV stays low and the back one high; under the checker.
+TEST(SweepInspect, AUavOnTwoZonesSweepsEachOnItsPlane) {
+  const auto& hull = world::default_hull();
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    bool checked = false;
+    const auto r = run_checked(spec_for("sweep-inspect", "combined", 7, 3, seed), hull, checked);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    ASSERT_TRUE(r.complete);
+    EXPECT_TRUE(checked);
+    const int t_m = *r.t_m;
+    EXPECT_GT(3 * r.uavs[1].steps_z1, t_m);
+    EXPECT_LT(3 * r.uavs[1].steps_z1, 2 * t_m);
+    EXPECT_GT(10 * r.uavs[2].steps_z1, 9 * t_m);
+    EXPECT_LT(10 * r.uavs[0].steps_z1, t_m);
+  }
+}
+
+// Every zone with anything left to find swept at z = 1 (low-sweep-above = 0; the prior is
 // dropped in both scenarios): the missions complete under the checker, with a failure (the
 // re-split's slabs are swept at z = 1 too) and across a no-fly wall that cuts the flight space in
 // two; every UAV that did not fail spent most of the mission at z = 1 and changed plane at most
 // twice (down at the start, up to help at the end).
-TEST(SweepInspect, EveryRegionSweptLowCompletes) {
+TEST(SweepInspect, EveryZoneSweptLowCompletes) {
   const auto& hull = world::default_hull();
   auto wall = std::make_shared<testing::NoFlyMask>(hull.width(), hull.height(), 0);
   testing::no_fly_box(*wall, 100, 0, 100, hull.height() - 1);

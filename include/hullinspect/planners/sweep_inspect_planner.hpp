@@ -69,8 +69,8 @@ struct SweepInspectOptions {
   /// While sweeping, skip the rest of a band whose cells (within the footprint of what is left of
   /// it) have all been observed already — by a helper, or on the way of an inspection.
   bool skip_seen_bands = true;
-  /// A region whose expected corroded fraction (the cells its sweep will find) exceeds this is
-  /// swept at z = 1 in bands of s1 (1: never).
+  /// The cells of a corrosion zone whose expected corroded fraction (of what the sweep will find:
+  /// without the prior's toured cells) exceeds this are swept at z = 1 in bands of s1 (1: never).
   double low_sweep_above = 0.1;
 };
 
@@ -96,8 +96,11 @@ class SweepInspectPlanner final : public Planner {
     bool replan = false;              // its cells were re-split (a failure): plan strips anew
     BandAxis axis = BandAxis::kRows;  // the direction of its sweep's bands
     bool low = false;                 // its sweep is flown at z = 1 (low-sweep-above)
+    bool other_part = false;          // its cells of the other plane are swept after these
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// The part of UAV k's cells on the other plane, when the current part's sweep is done.
+  sim::Action next_part(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
   /// radius when radius < 0), not claimed by another UAV; −1 if none.
   int nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
@@ -109,22 +112,23 @@ class SweepInspectPlanner final : public Planner {
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
-  /// low-sweep-above: the corrosion each cell's sweep expects to find (sweep_corrosion_), then
-  /// mark_low_regions.
-  void mark_low_sweeps(const PlannerContext& context);
-  /// Marks the UAVs whose cells in owner_ (only those not yet observed, when `view` is given) are
-  /// dense enough to sweep at z = 1.
-  void mark_low_regions(const sim::PlannerView* view);
+  /// low-sweep-above: marks the columns of the corrosion zones (one zone when the statistics are
+  /// unknown) whose cells the sweep expects corroded more often than low-sweep-above.
+  void find_dense_columns(const PlannerContext& context);
   bool prior_distrusted() const {
     if (prior_dropped_) return true;
     const int seen = prior_true_ + prior_false_;
     return options_.prior_trust > 0 && seen >= options_.prior_check_cells &&
            prior_true_ < options_.prior_trust * seen;
   }
-  /// The strips of UAV k's region (waypoints at z = 2) flown from `from` (its cells in owner_).
-  std::vector<grid::Cell> sweep_from(int k, grid::Cell from) {
-    return strips_from(owner_, k, from);
-  }
+  /// The strips of UAV k's region flown from `from` (its cells in owner_): over its cells in dense
+  /// columns at z = 1 (bands of s1), over the others at z = 2 (bands of s2); when it has both, the
+  /// part whose first waypoint is nearer first (Uav::low says which, Uav::other_part that the
+  /// other follows).
+  std::vector<grid::Cell> sweep_from(int k, grid::Cell from);
+  /// The strips over UAV k's cells in dense (`low`) or other columns, flown from `from`; sets
+  /// Uav::low to `low`.
+  std::vector<grid::Cell> part_strips(int k, bool low, grid::Cell from);
   /// The strips over the cells where `owner` is k (waypoints at z = 2) flown from `from`, from the
   /// nearer end (nearer-sweep-end).
   std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k,
@@ -178,9 +182,10 @@ class SweepInspectPlanner final : public Planner {
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
   std::vector<char> handed_over_;
-  grid::Grid<double> sweep_corrosion_;  // P(corroded) of what the sweep finds (low-sweep-above)  //
-                                        // per UAV: its failure was handled
-  std::vector<int> tour_left_;          // scratch of tour_steps
+  std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
+  grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells  //
+                                         // per UAV: its failure was handled
+  std::vector<int> tour_left_;           // scratch of tour_steps
   std::vector<int> split_cells_;
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
