@@ -241,7 +241,7 @@ TEST(SweepInspect, TheBandOptionsEachLowerTheirTime) {
 }
 
 // low-sweep-above: on the combined scenario the prior is dropped (p_TP = 0.4) and the front
-// zone's cells are expected corroded about one time in eight (p_C = 0.01, rectangles up to 7 × 7):
+// zone's cells are expected corroded about 15 % of the time (p_C = 0.01, rectangles up to 7 × 7):
 // they are swept at z = 1 (some UAV spends half its mission there with at most three plane
 // changes) and, summed over s2 = 7 and 11, n = 4 and 8, seeds 1–3, T_c and T_m drop against a
 // z = 2 sweep everywhere (`1`: never). With the right prior of the perfect scenario nothing is
