@@ -129,8 +129,8 @@ class SweepInspectPlanner final : public Planner {
   /// The strips over UAV k's cells in dense (`low`) or other columns, flown from `from`; sets
   /// Uav::low to `low`.
   std::vector<grid::Cell> part_strips(int k, bool low, grid::Cell from);
-  /// The strips over the cells where `owner` is k (waypoints at z = 2) flown from `from`, from the
-  /// nearer end (nearer-sweep-end).
+  /// The strips over the cells where `owner` is k (bands of s2, or of s1 when Uav::low) flown from
+  /// `from`, from the nearer end (nearer-sweep-end).
   std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k,
                                       grid::Cell from);
   /// At a failure (take-over-sweep): every cell not yet observed is split anew among the working
@@ -181,10 +181,9 @@ class SweepInspectPlanner final : public Planner {
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
-  std::vector<char> handed_over_;
+  std::vector<char> handed_over_;        // per UAV: its failure was handled
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
-  grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells  //
-                                         // per UAV: its failure was handled
+  grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   std::vector<int> tour_left_;           // scratch of tour_steps
   std::vector<int> split_cells_;
   std::vector<double> split_load_;                         // per UAV, in cells
