@@ -867,7 +867,9 @@ void SweepInspectPlanner::annotate(AnnotationSink& sink) const {
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     const Uav& p = uavs_[k];
     const bool sweeping = p.mode == Mode::kSweep;
-    sink.uav(static_cast<int>(k), kNames[static_cast<int>(p.mode)],
+    // A dense zone's sweep at z = 1 (low-sweep-above) is told apart in the replay.
+    sink.uav(static_cast<int>(k),
+             sweeping && p.low ? "low sweep" : kNames[static_cast<int>(p.mode)],
              sweeping ? p.sweep.target() : p.target,
              sweeping ? p.sweep.remaining() : std::span<const grid::Cell>());
   }

@@ -310,6 +310,58 @@ TEST(SweepInspect, AUavOnTwoZonesSweepsEachOnItsPlane) {
   }
 }
 
+/// Counts, over a mission, the steps at which the planner annotated a UAV "low sweep", and the
+/// ones among them at which that UAV was on z = 2 and not descending (after its annotation the
+/// UAV acts: a low sweep's first action from z = 2 is the descent).
+class LowSweepWatcher final : public MissionObserver, public AnnotationSink {
+ public:
+  void on_start(const sim::Simulator& sim, const Planner& planner) override { look(sim, planner); }
+  void on_step(const sim::Simulator& sim, const Planner& planner) override { look(sim, planner); }
+  void uav(int k, std::string_view mode, grid::Cell, std::span<const grid::Cell>) override {
+    if (mode != "low sweep") return;
+    ++low;
+    const auto& u = uavs_[static_cast<std::size_t>(k)];
+    if (u.z == 2 && !u.in_transit() && was_low_[static_cast<std::size_t>(k)]) ++low_at_z2;
+    now_low_[static_cast<std::size_t>(k)] = 1;
+  }
+  void cells(std::string_view, std::span<const int>) override {}
+  int low = 0;
+  int low_at_z2 = 0;
+
+ private:
+  void look(const sim::Simulator& sim, const Planner& planner) {
+    uavs_ = sim.uavs();
+    was_low_.resize(uavs_.size(), 0);
+    now_low_.assign(uavs_.size(), 0);
+    planner.annotate(*this);
+    was_low_ = now_low_;
+  }
+  std::span<const sim::UavState> uavs_;
+  std::vector<char> was_low_;
+  std::vector<char> now_low_;
+};
+
+// The replay tells a z = 1 sweep apart ("low sweep"): it shows on the combined scenario, a UAV so
+// annotated is at z = 1 or on its way down, and with the right prior of the perfect scenario it
+// never shows.
+TEST(SweepInspect, TheReplayTellsALowSweepApart) {
+  const auto& hull = world::default_hull();
+  for (const char* scenario : {"combined", "perfect"}) {
+    LowSweepWatcher watcher;
+    MissionOptions options;
+    options.observers = {&watcher};
+    const auto r = run_mission(spec_for("sweep-inspect", scenario, 7, 4, 1), hull, options);
+    SCOPED_TRACE(scenario);
+    ASSERT_TRUE(r.complete);
+    if (std::string(scenario) == "combined") {
+      EXPECT_GT(watcher.low, 200);
+    } else {
+      EXPECT_EQ(watcher.low, 0);
+    }
+    EXPECT_EQ(watcher.low_at_z2, 0);
+  }
+}
+
 // Every zone with anything left to find swept at z = 1 (low-sweep-above = 0; the prior is
 // dropped in both scenarios): the missions complete under the checker, with a failure (the
 // re-split's slabs are swept at z = 1 too) and across a no-fly wall that cuts the flight space in
