@@ -136,6 +136,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .number("low-sweep-above", &SweepInspectOptions::low_sweep_above, 0.0, 1.0,
               "sweep a corrosion zone's cells at z = 1, in bands of s1, when the fraction of them "
               "expected corroded (beyond the prior's toured cells) exceeds this (1: never)")
+      .flag("share-sweep", &SweepInspectOptions::share_sweep,
+            "a UAV whose sweep is done takes the last bands of the sweep that would end last, "
+            "split so that the two end earliest, before it helps cell by cell")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

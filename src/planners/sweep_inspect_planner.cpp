@@ -556,7 +556,11 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
                               (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0 &&
                               !reachable(k, p.target_cell, world::kReachZ1));
     if (target_done || claimed_by_other(k, p.target_cell)) {
+      // Detected cells first (a sweep passing abreast is not sure to), then the tail of the sweep
+      // that would end last (share-sweep), then unknown cells.
       p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
+      if (p.target_cell < 0 && options_.share_sweep && take_sweep_tail(k, u, view))
+        return decide_uav(k, u, view);
       if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
       if (p.target_cell < 0) {
         p.mode = Mode::kDone;
@@ -588,6 +592,99 @@ sim::Action SweepInspectPlanner::next_part(int k, const sim::UavState& u,
   p.sweep.assign(part_strips(k, low, u.pos));
   if (!low) p.resume = u.pos;  // from z = 1: inspect what is pending here, climb, sweep
   return decide_uav(k, u, view);
+}
+
+bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
+                                          const sim::PlannerView& view) {
+  // The UAVs' sweeps end tens of steps apart (on the tuning seeds of the combined scenario,
+  // n = 8, the first 20-60 s before the last): the one that is done takes the far end of the
+  // sweep that would end last — its last bands, or the far part of its last band — which keeps
+  // the bands' structure where helping cell by cell flies to scattered cells. A sweep left is
+  // estimated as the walk through its waypoints (Manhattan) times kTailWalkCost (inspections on
+  // the way); the split is anywhere along a band, or at a leg between two bands (not flown).
+  grid::DistanceService& mine = *uav_distances_[static_cast<std::size_t>(j)];
+  int donor = -1;
+  double donor_alone = 0.0;
+  TailSplit chosen;
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    const Uav& q = uavs_[k];
+    if (static_cast<int>(k) == j || view.uavs[k].failed || uav_distances_[k] != &mine) continue;
+    if (!q.sweep_planned || q.other_part || q.replan) continue;
+    if (q.mode != Mode::kSweep && q.mode != Mode::kReturn && q.mode != Mode::kInspect) continue;
+    const auto rest = q.sweep.remaining();
+    if (rest.empty()) continue;
+    const bool sweeping = q.mode == Mode::kSweep;
+    const grid::Cell from = sweeping ? view.uavs[k].pos : q.resume;
+    const int back = sweeping ? 0 : grid::manhattan(view.uavs[k].pos, q.resume);
+    // tail_walk_[i]: the walk from `from` to rest[i].
+    tail_walk_.assign(rest.size(), grid::manhattan(from, rest[0]));
+    for (std::size_t i = 1; i < rest.size(); ++i)
+      tail_walk_[i] = tail_walk_[i - 1] + grid::manhattan(rest[i - 1], rest[i]);
+    const double alone = back + kTailWalkCost * tail_walk_.back();
+    if (donor >= 0 && alone <= donor_alone) continue;
+    // distance(a, b) searches from b: from here once for every candidate (flights are symmetric).
+    const int to_end = mine.distance(rest.back(), u.pos);
+    const double total = tail_walk_.back();
+    TailSplit split;
+    split.end = alone - (2 * h2_ + 1);  // a split must save at least s2 steps
+    const auto consider = [&](std::size_t leg, grid::Cell at, double kept, bool skip_leg) {
+      // k flies to `at` (on leg `leg`, the leg into rest[leg]) and stops; the UAV j takes the
+      // rest: from `at` (or, skipping a leg between bands, from rest[leg]) to the end.
+      const grid::Cell first = skip_leg ? rest[leg] : at;
+      const double taken = total - (skip_leg ? tail_walk_[leg] : kept);
+      const int to_first = mine.distance(first, u.pos);
+      if (to_first == grid::kUnreachable) return;
+      const double keeps = back + kTailWalkCost * kept;
+      const double takes = std::min(to_first, to_end) + kTailWalkCost * taken;
+      const double end = std::max(keeps, takes);
+      if (end >= split.end) return;
+      split = {end, static_cast<int>(leg), at, skip_leg, to_end < to_first};
+    };
+    for (std::size_t leg = 0; leg < rest.size(); ++leg) {
+      const grid::Cell a = leg == 0 ? from : rest[leg - 1];
+      const grid::Cell b = rest[leg];
+      const double before = leg == 0 ? 0.0 : tail_walk_[leg - 1];
+      if (back + kTailWalkCost * before >= split.end) break;  // k's share only grows
+      const bool band_leg = q.axis == BandAxis::kRows ? a.y == b.y : a.x == b.x;
+      if (!band_leg) {
+        if (leg > 0) consider(leg, a, before, true);
+        continue;
+      }
+      const int length = grid::manhattan(a, b);
+      const grid::Cell dir{(b.x > a.x) - (b.x < a.x), (b.y > a.y) - (b.y < a.y)};
+      for (int d = 1; d < length; ++d) {
+        const grid::Cell at{a.x + d * dir.x, a.y + d * dir.y};
+        if (mine.allowed(at)) consider(leg, at, before + d, false);
+      }
+    }
+    if (split.leg < 0) continue;
+    donor = static_cast<int>(k);
+    donor_alone = alone;
+    chosen = split;
+  }
+  if (donor < 0) return false;
+  Uav& q = uavs_[static_cast<std::size_t>(donor)];
+  const auto rest = q.sweep.remaining();
+  const auto leg = static_cast<std::size_t>(chosen.leg);
+  std::vector<grid::Cell> tail;
+  if (!chosen.skip_leg) tail.push_back(chosen.at);
+  tail.insert(tail.end(), rest.begin() + static_cast<std::ptrdiff_t>(leg), rest.end());
+  if (chosen.backward) std::reverse(tail.begin(), tail.end());
+  if (chosen.skip_leg) {
+    q.sweep.keep(leg);  // up to rest[leg - 1], the start of the leg between two bands
+  } else {
+    q.sweep.keep(leg, chosen.at);
+  }
+  Uav& p = uavs_[static_cast<std::size_t>(j)];
+  p.sweep.assign(std::move(tail));
+  p.axis = q.axis;
+  p.low = q.low;
+  p.other_part = false;
+  p.sweep_planned = true;
+  p.mode = Mode::kSweep;
+  p.target_cell = -1;
+  p.resume = u.pos;  // from z = 1 onto a z = 2 tail: what is pending here first, then climb
+  return true;
 }
 
 void SweepInspectPlanner::resplit(const sim::PlannerView& view) {

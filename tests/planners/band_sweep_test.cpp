@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "hullinspect/partition/partitioner.hpp"
+#include "hullinspect/planners/waypoint_follower.hpp"
 #include "hullinspect/world/hull.hpp"
 
 namespace hullinspect::planners {
@@ -87,6 +88,28 @@ TEST(BandSweep, ColumnBandsOfARectangleStartAtItsLeftEdgeAndAreTrimmed) {
   const std::vector<grid::Cell> expected_rows{{5, 1}, {12, 1}, {12, 4}, {5, 4}, {5, 7}, {12, 7}};
   EXPECT_EQ(rows, expected_rows);
   EXPECT_TRUE(band_sweep(owner, 1, 3, BandAxis::kColumns, true, {0, 0}).empty());
+}
+
+// share-sweep cuts a sweep's waypoints: keep(n) keeps the next n not yet reached, keep(n, c) ends
+// them at c instead of the rest; the reached ones never come back.
+TEST(WaypointFollower, KeepCutsTheWaypointsNotYetReached) {
+  WaypointFollower follower;
+  follower.assign({{0, 0}, {0, 5}, {3, 5}, {3, 0}});
+  EXPECT_EQ(follower.next_action({0, 0}), sim::step_towards({0, 0}, {0, 5}));  // {0, 0} reached
+  follower.keep(2);
+  ASSERT_EQ(follower.remaining().size(), 2U);
+  EXPECT_EQ(follower.remaining()[1], (grid::Cell{3, 5}));
+  follower.keep(1, {2, 5});
+  ASSERT_EQ(follower.remaining().size(), 2U);
+  EXPECT_EQ(follower.remaining()[0], (grid::Cell{0, 5}));
+  EXPECT_EQ(follower.remaining()[1], (grid::Cell{2, 5}));
+  follower.keep(5);  // more than there are: nothing changes
+  EXPECT_EQ(follower.remaining().size(), 2U);
+  follower.keep(0, {0, 3});
+  ASSERT_EQ(follower.remaining().size(), 1U);
+  EXPECT_EQ(follower.target(), (grid::Cell{0, 3}));
+  EXPECT_FALSE(follower.finished({0, 0}));
+  EXPECT_TRUE(follower.finished({0, 3}));
 }
 
 }  // namespace

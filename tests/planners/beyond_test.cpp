@@ -192,7 +192,7 @@ TEST(SweepInspect, IsTruthBlind) {
           OptionMap{{"strips", "columns"}},
           OptionMap{{"follow-clusters", "false"}, {"skip-seen-bands", "false"}},
           OptionMap{{"trust-statistics", "false"}}, OptionMap{{"low-sweep-above", "0"}},
-          OptionMap{{"low-sweep-above", "1"}}}) {
+          OptionMap{{"low-sweep-above", "1"}}, OptionMap{{"share-sweep", "false"}}}) {
       EXPECT_TRUE(testing::planner_is_truth_blind("sweep-inspect", options, params, 5));
     }
   }
@@ -392,6 +392,88 @@ TEST(SweepInspect, EveryZoneSweptLowCompletes) {
       }
     }
   }
+}
+
+/// Watches share-sweep's hand-overs: a sweeping UAV whose plan now holds at least two waypoints
+/// that its plan of the step before did not, all but one of them (the split point) from another
+/// sweeping UAV's plan of the step before, which no longer holds them. (A UAV that is done takes
+/// over within the decision that ends its own sweep, so its annotation may never say "help".)
+class SweepTailWatcher final : public MissionObserver, public AnnotationSink {
+ public:
+  void on_start(const sim::Simulator& sim, const Planner& planner) override { look(sim, planner); }
+  void on_step(const sim::Simulator& sim, const Planner& planner) override { look(sim, planner); }
+  void uav(int k, std::string_view mode, grid::Cell, std::span<const grid::Cell> plan) override {
+    now_[static_cast<std::size_t>(k)] = {std::string(mode), {plan.begin(), plan.end()}};
+  }
+  void cells(std::string_view, std::span<const int>) override {}
+  int takes = 0;
+
+ private:
+  struct Seen {
+    std::string mode;
+    std::vector<grid::Cell> plan;
+  };
+  static bool sweeping(const std::string& mode) { return mode == "sweep" || mode == "low sweep"; }
+  static int held(const std::vector<grid::Cell>& cells, const std::vector<grid::Cell>& plan) {
+    int n = 0;
+    for (const grid::Cell c : cells) n += std::find(plan.begin(), plan.end(), c) != plan.end();
+    return n;
+  }
+  void look(const sim::Simulator& sim, const Planner& planner) {
+    const auto uavs = sim.uavs();
+    now_.assign(uavs.size(), Seen{});
+    planner.annotate(*this);
+    for (std::size_t j = 0; j < before_.size(); ++j) {
+      if (uavs[j].failed || !sweeping(now_[j].mode)) continue;
+      std::vector<grid::Cell> fresh;
+      for (const grid::Cell c : now_[j].plan) {
+        if (held({c}, before_[j].plan) == 0) fresh.push_back(c);
+      }
+      if (fresh.size() < 2) continue;
+      const int need = static_cast<int>(fresh.size()) - 1;
+      for (std::size_t k = 0; k < uavs.size(); ++k) {
+        if (k != j && sweeping(before_[k].mode) && held(fresh, before_[k].plan) >= need &&
+            held(fresh, now_[k].plan) <= 1) {
+          ++takes;
+          break;
+        }
+      }
+    }
+    before_ = now_;
+  }
+  std::vector<Seen> now_;
+  std::vector<Seen> before_;
+};
+
+// share-sweep: a UAV whose sweep is done takes the far end of the sweep that would end last. On
+// inhomogeneous missions where the right prior's tours, balanced for T_c, leave one UAV a whole
+// region to sweep after a long tour (s2 = 7, n = 4; seeds where it happens), a UAV takes bands out
+// of another's plan, the missions complete under the checker and, summed, T_m drops; without the
+// option no plan ever takes another's bands.
+TEST(SweepInspect, ShareSweepHandsTheLastBandsOver) {
+  const auto& hull = world::default_hull();
+  int t_m[2] = {0, 0};
+  for (bool share : {true, false}) {
+    for (std::uint64_t seed : {9, 15, 24}) {
+      auto spec = spec_for("sweep-inspect", "inhomogeneous", 7, 4, seed);
+      spec.planner_options = {{"share-sweep", share ? "true" : "false"}};
+      testing::MissionChecker checker;
+      SweepTailWatcher watcher;
+      MissionOptions options;
+      options.observers = {&checker, &watcher};
+      const auto r = run_mission(spec, hull, options);
+      SCOPED_TRACE(::testing::Message() << "share-sweep=" << share << " seed=" << seed);
+      ASSERT_TRUE(r.complete);
+      EXPECT_TRUE(checker.ok());
+      if (share) {
+        EXPECT_GE(watcher.takes, 1);
+      } else {
+        EXPECT_EQ(watcher.takes, 0);
+      }
+      t_m[share ? 0 : 1] += *r.t_m;
+    }
+  }
+  EXPECT_LT(t_m[0], t_m[1]);
 }
 
 // Row bands, column bands and the per-region choice complete every scenario under the checker,

@@ -4,8 +4,9 @@
 // observes at the rate bound's s2 new cells per step), descends as soon as a detected corroded cell
 // of the shared map lies abreast of it, inspects the detected cells near that point at z = 1
 // (nearest first), climbs back and resumes its sweep where it left it. A UAV whose sweep is done
-// helps: it takes the nearest unclaimed work anywhere (a detected, uninspected cell at z = 1, else
-// an unknown cell at z = 2), which also finishes the region of a failed UAV. Communication: the
+// helps: it takes the nearest unclaimed detected, uninspected cell (at z = 1), else the far end of
+// the sweep that would end last (share-sweep), else the nearest unknown cell (at z = 2), which
+// also finishes the region of a failed UAV. Communication: the
 // shared map M and the failed flags (as Coop-Frontier), plus each helper's current target (its
 // claim).
 
@@ -72,6 +73,10 @@ struct SweepInspectOptions {
   /// The cells of a corrosion zone whose expected corroded fraction (of what the sweep will find:
   /// without the prior's toured cells) exceeds this are swept at z = 1 in bands of s1 (1: never).
   double low_sweep_above = 0.1;
+  /// A UAV whose sweep is done takes the tail of the remaining sweep (its last bands) of the
+  /// working UAV that would end last, split so that the later of the two ends earliest, before
+  /// it helps cell by cell.
+  bool share_sweep = true;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -152,6 +157,10 @@ class SweepInspectPlanner final : public Planner {
   static constexpr int kBalancePasses = 3;
   /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells`.
   int tour_steps(grid::Cell from, std::span<const int> cells);
+  /// share-sweep: UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
+  /// working UAV of its flight part that would end last, if that ends the two at least s2 steps
+  /// sooner; true if it took one.
+  bool take_sweep_tail(int j, const sim::UavState& u, const sim::PlannerView& view);
   /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
   /// True when some cells were handed over.
   bool hand_over_prior(const sim::PlannerView& view);
@@ -186,6 +195,17 @@ class SweepInspectPlanner final : public Planner {
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   std::vector<int> tour_left_;           // scratch of tour_steps
   std::vector<int> split_cells_;
+  std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
+  /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its
+  /// remaining waypoint `leg`); the taker flies from `at`, or from that waypoint when the leg runs
+  /// between two bands (`skip_leg`), to the end, or the other way round (`backward`).
+  struct TailSplit {
+    double end = 0.0;  // the later of the two estimated ends
+    int leg = -1;
+    grid::Cell at{-1, -1};
+    bool skip_leg = false;
+    bool backward = false;
+  };
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
   /// The planning estimates of the split: a sweep sees about this fraction of s2 new cells per
@@ -193,6 +213,9 @@ class SweepInspectPlanner final : public Planner {
   /// costs about this many steps.
   static constexpr double kSweepRate = 0.6;
   static constexpr double kPriorVisitSteps = 1.5;
+  /// share-sweep's estimate of a sweep's steps per step of its waypoints' walk (inspections,
+  /// turns); a flight to the tail costs one step per step.
+  static constexpr double kTailWalkCost = 1.2;
   grid::DistanceService own_distances_;
   grid::DistanceService* distances_ = nullptr;
   FlightDistances flights_;

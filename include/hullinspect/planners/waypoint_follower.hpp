@@ -29,6 +29,13 @@ class WaypointFollower {
   }
   /// Drops the next `count` waypoints not yet reached.
   void skip(std::size_t count) { next_ = std::min(waypoints_.size(), next_ + count); }
+  /// Keeps only the first `count` waypoints not yet reached (the rest went to another UAV).
+  void keep(std::size_t count) { waypoints_.resize(std::min(waypoints_.size(), next_ + count)); }
+  /// Keeps the first `count` waypoints not yet reached, then ends at `last`.
+  void keep(std::size_t count, grid::Cell last) {
+    keep(count);
+    waypoints_.push_back(last);
+  }
   bool finished(grid::Cell pos) const {
     return next_ >= waypoints_.size() ||
            (next_ + 1 == waypoints_.size() && waypoints_[next_] == pos);
