@@ -472,6 +472,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       if (!p.low) return decide_uav(k, u, view);
     }
     if (u.z == 2) return sim::Action::kChangePlane;
+    if (options_.skip_seen_bands) skip_seen_bands(p, u.pos, view);
     const sim::Action a = p.sweep.next_action(u.pos);
     if (a != sim::Action::kHover) return a;
     if (p.other_part) return next_part(k, u, view);
@@ -912,16 +913,19 @@ grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos
               : grid::Cell{line, resume_along + dir * ahead};
 }
 
-bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b,
+bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
                                               const sim::PlannerView& view) const {
+  // At z = 1 (a low sweep) the footprint is s1 wide, and it also inspects the detected cells.
   const auto& map = view.map;
-  const int x_lo = std::max(0, std::min(a.x, b.x) - h2_);
-  const int x_hi = std::min(map.width() - 1, std::max(a.x, b.x) + h2_);
-  const int y_lo = std::max(0, std::min(a.y, b.y) - h2_);
-  const int y_hi = std::min(map.height() - 1, std::max(a.y, b.y) + h2_);
+  const int h = low ? h1_ : h2_;
+  const int x_lo = std::max(0, std::min(a.x, b.x) - h);
+  const int x_hi = std::min(map.width() - 1, std::max(a.x, b.x) + h);
+  const int y_lo = std::max(0, std::min(a.y, b.y) - h);
+  const int y_hi = std::min(map.height() - 1, std::max(a.y, b.y) + h);
   for (int y = y_lo; y <= y_hi; ++y) {
     for (int x = x_lo; x <= x_hi; ++x) {
-      if (unobserved(view, map.index(x, y))) return true;
+      const int i = map.index(x, y);
+      if (unobserved(view, i) || (low && map[i] == sim::kCorrosionSeen)) return true;
     }
   }
   return false;
@@ -938,7 +942,7 @@ void SweepInspectPlanner::skip_seen_bands(Uav& p, grid::Cell pos,
     const grid::Cell end = left.front();
     const bool on_line = (p.axis == BandAxis::kRows) ? pos.y == end.y : pos.x == end.x;
     if (on_line && pos != end) {
-      if (leg_sees_unobserved(pos, end, view)) return;
+      if (leg_sees_unobserved(pos, end, p.low, view)) return;
       p.sweep.skip(1);
       continue;
     }
@@ -946,7 +950,7 @@ void SweepInspectPlanner::skip_seen_bands(Uav& p, grid::Cell pos,
     if (left.size() < 2) return;
     const grid::Cell other = left[1];
     const bool band = (p.axis == BandAxis::kRows) ? end.y == other.y : end.x == other.x;
-    if (!band || leg_sees_unobserved(end, other, view)) return;
+    if (!band || leg_sees_unobserved(end, other, p.low, view)) return;
     p.sweep.skip(2);
   }
 }

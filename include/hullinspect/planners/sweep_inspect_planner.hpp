@@ -68,7 +68,8 @@ struct SweepInspectOptions {
   /// of climbing and descending again for its next rows.
   bool follow_clusters = true;
   /// While sweeping, skip the rest of a band whose cells (within the footprint of what is left of
-  /// it) have all been observed already — by a helper, or on the way of an inspection.
+  /// it) have all been observed already — by a helper, or on the way of an inspection (at z = 1:
+  /// observed and, if detected, inspected).
   bool skip_seen_bands = true;
   /// The cells of a corrosion zone whose expected corroded fraction (of what the sweep will find:
   /// without the prior's toured cells) exceeds this are swept at z = 1 in bands of s1 (1: never).
@@ -167,8 +168,10 @@ class SweepInspectPlanner final : public Planner {
   /// skip-seen-bands: drops the follower's waypoints of UAV k's band legs ahead of `pos` whose
   /// footprints would see no unobserved cell.
   void skip_seen_bands(Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
-  /// Whether a flight at z = 2 along one band line from `a` to `b` would see an unobserved cell.
-  bool leg_sees_unobserved(grid::Cell a, grid::Cell b, const sim::PlannerView& view) const;
+  /// Whether a flight along one band line from `a` to `b` would see an unobserved cell (at z = 1,
+  /// `low`: with the s1 footprint, or a detected cell to inspect).
+  bool leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
+                           const sim::PlannerView& view) const;
   /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
   grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
