@@ -139,6 +139,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("share-sweep", &SweepInspectOptions::share_sweep,
             "a UAV whose sweep is done takes the last bands of the sweep that would end last, "
             "split so that the two end earliest, before it helps cell by cell")
+      .flag("slab-partition", &SweepInspectOptions::slab_partition,
+            "partition in column slabs (the stripes partitioner, same weights) where they are "
+            "4-connected, else with the partitioner option")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

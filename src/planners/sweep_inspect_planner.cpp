@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "hullinspect/core/errors.hpp"
 #include "hullinspect/planners/prior_weights.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
@@ -137,7 +138,21 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   request.seed = options_.partition_seed;
   add_no_fly(request, context);
   add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
-  partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
+  partition_ = nullptr;
+  if (options_.slab_partition) {
+    // Column slabs (the stripes partitioner, weighted alike) suit column bands: a region with a
+    // ragged edge costs part-column bands and turns. Where the hull has no connected slabs (a
+    // column that is not one run of cells), the partitioner option's partition instead; a bad
+    // request fails there as well.
+    try {
+      partition_ = context.partitions.get("stripes", {}, request);
+    } catch (const Error&) {
+      partition_ = nullptr;
+    }
+  }
+  if (partition_ == nullptr)
+    partition_ =
+        context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   owner_ = partition_->owner;
   const int n = p.uavs;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});

@@ -245,10 +245,11 @@ TEST(CoopFrontierBehaviour, AnnotatesModesTargetsAndFrontiers) {
 }
 
 TEST(CoopFrontierRegistry, BuildsFromOptionsAndRejectsBadOnes) {
-  auto p = make_planner(
-      "coop-frontier",
-      {{"alpha", "0.3"}, {"beta", "2.5"}, {"base-utility", "0.25"}, {"radius-factor", "1"},
-       {"endgame-stay-low", "true"}});
+  auto p = make_planner("coop-frontier", {{"alpha", "0.3"},
+                                          {"beta", "2.5"},
+                                          {"base-utility", "0.25"},
+                                          {"radius-factor", "1"},
+                                          {"endgame-stay-low", "true"}});
   const auto* cf = dynamic_cast<const CoopFrontierPlanner*>(p.get());
   ASSERT_NE(cf, nullptr);
   EXPECT_EQ(cf->options().alpha, 0.3);

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/world/scenario.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
+#include "hullinspect/world/scenario.hpp"
 #include "support/mesh_fixtures.hpp"
 #include "support/mission_checker.hpp"
 

@@ -1,5 +1,5 @@
-// Whole Part-TSP / Part-TSP₀ missions on the default hull: every model.md §6 scenario, s2 ∈ {7, 9, 11},
-// n = 1…8, 20 seeds each, with the shared invariant checker — every mission must complete.
+// Whole Part-TSP / Part-TSP₀ missions on the default hull: every model.md §6 scenario, s2 ∈ {7, 9,
+// 11}, n = 1…8, 20 seeds each, with the shared invariant checker — every mission must complete.
 //
 // The planners are built through the registry with the "heuristic" TSP solver: completion does not
 // depend on the tours being optimal, and the exact solver is too slow for the large segment TSPs of
@@ -145,8 +145,8 @@ TEST(PartTspMissionsWithRefinements, EveryMissionCompletes) {
                                                          {"skip-resolved", skip ? "true" : "false"},
                                                          {"trim-ends", trim ? "true" : "false"}});
               ASSERT_TRUE(completes(instance, params, *planner))
-                  << fmt::format("{} s2={} n={} seed={} prior={} skip={} trim={}", scenario,
-                                 s2, n, seed, use_prior, skip, trim);
+                  << fmt::format("{} s2={} n={} seed={} prior={} skip={} trim={}", scenario, s2, n,
+                                 seed, use_prior, skip, trim);
             }
           }
         }

@@ -1,5 +1,5 @@
-// Segment division of Part-TSP against a direct reading of model.md §5.3 on random local maps, and the
-// segment ends with and without trimming.
+// Segment division of Part-TSP against a direct reading of model.md §5.3 on random local maps, and
+// the segment ends with and without trimming.
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 namespace hullinspect::planners::part_tsp {
 namespace {
 
-// model.md §5.3, word for word: strip j holds rows [j·s, (j+1)·s); a column is targeted if a cell of
-// the strip in that column is in R_k and holds `value`; segments are maximal runs.
+// model.md §5.3, word for word: strip j holds rows [j·s, (j+1)·s); a column is targeted if a cell
+// of the strip in that column is in R_k and holds `value`; segments are maximal runs.
 std::vector<StripSegment> brute_force(const grid::Grid<std::int16_t>& owner,
                                       const grid::Grid<std::int8_t>& values, int k, int s,
                                       std::int8_t value) {

@@ -201,8 +201,11 @@ TEST(PriorWeightedPartition, BalancesTheExpectedWorkForEveryPartitionedPlanner) 
     const double plain_spread = spread(region_work(plain.partition(), weights, params.uavs));
     std::vector<Started> weighted;
     for (const char* algorithm : {"part-tsp", "lawnmower", "sweep-inspect"}) {
-      weighted.push_back(start_planner(algorithm, {{"prior-weights", "true"}}, instance, params,
-                                       partitions, &corrosion));
+      // (Sweep-Inspect's own default is column slabs of the same weights: checked below.)
+      OptionMap options{{"prior-weights", "true"}};
+      if (std::string(algorithm) == "sweep-inspect") options["slab-partition"] = "false";
+      weighted.push_back(
+          start_planner(algorithm, options, instance, params, partitions, &corrosion));
     }
     SCOPED_TRACE(scenario_name);
     partition::PartitionRequest request;
@@ -221,6 +224,30 @@ TEST(PriorWeightedPartition, BalancesTheExpectedWorkForEveryPartitionedPlanner) 
     EXPECT_LT(weighted_spread, plain_spread);
     EXPECT_LT(weighted_spread, 1.01);
     EXPECT_GT(plain_spread, 1.05);  // the inhomogeneous hull's front half has more work
+    // slab-partition: column slabs, in the order of the starts along x, that balance the same
+    // weights as well: every column but the n - 1 cut ones has one owner.
+    const auto slabs = start_planner("sweep-inspect", {}, instance, params, partitions, &corrosion);
+    testing::PartitionCheck slab_check;
+    slab_check.regions_hold_starts = false;  // a slab need not hold its UAV's start
+    EXPECT_TRUE(testing::valid_partition(request, slabs.partition(), slab_check));
+    EXPECT_LT(spread(region_work(slabs.partition(), weights, params.uavs)), 1.01);
+    const auto& owner = slabs.partition().owner;
+    int cut_columns = 0;
+    int last_owner = -1;
+    for (int x = 0; x < owner.width(); ++x) {
+      int first = -2;
+      bool cut = false;
+      for (int y = 0; y < owner.height(); ++y) {
+        const int k = owner(x, y);
+        if (k < 0) continue;
+        if (first == -2) first = k;
+        cut = cut || k != first;
+        EXPECT_GE(k, last_owner) << "column " << x;  // slabs left to right
+        last_owner = std::max(last_owner, k);
+      }
+      cut_columns += cut;
+    }
+    EXPECT_LE(cut_columns, params.uavs - 1);
   }
 }
 

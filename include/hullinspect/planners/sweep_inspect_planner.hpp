@@ -78,6 +78,9 @@ struct SweepInspectOptions {
   /// working UAV that would end last, split so that the later of the two ends earliest, before
   /// it helps cell by cell.
   bool share_sweep = true;
+  /// Partition in column slabs (the stripes partitioner, with the same weights) where they are
+  /// 4-connected, else with `partitioner`.
+  bool slab_partition = true;
 };
 
 class SweepInspectPlanner final : public Planner {
