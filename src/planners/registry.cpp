@@ -136,6 +136,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .number("low-sweep-above", &SweepInspectOptions::low_sweep_above, 0.0, 1.0,
               "sweep a corrosion zone's cells at z = 1, in bands of s1, when the fraction of them "
               "expected corroded (beyond the prior's toured cells) exceeds this (1: never)")
+      .integer("low-sweep-min-bands", &SweepInspectOptions::low_sweep_min_bands, 0, 1000000,
+               "a UAV whose dense columns span at most this many bands of s1, among other cells, "
+               "sweeps them at z = 2 with the rest (0: never)")
       .flag("share-sweep", &SweepInspectOptions::share_sweep,
             "a UAV whose sweep is done takes the last bands of the sweep that would end last, "
             "split so that the two end earliest, before it helps cell by cell")

@@ -236,12 +236,25 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
   std::vector<grid::Cell> waypoints;
   int dense = 0;
   int sparse = 0;
+  int dense_lo = width_;
+  int dense_hi = -1;
   if (!dense_column_.empty()) {
     for (int i : hull_cells_) {
-      if (owner_[i] == k)
-        ++(dense_column_[static_cast<std::size_t>(i % width_)] != 0 ? dense : sparse);
+      if (owner_[i] == k) {
+        const bool d = dense_column_[static_cast<std::size_t>(i % width_)] != 0;
+        ++(d ? dense : sparse);
+        if (d) {
+          dense_lo = std::min(dense_lo, i % width_);
+          dense_hi = std::max(dense_hi, i % width_);
+        }
+      }
     }
   }
+  // A dense part that a few z = 1 bands would cover is swept at z = 2 with the rest: each z = 1
+  // band is a whole pass of the hull's height (and a plane change), for a few columns.
+  if (sparse > 0 && dense > 0 &&
+      dense_hi - dense_lo + 1 <= options_.low_sweep_min_bands * (2 * h1_ + 1))
+    dense = 0;
   if (dense == 0) {
     waypoints = strips_from(owner_, k, from);
   } else if (sparse == 0) {

@@ -74,6 +74,9 @@ struct SweepInspectOptions {
   /// The cells of a corrosion zone whose expected corroded fraction (of what the sweep will find:
   /// without the prior's toured cells) exceeds this are swept at z = 1 in bands of s1 (1: never).
   double low_sweep_above = 0.1;
+  /// A UAV whose dense columns span at most this many bands of s1 (and that has other cells too)
+  /// sweeps them at z = 2 with its other cells (0: never).
+  int low_sweep_min_bands = 2;
   /// A UAV whose sweep is done takes the tail of the remaining sweep (its last bands) of the
   /// working UAV that would end last, split so that the later of the two ends earliest, before
   /// it helps cell by cell.
