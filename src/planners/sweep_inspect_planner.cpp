@@ -266,9 +266,17 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
     const auto start = [&](const std::vector<grid::Cell>& w) {
       return w.empty() ? std::numeric_limits<int>::max() : distances.distance(from, w.front());
     };
-    const int high_start = start(part_strips(k, false, from));
-    const int low_start = start(part_strips(k, true, from));
-    waypoints = part_strips(k, low_start < high_start, from);
+    // Each plan sets the UAV's band axis (and part_strips its plane): keep the chosen one's.
+    std::vector<grid::Cell> high = part_strips(k, false, from);
+    const BandAxis high_axis = p.axis;
+    std::vector<grid::Cell> low = part_strips(k, true, from);
+    if (start(low) < start(high)) {
+      waypoints = std::move(low);
+    } else {
+      waypoints = std::move(high);
+      p.low = false;
+      p.axis = high_axis;
+    }
     p.other_part = true;
   }
   // Leaving a z = 1 sweep: what is pending around here is inspected before it climbs.
@@ -500,11 +508,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       if (!p.low) return decide_uav(k, u, view);
     }
     if (u.z == 2) return sim::Action::kChangePlane;
-    if (options_.skip_seen_bands) skip_seen_bands(p, u.pos, view);
-    const sim::Action a = p.sweep.next_action(u.pos);
-    if (a != sim::Action::kHover) return a;
-    if (p.other_part) return next_part(k, u, view);
-    p.mode = Mode::kHelp;
+    if (const auto a = follow_sweep(k, u, view)) return *a;
   }
   if (p.mode == Mode::kSweep || p.mode == Mode::kReturn) {
     if (u.z == 1) {  // arrived below for an inspection
@@ -533,11 +537,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
         }
       }
       if (p.mode == Mode::kReturn) return step(k, u.pos, p.resume);
-      if (options_.skip_seen_bands) skip_seen_bands(p, u.pos, view);
-      const sim::Action a = p.sweep.next_action(u.pos);
-      if (a != sim::Action::kHover) return a;
-      if (p.other_part) return next_part(k, u, view);
-      p.mode = Mode::kHelp;
+      if (const auto a = follow_sweep(k, u, view)) return *a;
     }
   }
   if (p.mode == Mode::kDone)
@@ -610,6 +610,17 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     return step(k, u.pos, p.target);
   }
   return sim::Action::kHover;  // kDone
+}
+
+std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::UavState& u,
+                                                             const sim::PlannerView& view) {
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  if (options_.skip_seen_bands) skip_seen_bands(p, u.pos, view);
+  const sim::Action a = p.sweep.next_action(u.pos);
+  if (a != sim::Action::kHover) return a;
+  if (p.other_part) return next_part(k, u, view);
+  p.mode = Mode::kHelp;
+  return std::nullopt;
 }
 
 sim::Action SweepInspectPlanner::next_part(int k, const sim::UavState& u,

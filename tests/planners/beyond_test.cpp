@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <memory>
 
 #include "hullinspect/planners/mission.hpp"
@@ -43,6 +44,37 @@ sim::MissionResult run_checked(const MissionSpec& spec, const world::HullMask& h
   sim::MissionResult result = run_mission(spec, hull, options);
   checked = checker.ok();
   return result;
+}
+
+struct TimeSums {
+  int t_c = 0;
+  int t_m = 0;
+};
+
+/// T_c and T_m of Sweep-Inspect with `options` on `scenario`, summed over s2 ∈ `s2s`, n ∈ {4, 8}
+/// and seeds 1–3; every mission must complete under the shared checker.
+TimeSums summed_times(const char* scenario, const OptionMap& options,
+                      std::initializer_list<int> s2s) {
+  TimeSums sums;
+  for (int s2 : s2s) {
+    for (int n : {4, 8}) {
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        auto spec = spec_for("sweep-inspect", scenario, s2, n, seed);
+        spec.planner_options = options;
+        bool checked = false;
+        const auto r = run_checked(spec, world::default_hull(), checked);
+        SCOPED_TRACE(::testing::Message()
+                     << options.begin()->first << "=" << options.begin()->second << " s2=" << s2
+                     << " n=" << n << " seed=" << seed);
+        EXPECT_TRUE(r.complete);
+        EXPECT_TRUE(checked);
+        if (!r.complete) continue;
+        sums.t_c += *r.t_c;
+        sums.t_m += *r.t_m;
+      }
+    }
+  }
+  return sums;
 }
 
 TEST(Failures, PartTspLeavesAFailedUavsRegionUndoneAndReportsIncomplete) {
@@ -403,29 +435,10 @@ TEST(SweepInspect, SlabPartitionFallsBackWhereSlabsAreNotConnected) {
 // whole z = 1 pass (and two plane changes) for them. Summed over s2 = 7, 9, 11, n = 4 and 8, seeds
 // 1–3, T_c and T_m are lower than with 0 (never), every mission complete under the checker.
 TEST(SweepInspect, ANarrowDenseStripIsSweptWithTheRest) {
-  const auto& hull = world::default_hull();
-  int t_c[2] = {0, 0};
-  int t_m[2] = {0, 0};
-  for (int bands : {2, 0}) {
-    for (int s2 : {7, 9, 11}) {
-      for (int n : {4, 8}) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-          auto spec = spec_for("sweep-inspect", "combined", s2, n, seed);
-          spec.planner_options = {{"low-sweep-min-bands", std::to_string(bands)}};
-          bool checked = false;
-          const auto r = run_checked(spec, hull, checked);
-          SCOPED_TRACE(::testing::Message()
-                       << "bands=" << bands << " s2=" << s2 << " n=" << n << " seed=" << seed);
-          ASSERT_TRUE(r.complete);
-          EXPECT_TRUE(checked);
-          t_c[bands == 0 ? 1 : 0] += *r.t_c;
-          t_m[bands == 0 ? 1 : 0] += *r.t_m;
-        }
-      }
-    }
-  }
-  EXPECT_LT(t_c[0], t_c[1]);
-  EXPECT_LT(t_m[0], t_m[1]);
+  const auto with = summed_times("combined", {{"low-sweep-min-bands", "2"}}, {7, 9, 11});
+  const auto without = summed_times("combined", {{"low-sweep-min-bands", "0"}}, {7, 9, 11});
+  EXPECT_LT(with.t_c, without.t_c);
+  EXPECT_LT(with.t_m, without.t_m);
 }
 
 // skip-seen-bands at z = 1 too: on the combined scenario, where the front zone is swept at z = 1,
@@ -433,29 +446,10 @@ TEST(SweepInspect, ANarrowDenseStripIsSweptWithTheRest) {
 // already observed and inspected; summed over s2 = 7 and 11, n = 4 and 8, seeds 1–3, T_c and T_m
 // are lower with the option than without, every mission complete under the checker.
 TEST(SweepInspect, SkipSeenBandsLowersCombinedTimes) {
-  const auto& hull = world::default_hull();
-  int t_c[2] = {0, 0};
-  int t_m[2] = {0, 0};
-  for (bool skip : {true, false}) {
-    for (int s2 : {7, 11}) {
-      for (int n : {4, 8}) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-          auto spec = spec_for("sweep-inspect", "combined", s2, n, seed);
-          spec.planner_options = {{"skip-seen-bands", skip ? "true" : "false"}};
-          bool checked = false;
-          const auto r = run_checked(spec, hull, checked);
-          SCOPED_TRACE(::testing::Message()
-                       << "skip=" << skip << " s2=" << s2 << " n=" << n << " seed=" << seed);
-          ASSERT_TRUE(r.complete);
-          EXPECT_TRUE(checked);
-          t_c[skip ? 0 : 1] += *r.t_c;
-          t_m[skip ? 0 : 1] += *r.t_m;
-        }
-      }
-    }
-  }
-  EXPECT_LT(t_c[0], t_c[1]);
-  EXPECT_LT(t_m[0], t_m[1]);
+  const auto with = summed_times("combined", {{"skip-seen-bands", "true"}}, {7, 11});
+  const auto without = summed_times("combined", {{"skip-seen-bands", "false"}}, {7, 11});
+  EXPECT_LT(with.t_c, without.t_c);
+  EXPECT_LT(with.t_m, without.t_m);
 }
 
 // Every zone with anything left to find swept at z = 1 (low-sweep-above = 0; the prior is

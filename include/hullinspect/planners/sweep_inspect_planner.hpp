@@ -11,6 +11,7 @@
 // helper's current target (its claim).
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "hullinspect/planners/band_sweep.hpp"
@@ -111,6 +112,10 @@ class SweepInspectPlanner final : public Planner {
     bool other_part = false;          // its cells of the other plane are swept after these
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
+  /// this one is done; nullopt, the UAV now helping, when its sweep is over.
+  std::optional<sim::Action> follow_sweep(int k, const sim::UavState& u,
+                                          const sim::PlannerView& view);
   /// The part of UAV k's cells on the other plane, when the current part's sweep is done.
   sim::Action next_part(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
