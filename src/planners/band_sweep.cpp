@@ -13,14 +13,16 @@ struct Extent {
 }  // namespace
 
 std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
-                                   BandAxis axis, bool trim_ends, grid::Cell from) {
+                                   BandAxis axis, bool trim_ends, grid::Cell from,
+                                   std::span<const int> band_start) {
   const bool rows = axis == BandAxis::kRows;
   const int across_size = rows ? owner.height() : owner.width();
   // "along" runs along a band (x for row bands), "across" from band to band.
   const auto along = [rows](int x, int y) { return rows ? x : y; };
   const auto across = [rows](int x, int y) { return rows ? y : x; };
   // Row bands start at the grid's bottom (as the lawnmower's strips); column bands at the
-  // region's leftmost column, so a region w columns wide needs ceil(w / s) of them.
+  // region's leftmost column, so a region w columns wide needs ceil(w / s) of them, or on the
+  // band grid given (a region of the band partition).
   int origin = rows ? 0 : std::numeric_limits<int>::max();
   if (!rows) {
     for (int y = 0; y < owner.height(); ++y) {
@@ -29,6 +31,7 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
       }
     }
     if (origin == std::numeric_limits<int>::max()) return {};
+    if (!band_start.empty()) origin = band_start[static_cast<std::size_t>(origin)];
   }
   std::vector<Extent> bands(static_cast<std::size_t>((across_size - origin + s - 1) / s));
   for (int y = 0; y < owner.height(); ++y) {

@@ -33,10 +33,9 @@ void InspectionClaims::release_all(int uav) {
   list.clear();
 }
 
-std::optional<grid::Cell> InspectionClaims::inspect_target(int uav, grid::Cell pos,
-                                                           const grid::Grid<std::int8_t>& map,
-                                                           int radius,
-                                                           const grid::Grid<int>* distance_from_pos) {
+std::optional<grid::Cell> InspectionClaims::inspect_target(
+    int uav, grid::Cell pos, const grid::Grid<std::int8_t>& map, int radius,
+    const grid::Grid<int>* distance_from_pos) {
   std::optional<grid::Cell> best;
   int best_d = 0;
   auto consider = [&](grid::Cell c) {

@@ -1,6 +1,5 @@
 #include "hullinspect/planners/coop_frontier_fields.hpp"
 
-
 namespace hullinspect::planners {
 
 void SourceDistanceField::reset(int width, int height, grid::DistanceService* distances) {

@@ -220,8 +220,8 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
         actions[k] = Action::kChangePlane;
         continue;
       }
-      const bool keeps = plan.has_target() && plan.target != u.pos &&
-                         frontiers_.contains(map_.index(plan.target));
+      const bool keeps =
+          plan.has_target() && plan.target != u.pos && frontiers_.contains(map_.index(plan.target));
       if (keeps) {
         held_.push_back(plan.target);
       } else {

@@ -145,6 +145,15 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("slab-partition", &SweepInspectOptions::slab_partition,
             "partition in column slabs (the stripes partitioner, same weights) where they are "
             "4-connected, else with the partitioner option")
+      .flag("band-partition", &SweepInspectOptions::band_partition,
+            "partition in pieces of one boustrophedon over the hull's column bands, of equal "
+            "expected work, where they are 4-connected (else slab-partition's)")
+      .flag("inspect-band-ends", &SweepInspectOptions::inspect_band_ends,
+            "while sweeping also descend for a detected cell in the footprint that the flight's "
+            "current leg comes no nearer to (beyond a band's trimmed end)")
+      .number("inspection-weight", &SweepInspectOptions::inspection_weight, 0.0, 100.0,
+              "in the band partition, the inspections expected at a cell the sweep detects (its "
+              "weight's excess over 1) count this many times (a toured prior cell's once)")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

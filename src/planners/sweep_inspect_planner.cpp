@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/planners/band_partition.hpp"
 #include "hullinspect/planners/prior_weights.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
@@ -87,10 +88,11 @@ std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::i
   BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
   axis = options_.strips == "columns" ? BandAxis::kColumns : BandAxis::kRows;
   const int band = uavs_[static_cast<std::size_t>(k)].low ? h1_ * 2 + 1 : h2_ * 2 + 1;
-  auto waypoints = band_sweep(owner, k, band, axis, options_.trim_strip_ends, from);
+  auto waypoints = band_sweep(owner, k, band, axis, options_.trim_strip_ends, from, band_start_);
   if (options_.strips == "auto") {
     // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
-    auto columns = band_sweep(owner, k, band, BandAxis::kColumns, options_.trim_strip_ends, from);
+    auto columns =
+        band_sweep(owner, k, band, BandAxis::kColumns, options_.trim_strip_ends, from, band_start_);
     if (flight_length(from, columns) < flight_length(from, waypoints)) {
       waypoints = std::move(columns);
       axis = BandAxis::kColumns;
@@ -138,8 +140,16 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   request.seed = options_.partition_seed;
   add_no_fly(request, context);
   add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
+  // The plane a cell is swept on is known before the partition: the zones' statistics decide it.
+  const double precision = expected_prior_precision(context);
+  prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
+                   precision < options_.prior_trust;
+  hull_cells_ = context.hull.cells();
+  find_dense_columns(context);
   partition_ = nullptr;
-  if (options_.slab_partition) {
+  band_start_.clear();
+  if (options_.band_partition && !flights_.split()) partition_ = band_partition(request, context);
+  if (partition_ == nullptr && options_.slab_partition) {
     // Column slabs (the stripes partitioner, weighted alike) suit column bands: a region with a
     // ragged edge costs part-column bands and turns. Where the hull has no connected slabs (a
     // column that is not one run of cells), the partitioner option's partition instead; a bad
@@ -156,11 +166,6 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   owner_ = partition_->owner;
   const int n = p.uavs;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});
-  const double precision = expected_prior_precision(context);
-  prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
-                   precision < options_.prior_trust;
-  hull_cells_ = context.hull.cells();
-  find_dense_columns(context);
   for (int k = 0; k < n; ++k) {
     Uav& uav = uavs_[static_cast<std::size_t>(k)];
     uav.sweep.assign(sweep_from(k, context.starts[static_cast<std::size_t>(k)]));
@@ -186,6 +191,38 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   handed_over_.assign(static_cast<std::size_t>(n), 0);
   split_cells_.clear();
   split_cells_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
+}
+
+std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
+    const partition::PartitionRequest& request, const PlannerContext& context) {
+  // One boustrophedon over the hull's bands (s1 wide in dense columns, s2 elsewhere), cut into
+  // pieces of equal work, in the weights' unit (a clean cell swept at z = 2; a step sweeps s2
+  // of them): a band is one step a row and about one more to reach it (its width across, less
+  // the rows its trimmed ends save); at z = 2 a cell adds the inspections the weights expect
+  // there (their excess over 1), at z = 1 nothing (it is inspected when seen).
+  std::vector<int> width_of_column(static_cast<std::size_t>(width_), 2 * h2_ + 1);
+  for (std::size_t x = 0; x < dense_column_.size(); ++x) {
+    if (dense_column_[x] != 0) width_of_column[x] = 2 * h1_ + 1;
+  }
+  std::vector<int> band_start = column_band_starts(width_of_column);
+  // An inspection on detection (a descent, a flight across the band and back, a climb) costs
+  // more than its weight says, which is a planned z = 1 tour's (the prior's cells when toured).
+  const bool toured = options_.prior_first && !prior_dropped_;
+  grid::Grid<double> extra = request.weights;
+  for (int i = 0; i < extra.size(); ++i) {
+    const bool dense =
+        !dense_column_.empty() && dense_column_[static_cast<std::size_t>(i % width_)] != 0;
+    const double factor = toured && context.prior[i] == 1 ? 1.0 : options_.inspection_weight;
+    extra[i] = dense ? 0.0 : factor * std::max(0.0, extra[i] - 1.0);
+  }
+  const double step = context.params.s2;
+  try {
+    auto pieces = band_order_partition(context.hull, extra, band_start, context.starts, step, step);
+    band_start_ = std::move(band_start);
+    return std::make_shared<const partition::Partition>(std::move(pieces));
+  } catch (const Error&) {
+    return nullptr;  // a piece not 4-connected: slabs or the partitioner instead
+  }
 }
 
 void SweepInspectPlanner::find_dense_columns(const PlannerContext& context) {
@@ -523,13 +560,32 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       if (p.mode == Mode::kReturn && u.pos == p.resume) p.mode = Mode::kSweep;
       if (p.mode == Mode::kSweep && options_.inspect_on_the_way) {
         // Descend when a detected cell is abreast: its position along the band within reach of
-        // the z = 1 footprint (across it, within the band's width).
+        // the z = 1 footprint (across it, within the band's width). Also, with
+        // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
+        // a cell beyond the trimmed end of a band (within h2 of its last position, never within
+        // h1) or behind its start would otherwise wait for the helpers at the mission's end.
         const bool rows = p.axis == BandAxis::kRows;
+        const auto along_of = [rows](grid::Cell c) { return rows ? c.x : c.y; };
+        grid::Cell next = u.pos;
+        for (const grid::Cell w : p.sweep.remaining()) {
+          if (w != u.pos) {
+            next = w;
+            break;
+          }
+        }
+        const bool leg_along = rows ? next.y == u.pos.y : next.x == u.pos.x;
+        const int leg_lo = std::min(along_of(u.pos), leg_along ? along_of(next) : along_of(u.pos));
+        const int leg_hi = std::max(along_of(u.pos), leg_along ? along_of(next) : along_of(u.pos));
         for (int i : pending_) {
           const grid::Cell c = view.map.cell(i);
-          const int along = rows ? std::abs(c.x - u.pos.x) : std::abs(c.y - u.pos.y);
+          const int along = std::abs(along_of(c) - along_of(u.pos));
           const int across = rows ? std::abs(c.y - u.pos.y) : std::abs(c.x - u.pos.x);
-          if (along <= h1_ && across <= h2_ && reachable(k, i, world::kReachZ1) &&
+          const int nearest_on_leg = along_of(c) < leg_lo   ? leg_lo - along_of(c)
+                                     : along_of(c) > leg_hi ? along_of(c) - leg_hi
+                                                            : 0;
+          const bool here_or_never = along <= h1_ || (options_.inspect_band_ends && along <= h2_ &&
+                                                      nearest_on_leg >= along);
+          if (here_or_never && across <= h2_ && reachable(k, i, world::kReachZ1) &&
               !claimed_by_other(k, i)) {
             p.resume = u.pos;
             return sim::Action::kChangePlane;
@@ -731,12 +787,15 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
   const std::size_t n = uavs_.size();
   for (int i : hull_cells_) owner_[i] = -1;
   // The working UAVs' loads: the prior's cells each still has to visit, in cells (a visit costs
-  // about kPriorVisitSteps steps, a step of sweep sees about kSweepRate·s2 new cells).
+  // about kPriorVisitSteps steps, a step of sweep sees about kSweepRate·s2 new cells); on the
+  // band partition's grid in steps.
   const double cells_per_step = kSweepRate * (2 * h2_ + 1);
+  const bool on_bands = !band_start_.empty();
   split_load_.assign(n, 0.0);
   for (std::size_t k = 0; k < n; ++k) {
     if (view.uavs[k].failed) continue;
-    split_load_[k] = kPriorVisitSteps * cells_per_step * static_cast<double>(prior_[k].size());
+    split_load_[k] = kPriorVisitSteps * (on_bands ? 1.0 : cells_per_step) *
+                     static_cast<double>(prior_[k].size());
     uavs_[k].replan = true;
   }
   // One split per flight part (docs/model.md §8; one part without a no-fly wall): the cells not
@@ -765,10 +824,17 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
           (detected && reachable(static_cast<int>(g), i, world::kReachZ1)))
         split_cells_.push_back(i);
     }
+    const auto assign = [&](int k, int i) { owner_[i] = static_cast<std::int16_t>(k); };
+    if (on_bands) {
+      // On the band partition's grid: runs of its boustrophedon, in steps (a row of a band at
+      // the sweep rate with its inspections, a band begun about one more).
+      split_in_band_order(split_cells_, width_, band_start_, split_helpers_, split_load_,
+                          1.0 / kSweepRate, 1.0, assign);
+      continue;
+    }
     std::stable_sort(split_cells_.begin(), split_cells_.end(),
                      [&](int a, int b) { return a % width_ < b % width_; });
-    split_in_slabs(split_cells_, width_, split_helpers_, split_load_, cells_per_step,
-                   [&](int k, int i) { owner_[i] = static_cast<std::int16_t>(k); });
+    split_in_slabs(split_cells_, width_, split_helpers_, split_load_, cells_per_step, assign);
   }
 }
 

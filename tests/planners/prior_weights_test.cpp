@@ -201,9 +201,13 @@ TEST(PriorWeightedPartition, BalancesTheExpectedWorkForEveryPartitionedPlanner) 
     const double plain_spread = spread(region_work(plain.partition(), weights, params.uavs));
     std::vector<Started> weighted;
     for (const char* algorithm : {"part-tsp", "lawnmower", "sweep-inspect"}) {
-      // (Sweep-Inspect's own default is column slabs of the same weights: checked below.)
+      // (Sweep-Inspect's own defaults are the band partition, then column slabs of the same
+      // weights: the slabs are checked below, the band partition in band_partition_test.cpp.)
       OptionMap options{{"prior-weights", "true"}};
-      if (std::string(algorithm) == "sweep-inspect") options["slab-partition"] = "false";
+      if (std::string(algorithm) == "sweep-inspect") {
+        options["band-partition"] = "false";
+        options["slab-partition"] = "false";
+      }
       weighted.push_back(
           start_planner(algorithm, options, instance, params, partitions, &corrosion));
     }
@@ -226,7 +230,8 @@ TEST(PriorWeightedPartition, BalancesTheExpectedWorkForEveryPartitionedPlanner) 
     EXPECT_GT(plain_spread, 1.05);  // the inhomogeneous hull's front half has more work
     // slab-partition: column slabs, in the order of the starts along x, that balance the same
     // weights as well: every column but the n - 1 cut ones has one owner.
-    const auto slabs = start_planner("sweep-inspect", {}, instance, params, partitions, &corrosion);
+    const auto slabs = start_planner("sweep-inspect", {{"band-partition", "false"}}, instance,
+                                     params, partitions, &corrosion);
     testing::PartitionCheck slab_check;
     slab_check.regions_hold_starts = false;  // a slab need not hold its UAV's start
     EXPECT_TRUE(testing::valid_partition(request, slabs.partition(), slab_check));

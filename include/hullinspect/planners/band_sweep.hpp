@@ -3,6 +3,7 @@
 // in bands of s cells, flown along each band's centre line only as far as the footprint needs.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "hullinspect/grid/grid.hpp"
@@ -20,9 +21,12 @@ enum class BandAxis {
 /// last positions whose footprint (half-width (s − 1)/2) reaches its extent, instead of from end
 /// cell to end cell: on the default hull's 30 rows a column band is then 23 moves long, not 29.
 /// Column bands start at the region's leftmost column, so that a region of width w needs
-/// ceil(w / s) of them. Returns no waypoints when the UAV owns no cell.
+/// ceil(w / s) of them; with `band_start` (per column, the first column of its band: a band grid
+/// shared by the regions, column_band_starts in band_partition.hpp) at the band of the region's
+/// leftmost column instead. Returns no waypoints when the UAV owns no cell.
 std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
-                                   BandAxis axis, bool trim_ends, grid::Cell from);
+                                   BandAxis axis, bool trim_ends, grid::Cell from,
+                                   std::span<const int> band_start = {});
 
 /// Manhattan length of a flight from `from` through `waypoints` (how strips=auto compares two
 /// sweeps).

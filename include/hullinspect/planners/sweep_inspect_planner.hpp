@@ -1,6 +1,7 @@
 #pragma once
 // Sweep-Inspect (docs/beyond.md): a planner of this project, beyond the paper. Each UAV sweeps its
-// region (a column slab, or a DARP region where slabs are not connected) at the detection plane
+// region (a piece of one boustrophedon over the hull's column bands, of equal expected work; a
+// column slab or a DARP region where pieces or slabs are not connected) at the detection plane
 // z = 2 in bands of s2 rows or columns (band_sweep.hpp; so it observes at the rate bound's s2 new
 // cells per step), descends as soon as a detected corroded cell of the shared map lies abreast of
 // it, inspects the detected cells near that point at z = 1 (nearest first), climbs back and resumes
@@ -85,6 +86,17 @@ struct SweepInspectOptions {
   /// Partition in column slabs (the stripes partitioner, with the same weights) where they are
   /// 4-connected, else with `partitioner`.
   bool slab_partition = true;
+  /// Partition in pieces of one boustrophedon over the hull's column bands (band_partition.hpp),
+  /// each region's bands on that band grid, where the pieces are 4-connected and the flight space
+  /// is one; else slab-partition's.
+  bool band_partition = true;
+  /// In the band partition, the inspections expected at a cell the sweep detects (its weight's
+  /// excess over 1) count this many times (a toured prior cell's count once).
+  double inspection_weight = 2.0;
+  /// While sweeping, also descend for a detected cell within the footprint (but not abreast)
+  /// that the current leg of the flight comes no nearer to: beyond a band's trimmed end, or
+  /// behind its start (false: such cells wait for the helpers).
+  bool inspect_band_ends = true;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -132,6 +144,11 @@ class SweepInspectPlanner final : public Planner {
   /// low-sweep-above: marks the columns of the corrosion zones (one zone when the statistics are
   /// unknown) whose cells the sweep expects corroded more often than low-sweep-above.
   void find_dense_columns(const PlannerContext& context);
+  /// band-partition: the pieces of one boustrophedon over the hull's bands, of equal expected
+  /// work (the request's weights, dense columns at z = 1), and band_start_ for their sweeps;
+  /// null when a piece is not 4-connected.
+  std::shared_ptr<const partition::Partition> band_partition(
+      const partition::PartitionRequest& request, const PlannerContext& context);
   bool prior_distrusted() const {
     if (prior_dropped_) return true;
     const int seen = prior_true_ + prior_false_;
@@ -197,6 +214,8 @@ class SweepInspectPlanner final : public Planner {
 
   SweepInspectOptions options_;
   std::shared_ptr<const partition::Partition> partition_;
+  /// band-partition: per column, the first column of its band (empty: each region's own bands).
+  std::vector<int> band_start_;
   std::vector<Uav> uavs_;
   std::vector<int> pending_;  // detected (seen at z = 2), not yet inspected cells, flat indices
   std::vector<int> hull_cells_;

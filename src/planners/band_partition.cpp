@@ -1,0 +1,198 @@
+#include "hullinspect/planners/band_partition.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <functional>
+#include <numeric>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/grid/distance.hpp"
+
+namespace hullinspect::planners {
+
+std::vector<int> column_band_starts(std::span<const int> width_of_column) {
+  std::vector<int> start(width_of_column.size(), 0);
+  int run_start = 0;
+  for (std::size_t x = 0; x < width_of_column.size(); ++x) {
+    const int w = std::max(1, width_of_column[x]);
+    if (x == 0 || width_of_column[x] != width_of_column[x - 1]) run_start = static_cast<int>(x);
+    start[x] = run_start + (static_cast<int>(x) - run_start) / w * w;
+  }
+  return start;
+}
+
+namespace {
+/// The boustrophedon's order of cells: bands numbered left to right, odd ones flown down; within
+/// a row of a band, left to right.
+class BandOrder {
+ public:
+  BandOrder(std::span<const int> band_start, int width) : width_(width) {
+    band_of_.assign(static_cast<std::size_t>(width), 0);
+    for (int x = 1; x < width; ++x) {
+      band_of_[static_cast<std::size_t>(x)] =
+          band_of_[static_cast<std::size_t>(x - 1)] +
+          (band_start[static_cast<std::size_t>(x)] != band_start[static_cast<std::size_t>(x - 1)]);
+    }
+  }
+  /// (band, row in the band's direction, x): increasing along the boustrophedon.
+  std::array<int, 3> key(int i) const {
+    const int x = i % width_;
+    const int y = i / width_;
+    const int band = band_of_[static_cast<std::size_t>(x)];
+    return {band, band % 2 == 0 ? y : -y, x};
+  }
+
+ private:
+  int width_;
+  std::vector<int> band_of_;
+};
+}  // namespace
+
+partition::Partition band_order_partition(const world::HullMask& hull,
+                                          const grid::Grid<double>& extra,
+                                          std::span<const int> band_start,
+                                          std::span<const grid::Cell> starts, double row_cost,
+                                          double band_cost) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int n = static_cast<int>(starts.size());
+  const int width = hull.width();
+  const bool weighted = extra.size() > 0;
+  const BandOrder band_order(band_start, width);
+  const auto key = [&](int i) { return band_order.key(i); };
+  std::vector<int> order(hull.cells());
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  std::vector<double> cost(order.size());
+  double total = 0;
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    const int i = order[j];
+    const bool first_of_band = j == 0 || key(order[j - 1])[0] != key(i)[0];
+    const bool first_of_row = first_of_band || key(order[j - 1])[1] != key(i)[1];
+    cost[j] = (weighted ? extra[i] : 0.0) + (first_of_row ? row_cost : 0.0) +
+              (first_of_band ? band_cost : 0.0);
+    total += cost[j];
+  }
+  // The pieces go to the UAVs in the order of their starts along the hull.
+  std::vector<int> uav_of_piece(static_cast<std::size_t>(n));
+  std::iota(uav_of_piece.begin(), uav_of_piece.end(), 0);
+  std::stable_sort(uav_of_piece.begin(), uav_of_piece.end(), [&](int a, int b) {
+    const grid::Cell sa = starts[static_cast<std::size_t>(a)];
+    const grid::Cell sb = starts[static_cast<std::size_t>(b)];
+    return sa.x != sb.x ? sa.x < sb.x : sa.y < sb.y;
+  });
+  partition::Partition out;
+  out.owner = grid::Grid<std::int16_t>(width, hull.height(), -1);
+  out.region_cells.assign(static_cast<std::size_t>(n), 0);
+  out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
+  out.desired_weight.assign(static_cast<std::size_t>(n), total / n);
+  // The rows of the bands, in order: [row_begin[r], row_begin[r + 1]) of `order`, and their work.
+  std::vector<std::size_t> row_begin;
+  std::vector<double> row_work;
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    const bool first_of_row = j == 0 || key(order[j - 1])[0] != key(order[j])[0] ||
+                              key(order[j - 1])[1] != key(order[j])[1];
+    if (first_of_row) {
+      row_begin.push_back(j);
+      row_work.push_back(0.0);
+    }
+    row_work.back() += cost[j];
+  }
+  row_begin.push_back(order.size());
+  const std::size_t rows = row_work.size();
+  if (rows < static_cast<std::size_t>(n)) {
+    throw Error(fmt::format("band partition: {} rows of bands for {} UAVs", rows, n));
+  }
+  // Cut where the running sum is nearest k/n of the total, between rows (a row's cells are seen
+  // by the same footprints); every piece gets at least one row.
+  std::size_t next = 0;
+  double running = 0;
+  for (int piece = 0; piece < n; ++piece) {
+    const int k = uav_of_piece[static_cast<std::size_t>(piece)];
+    const double target = total * (piece + 1) / n;
+    const std::size_t later = static_cast<std::size_t>(n - piece - 1);
+    const std::size_t first = next;
+    while (next + later < rows) {
+      if (piece < n - 1 && next > first &&
+          std::abs(running + row_work[next] - target) > std::abs(running - target)) {
+        break;
+      }
+      for (std::size_t j = row_begin[next]; j < row_begin[next + 1]; ++j) {
+        out.owner[order[j]] = static_cast<std::int16_t>(k);
+        out.region_cells[static_cast<std::size_t>(k)] += 1;
+      }
+      out.region_weight[static_cast<std::size_t>(k)] += row_work[next];
+      running += row_work[next];
+      ++next;
+    }
+  }
+  grid::Grid<std::uint8_t> in_region(width, hull.height(), 0);
+  grid::Grid<int> labels;
+  grid::BfsScratch scratch;
+  for (int k = 0; k < n; ++k) {
+    for (int i : hull.cells()) in_region[i] = out.owner[i] == k;
+    if (grid::label_components(in_region, labels, scratch) != 1) {
+      throw Error(fmt::format("band partition: the piece of UAV {} is not 4-connected on hull '{}'",
+                              k, hull.source()));
+    }
+  }
+  double worst = 0;
+  for (int k = 0; k < n; ++k) {
+    worst = std::max(worst, std::abs(out.region_weight[static_cast<std::size_t>(k)] - total / n));
+  }
+  out.tolerance = worst;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace hullinspect::planners
+
+namespace hullinspect::planners {
+
+void split_in_band_order(std::vector<int>& cells, int width, std::span<const int> band_start,
+                         std::span<const std::pair<int, grid::Cell>> uavs,
+                         std::span<const double> load, double row_cost, double band_cost,
+                         const std::function<void(int, int)>& assign) {
+  if (cells.empty() || uavs.empty()) return;
+  const BandOrder band_order(band_start, width);
+  std::sort(cells.begin(), cells.end(),
+            [&](int a, int b) { return band_order.key(a) < band_order.key(b); });
+  // The work up to each cell: a row or band begun there adds its cost.
+  std::vector<double> work(cells.size());
+  for (std::size_t j = 0; j < cells.size(); ++j) {
+    const auto k = band_order.key(cells[j]);
+    const bool new_band = j == 0 || band_order.key(cells[j - 1])[0] != k[0];
+    const bool new_row = new_band || band_order.key(cells[j - 1])[1] != k[1];
+    work[j] = (new_row ? row_cost : 0.0) + (new_band ? band_cost : 0.0);
+  }
+  const auto cell_at = [width](int i) { return grid::Cell{i % width, i / width}; };
+  const auto split = [&](double t, bool give) {
+    std::size_t c = 0;
+    for (const auto& [k, pos] : uavs) {
+      const std::size_t first = c;
+      double run = 0.0;
+      while (c < cells.size()) {
+        // A run begun mid-row still pays for its first row.
+        const double step = c == first ? std::max(work[c], row_cost) : work[c];
+        const int flight = std::min(grid::manhattan(pos, cell_at(cells[first])),
+                                    grid::manhattan(pos, cell_at(cells[c])));
+        if (load[static_cast<std::size_t>(k)] + flight + run + step > t) break;
+        run += step;
+        if (give) assign(k, cells[c]);
+        ++c;
+      }
+    }
+    return c == cells.size();
+  };
+  double lo = 0.0;
+  double hi = 1.0;
+  while (!split(hi, false)) hi *= 2.0;
+  for (int round = 0; round < 60 && hi - lo > 0.25; ++round) {
+    const double mid = 0.5 * (lo + hi);
+    (split(mid, false) ? hi : lo) = mid;
+  }
+  split(hi, true);
+}
+
+}  // namespace hullinspect::planners
