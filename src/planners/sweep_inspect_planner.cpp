@@ -86,10 +86,15 @@ std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::i
                                                          int k, grid::Cell from) {
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
   BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
-  axis = options_.strips == "columns" ? BandAxis::kColumns : BandAxis::kRows;
-  const int band = uavs_[static_cast<std::size_t>(k)].low ? h1_ * 2 + 1 : h2_ * 2 + 1;
+  const bool low = uavs_[static_cast<std::size_t>(k)].low;
+  // On the band partition's grid a z = 2 sweep flies the grid's columns: the pieces are cut for
+  // them (rows across a piece's part-bands flew more: on the tuning seeds `auto` there cost T_m
+  // 6-12 s with a right prior); its z = 1 sweeps of dense columns still choose.
+  const bool auto_axis = options_.strips == "auto" && (band_start_.empty() || low);
+  axis = options_.strips == "rows" || auto_axis ? BandAxis::kRows : BandAxis::kColumns;
+  const int band = low ? h1_ * 2 + 1 : h2_ * 2 + 1;
   auto waypoints = band_sweep(owner, k, band, axis, options_.trim_strip_ends, from, band_start_);
-  if (options_.strips == "auto") {
+  if (auto_axis) {
     // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
     auto columns =
         band_sweep(owner, k, band, BandAxis::kColumns, options_.trim_strip_ends, from, band_start_);
