@@ -150,6 +150,17 @@ partition::Partition band_order_partition(const world::HullMask& hull,
 
 namespace hullinspect::planners {
 
+double earliest_common_end(const std::function<bool(double)>& fits) {
+  double lo = 0.0;
+  double hi = 1.0;
+  while (!fits(hi)) hi *= 2.0;
+  for (int round = 0; round < 60 && hi - lo > 0.25; ++round) {
+    const double mid = 0.5 * (lo + hi);
+    (fits(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 void split_in_band_order(std::vector<int>& cells, int width, std::span<const int> band_start,
                          std::span<const std::pair<int, grid::Cell>> uavs,
                          std::span<const double> load, double row_cost, double band_cost,
@@ -185,14 +196,7 @@ void split_in_band_order(std::vector<int>& cells, int width, std::span<const int
     }
     return c == cells.size();
   };
-  double lo = 0.0;
-  double hi = 1.0;
-  while (!split(hi, false)) hi *= 2.0;
-  for (int round = 0; round < 60 && hi - lo > 0.25; ++round) {
-    const double mid = 0.5 * (lo + hi);
-    (split(mid, false) ? hi : lo) = mid;
-  }
-  split(hi, true);
+  split(earliest_common_end([&](double t) { return split(t, false); }), true);
 }
 
 }  // namespace hullinspect::planners

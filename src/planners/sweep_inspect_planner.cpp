@@ -46,14 +46,7 @@ void split_in_slabs(const std::vector<int>& cells, int width,
     }
     return c == cells.size();
   };
-  double lo = 0.0;
-  double hi = 1.0;
-  while (!split(hi, false)) hi *= 2.0;
-  for (int round = 0; round < 60 && hi - lo > 0.25; ++round) {
-    const double mid = 0.5 * (lo + hi);
-    (split(mid, false) ? hi : lo) = mid;
-  }
-  split(hi, true);
+  split(earliest_common_end([&](double t) { return split(t, false); }), true);
 }
 
 /// Not yet observed: unknown, or expected corroded by the prior and not yet seen.

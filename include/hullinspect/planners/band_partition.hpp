@@ -36,6 +36,10 @@ partition::Partition band_order_partition(const world::HullMask& hull,
                                           std::span<const grid::Cell> starts, double row_cost,
                                           double band_cost);
 
+/// The smallest end t (within 0.25, by doubling then bisection) for which `fits(t)` holds, `fits`
+/// growing with t: the common end of a split in which every UAV's work must fit.
+double earliest_common_end(const std::function<bool(double)>& fits);
+
 /// Splits `cells` (flat indices of a grid `width` wide; sorted here into the boustrophedon's
 /// order of `band_start`, as band_order_partition's) into consecutive runs, one per UAV of `uavs`
 /// (id and position, in the order the runs go to them): the earliest common end t for which
