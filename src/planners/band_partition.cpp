@@ -44,6 +44,22 @@ class BandOrder {
     const int band = band_of_[static_cast<std::size_t>(x)];
     return {band, band % 2 == 0 ? y : -y, x};
   }
+  /// Sorts cells into the boustrophedon's order.
+  void sort(std::span<int> cells) const {
+    std::sort(cells.begin(), cells.end(), [this](int a, int b) { return key(a) < key(b); });
+  }
+  /// Whether `ordered[j]` (cells in this order) is the first of its band / of its row of a band.
+  bool begins_band(std::span<const int> ordered, std::size_t j) const {
+    return j == 0 || key(ordered[j - 1])[0] != key(ordered[j])[0];
+  }
+  bool begins_row(std::span<const int> ordered, std::size_t j) const {
+    return begins_band(ordered, j) || key(ordered[j - 1])[1] != key(ordered[j])[1];
+  }
+  /// The flight `ordered[j]` begins: `row_cost` for a row of a band, `band_cost` more for a band.
+  double begun(std::span<const int> ordered, std::size_t j, double row_cost,
+               double band_cost) const {
+    return (begins_row(ordered, j) ? row_cost : 0.0) + (begins_band(ordered, j) ? band_cost : 0.0);
+  }
 
  private:
   int width_;
@@ -61,19 +77,23 @@ partition::Partition band_order_partition(const world::HullMask& hull,
   const int width = hull.width();
   const bool weighted = extra.size() > 0;
   const BandOrder band_order(band_start, width);
-  const auto key = [&](int i) { return band_order.key(i); };
   std::vector<int> order(hull.cells());
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
-  std::vector<double> cost(order.size());
+  band_order.sort(order);
+  // The rows of the bands, in order: [row_begin[r], row_begin[r + 1]) of `order`, and their work.
+  std::vector<std::size_t> row_begin;
+  std::vector<double> row_work;
   double total = 0;
   for (std::size_t j = 0; j < order.size(); ++j) {
-    const int i = order[j];
-    const bool first_of_band = j == 0 || key(order[j - 1])[0] != key(i)[0];
-    const bool first_of_row = first_of_band || key(order[j - 1])[1] != key(i)[1];
-    cost[j] = (weighted ? extra[i] : 0.0) + (first_of_row ? row_cost : 0.0) +
-              (first_of_band ? band_cost : 0.0);
-    total += cost[j];
+    if (band_order.begins_row(order, j)) {
+      row_begin.push_back(j);
+      row_work.push_back(0.0);
+    }
+    const double work =
+        band_order.begun(order, j, row_cost, band_cost) + (weighted ? extra[order[j]] : 0.0);
+    row_work.back() += work;
+    total += work;
   }
+  row_begin.push_back(order.size());
   // The pieces go to the UAVs in the order of their starts along the hull.
   std::vector<int> uav_of_piece(static_cast<std::size_t>(n));
   std::iota(uav_of_piece.begin(), uav_of_piece.end(), 0);
@@ -87,19 +107,6 @@ partition::Partition band_order_partition(const world::HullMask& hull,
   out.region_cells.assign(static_cast<std::size_t>(n), 0);
   out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
   out.desired_weight.assign(static_cast<std::size_t>(n), total / n);
-  // The rows of the bands, in order: [row_begin[r], row_begin[r + 1]) of `order`, and their work.
-  std::vector<std::size_t> row_begin;
-  std::vector<double> row_work;
-  for (std::size_t j = 0; j < order.size(); ++j) {
-    const bool first_of_row = j == 0 || key(order[j - 1])[0] != key(order[j])[0] ||
-                              key(order[j - 1])[1] != key(order[j])[1];
-    if (first_of_row) {
-      row_begin.push_back(j);
-      row_work.push_back(0.0);
-    }
-    row_work.back() += cost[j];
-  }
-  row_begin.push_back(order.size());
   const std::size_t rows = row_work.size();
   if (rows < static_cast<std::size_t>(n)) {
     throw Error(fmt::format("band partition: {} rows of bands for {} UAVs", rows, n));
@@ -146,10 +153,6 @@ partition::Partition band_order_partition(const world::HullMask& hull,
   return out;
 }
 
-}  // namespace hullinspect::planners
-
-namespace hullinspect::planners {
-
 double earliest_common_end(const std::function<bool(double)>& fits) {
   double lo = 0.0;
   double hi = 1.0;
@@ -167,16 +170,11 @@ void split_in_band_order(std::vector<int>& cells, int width, std::span<const int
                          const std::function<void(int, int)>& assign) {
   if (cells.empty() || uavs.empty()) return;
   const BandOrder band_order(band_start, width);
-  std::sort(cells.begin(), cells.end(),
-            [&](int a, int b) { return band_order.key(a) < band_order.key(b); });
-  // The work up to each cell: a row or band begun there adds its cost.
+  band_order.sort(cells);
+  // The work each cell adds: a row or band begun there.
   std::vector<double> work(cells.size());
-  for (std::size_t j = 0; j < cells.size(); ++j) {
-    const auto k = band_order.key(cells[j]);
-    const bool new_band = j == 0 || band_order.key(cells[j - 1])[0] != k[0];
-    const bool new_row = new_band || band_order.key(cells[j - 1])[1] != k[1];
-    work[j] = (new_row ? row_cost : 0.0) + (new_band ? band_cost : 0.0);
-  }
+  for (std::size_t j = 0; j < cells.size(); ++j)
+    work[j] = band_order.begun(cells, j, row_cost, band_cost);
   const auto cell_at = [width](int i) { return grid::Cell{i % width, i / width}; };
   const auto split = [&](double t, bool give) {
     std::size_t c = 0;

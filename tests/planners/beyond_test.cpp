@@ -35,12 +35,14 @@ MissionSpec spec_for(const std::string& algorithm, const std::string& scenario_n
   return spec;
 }
 
-/// A mission watched by the shared MissionChecker; `checked` is its verdict.
-sim::MissionResult run_checked(const MissionSpec& spec, const world::HullMask& hull,
-                               bool& checked) {
+/// A mission watched by the shared MissionChecker (and `also`, when given); `checked` is the
+/// checker's verdict.
+sim::MissionResult run_checked(const MissionSpec& spec, const world::HullMask& hull, bool& checked,
+                               MissionObserver* also = nullptr) {
   testing::MissionChecker checker;
   MissionOptions options;
   options.observers = {&checker};
+  if (also != nullptr) options.observers.push_back(also);
   sim::MissionResult result = run_mission(spec, hull, options);
   checked = checker.ok();
   return result;
@@ -532,15 +534,13 @@ TEST(SweepInspect, InspectBandEndsLeavesLessForTheHelpers) {
           for (std::uint64_t seed = 1; seed <= 3; ++seed) {
             auto spec = spec_for("sweep-inspect", scenario, s2, n, seed);
             spec.planner_options = {{"inspect-band-ends", ends ? "true" : "false"}};
-            testing::MissionChecker checker;
             HelpInspectionCounter counter;
-            MissionOptions options;
-            options.observers = {&checker, &counter};
-            const auto r = run_mission(spec, hull, options);
+            bool checked = false;
+            const auto r = run_checked(spec, hull, checked, &counter);
             SCOPED_TRACE(::testing::Message() << scenario << " s2=" << s2 << " n=" << n
                                               << " seed=" << seed << " ends=" << ends);
             ASSERT_TRUE(r.complete);
-            EXPECT_TRUE(checker.ok());
+            EXPECT_TRUE(checked);
             help[ends ? 0 : 1] += counter.help_inspections;
             t_c[ends ? 0 : 1] += *r.t_c;
           }
@@ -660,14 +660,12 @@ TEST(SweepInspect, ShareSweepHandsTheLastBandsOver) {
     for (std::uint64_t seed : {30, 37, 39}) {
       auto spec = spec_for("sweep-inspect", "inhomogeneous", 7, 4, seed);
       spec.planner_options = {{"share-sweep", share ? "true" : "false"}};
-      testing::MissionChecker checker;
       SweepTailWatcher watcher;
-      MissionOptions options;
-      options.observers = {&checker, &watcher};
-      const auto r = run_mission(spec, hull, options);
+      bool checked = false;
+      const auto r = run_checked(spec, hull, checked, &watcher);
       SCOPED_TRACE(::testing::Message() << "share-sweep=" << share << " seed=" << seed);
       ASSERT_TRUE(r.complete);
-      EXPECT_TRUE(checker.ok());
+      EXPECT_TRUE(checked);
       if (share) {
         EXPECT_GE(watcher.takes, 1);
       } else {
