@@ -180,12 +180,12 @@ void split_in_band_order(std::vector<int>& cells, int width, std::span<const int
     std::size_t c = 0;
     for (const auto& [k, pos] : uavs) {
       const std::size_t first = c;
+      const int to_first = c < cells.size() ? grid::manhattan(pos, cell_at(cells[first])) : 0;
       double run = 0.0;
       while (c < cells.size()) {
         // A run begun mid-row still pays for its first row.
         const double step = c == first ? std::max(work[c], row_cost) : work[c];
-        const int flight = std::min(grid::manhattan(pos, cell_at(cells[first])),
-                                    grid::manhattan(pos, cell_at(cells[c])));
+        const int flight = std::min(to_first, grid::manhattan(pos, cell_at(cells[c])));
         if (load[static_cast<std::size_t>(k)] + flight + run + step > t) break;
         run += step;
         if (give) assign(k, cells[c]);
