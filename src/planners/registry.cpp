@@ -151,6 +151,10 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("inspect-band-ends", &SweepInspectOptions::inspect_band_ends,
             "while sweeping also descend for a detected cell in the footprint that the flight's "
             "current leg comes no nearer to (beyond a band's trimmed end)")
+      .flag("plan-prior-tour", &SweepInspectOptions::plan_prior_tour,
+            "visit the prior's cells in the order of a planned tour (nearest neighbour, 2-opt, "
+            "Or-opt), planned again when its next cell was seen (false: the nearest cell at "
+            "every step)")
       .number("inspection-weight", &SweepInspectOptions::inspection_weight, 0.0, 100.0,
               "in the band partition, the inspections expected at a cell the sweep detects (its "
               "weight's excess over 1) count this many times (a toured prior cell's once)")

@@ -7,6 +7,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/planners/band_partition.hpp"
+#include "hullinspect/planners/open_tour.hpp"
 #include "hullinspect/planners/prior_weights.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
@@ -181,6 +182,8 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   width_ = context.hull.width();
   tour_left_.clear();
   tour_left_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
+  tour_points_.clear();
+  tour_points_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
   if (options_.prior_first && options_.share_prior) balance_prior_tours(context.starts);
   prior_true_ = 0;
   prior_false_ = 0;
@@ -520,6 +523,15 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       }
     } else {
       if (u.z == 2) return sim::Action::kChangePlane;
+      if (options_.plan_prior_tour) {
+        // Plan anew when the cell it flew to was seen (on the way, or by another UAV) or went to
+        // another UAV (share-prior): the rest of the tour may be ordered better from here.
+        if (p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen ||
+            std::find(cells.begin(), cells.end(), p.target_cell) == cells.end())
+          p.target_cell = first_of_planned_tour(u.pos, cells);
+        p.target = reach_position(k, u.pos, view.map.cell(p.target_cell), h1_);
+        return step(k, u.pos, p.target);
+      }
       int best = -1;
       int best_d = std::numeric_limits<int>::max();
       for (int i : cells) {
@@ -834,6 +846,16 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
                      [&](int a, int b) { return a % width_ < b % width_; });
     split_in_slabs(split_cells_, width_, split_helpers_, split_load_, cells_per_step, assign);
   }
+}
+
+int SweepInspectPlanner::first_of_planned_tour(grid::Cell from, std::span<const int> cells) {
+  tour_points_.clear();
+  for (const int i : cells) tour_points_.push_back(hull_cell(i));
+  // No end cost: pulling the tour's end towards the nearer end of the sweep after it (weight 0.5
+  // of the flight there) lowered T_m by 1.2 s and raised T_c by 0.9 s on the tuning seeds.
+  plan_open_tour(from, tour_points_, {.reach = h1_, .ends = {}, .end_weight = 0.0});
+  const grid::Cell first = tour_points_.front();
+  return first.y * width_ + first.x;
 }
 
 int SweepInspectPlanner::tour_steps(grid::Cell from, std::span<const int> cells) {

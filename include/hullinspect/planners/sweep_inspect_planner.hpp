@@ -97,6 +97,10 @@ struct SweepInspectOptions {
   /// that the current leg of the flight comes no nearer to: beyond a band's trimmed end, or
   /// behind its start (false: such cells wait for the helpers).
   bool inspect_band_ends = true;
+  /// Visit the prior's cells in the order of a planned open tour (open_tour.hpp: nearest
+  /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen (false:
+  /// the nearest cell at every step).
+  bool plan_prior_tour = true;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -184,7 +188,12 @@ class SweepInspectPlanner final : public Planner {
   /// tours from `at` end together (kBalancePasses passes over the neighbour pairs).
   void balance_prior_tours(std::span<const grid::Cell> at, const sim::PlannerView* view = nullptr);
   static constexpr int kBalancePasses = 3;
-  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells`.
+  /// plan-prior-tour: the first cell of a planned z = 1 tour from `from` over `cells`.
+  int first_of_planned_tour(grid::Cell from, std::span<const int> cells);
+  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells` (also with
+  /// plan-prior-tour: the planned tour's own length, found by local search, cost 45 times the
+  /// planner time in share-prior's bisections and balanced the tours no better on the tuning
+  /// seeds).
   int tour_steps(grid::Cell from, std::span<const int> cells);
   /// share-sweep: UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
   /// working UAV of its flight part that would end last, if that ends the two at least s2 steps
@@ -227,6 +236,7 @@ class SweepInspectPlanner final : public Planner {
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   std::vector<int> tour_left_;           // scratch of tour_steps
+  std::vector<grid::Cell> tour_points_;  // scratch of first_of_planned_tour
   std::vector<int> split_cells_;
   std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
   /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its

@@ -1,0 +1,153 @@
+// The prior tour's order (planners/open_tour.hpp): a permutation of the points, no 2-opt or
+// Or-opt move left that would shorten it, near the optimum of small instances found by brute
+// force, and its end pulled towards the work after it.
+#include "hullinspect/planners/open_tour.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace hullinspect::planners {
+namespace {
+
+/// A small explicit generator (splitmix64), so the instances are the same everywhere.
+struct Stream {
+  std::uint64_t state;
+  int below(int n) {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return static_cast<int>((z ^ (z >> 31)) % static_cast<std::uint64_t>(n));
+  }
+};
+
+std::vector<grid::Cell> random_points(Stream& rng, int m) {
+  std::vector<grid::Cell> points;
+  for (int i = 0; i < m; ++i) points.push_back({rng.below(60), rng.below(30)});
+  return points;
+}
+
+bool cell_less(grid::Cell a, grid::Cell b) {
+  return a.y != b.y ? a.y < b.y : a.x < b.x;
+}
+
+TEST(OpenTour, LegsWithinTheFootprintCostNothing) {
+  const OpenTourCost cost{.reach = 2, .ends = {}, .end_weight = 0.0};
+  EXPECT_EQ(cost.leg({0, 0}, {2, 2}), 0.0);
+  EXPECT_EQ(cost.leg({0, 0}, {5, 1}), 3.0);
+  EXPECT_EQ(cost.leg({0, 0}, {-4, 7}), 2.0 + 5.0);
+  EXPECT_EQ(cost.end({3, 3}), 0.0);  // no ends: the end costs nothing
+  const std::array<grid::Cell, 2> ends{grid::Cell{0, 0}, grid::Cell{10, 0}};
+  const OpenTourCost with_ends{.reach = 2, .ends = ends, .end_weight = 0.5};
+  EXPECT_EQ(with_ends.end({8, 3}), 0.5 * 5);
+}
+
+TEST(OpenTour, EmptyAndSinglePoint) {
+  std::vector<grid::Cell> none;
+  plan_open_tour({0, 0}, none, {.reach = 2, .ends = {}, .end_weight = 0.0});
+  EXPECT_TRUE(none.empty());
+  std::vector<grid::Cell> one{{4, 4}};
+  plan_open_tour({0, 0}, one, {.reach = 2, .ends = {}, .end_weight = 0.0});
+  EXPECT_EQ(one.front(), (grid::Cell{4, 4}));
+}
+
+TEST(OpenTour, IsAPermutationWithNoImprovingMoveLeft) {
+  Stream rng{7};
+  for (int instance = 0; instance < 60; ++instance) {
+    const int m = 2 + rng.below(40);
+    const std::vector<grid::Cell> input = random_points(rng, m);
+    const std::array<grid::Cell, 2> ends{grid::Cell{0, 15}, grid::Cell{59, 15}};
+    const OpenTourCost cost{.reach = 2, .ends = ends, .end_weight = instance % 2 == 0 ? 0.0 : 0.5};
+    const grid::Cell from{rng.below(60), rng.below(30)};
+    std::vector<grid::Cell> tour = input;
+    plan_open_tour(from, tour, cost);
+
+    std::vector<grid::Cell> a = input;
+    std::vector<grid::Cell> b = tour;
+    std::sort(a.begin(), a.end(), cell_less);
+    std::sort(b.begin(), b.end(), cell_less);
+    ASSERT_EQ(a, b) << "instance " << instance;
+
+    const double planned = cost.of(from, tour);
+    const auto size = static_cast<std::ptrdiff_t>(tour.size());
+    // Every 2-opt move: reverse tour[i, j).
+    for (std::ptrdiff_t i = 0; i < size; ++i) {
+      for (std::ptrdiff_t j = i + 2; j <= size; ++j) {
+        std::vector<grid::Cell> t = tour;
+        std::reverse(t.begin() + i, t.begin() + j);
+        EXPECT_GE(cost.of(from, t), planned - 1e-9)
+            << "instance " << instance << " 2-opt " << i << ".." << j;
+      }
+    }
+    // Every Or-opt move: a run of 1-3 points taken out and put back anywhere, either way round.
+    for (std::ptrdiff_t len = 1; len <= 3; ++len) {
+      for (std::ptrdiff_t i = 0; i + len <= size; ++i) {
+        std::vector<grid::Cell> rest = tour;
+        const std::vector<grid::Cell> run(tour.begin() + i, tour.begin() + i + len);
+        rest.erase(rest.begin() + i, rest.begin() + i + len);
+        for (std::ptrdiff_t at = 0; at <= static_cast<std::ptrdiff_t>(rest.size()); ++at) {
+          for (bool reversed : {false, true}) {
+            std::vector<grid::Cell> t = rest;
+            t.insert(t.begin() + at, run.begin(), run.end());
+            if (reversed) std::reverse(t.begin() + at, t.begin() + at + len);
+            EXPECT_GE(cost.of(from, t), planned - 1e-9)
+                << "instance " << instance << " or-opt " << i << "+" << len << " to " << at;
+          }
+        }
+      }
+    }
+  }
+}
+
+// Against the best order of every permutation (up to 7 points): never worse than 1.25× the
+// optimum, and the optimum itself on most instances.
+TEST(OpenTour, NearTheBruteForceOptimum) {
+  Stream rng{11};
+  int optimal = 0;
+  double excess = 0.0;
+  constexpr int kInstances = 150;
+  for (int instance = 0; instance < kInstances; ++instance) {
+    const int m = 3 + rng.below(5);
+    std::vector<grid::Cell> points = random_points(rng, m);
+    const std::array<grid::Cell, 2> ends{grid::Cell{0, 0}, grid::Cell{59, 29}};
+    const OpenTourCost cost{.reach = 2, .ends = ends, .end_weight = 0.5};
+    const grid::Cell from{30, 15};
+    std::vector<grid::Cell> tour = points;
+    plan_open_tour(from, tour, cost);
+    std::sort(points.begin(), points.end(), cell_less);
+    double best = cost.of(from, points);
+    while (std::next_permutation(points.begin(), points.end(), cell_less))
+      best = std::min(best, cost.of(from, points));
+    const double planned = cost.of(from, tour);
+    EXPECT_LE(planned, 1.25 * best + 1e-9) << "instance " << instance;
+    if (planned <= best + 1e-9) ++optimal;
+    if (best > 0) excess += planned / best - 1.0;
+  }
+  EXPECT_GE(optimal, kInstances * 8 / 10);
+  EXPECT_LE(excess / kInstances, 0.02);
+}
+
+// Points along a row, the UAV in the middle: without an end cost it walks to the nearer side
+// first; with the work after the tour at the left end, the tour ends there instead.
+TEST(OpenTour, TheEndCostPullsTheTourToWhereTheSweepBegins) {
+  std::vector<grid::Cell> points;
+  for (int x = 0; x <= 60; x += 10) points.push_back({x, 5});
+  const grid::Cell from{25, 5};
+  std::vector<grid::Cell> free_end = points;
+  plan_open_tour(from, free_end, {.reach = 2, .ends = {}, .end_weight = 0.0});
+  EXPECT_EQ(free_end.back().x, 60);  // left first (nearer), then all the way right
+  const std::array<grid::Cell, 1> left{grid::Cell{0, 5}};
+  std::vector<grid::Cell> pulled = points;
+  plan_open_tour(from, pulled, {.reach = 2, .ends = left, .end_weight = 0.5});
+  EXPECT_EQ(pulled.back().x, 0);
+  EXPECT_GT(pulled.front().x, from.x);  // right first
+  // 3 to x = 30, 3·8 on to x = 60, 38 back to x = 20, 2·8 on to x = 0 (each leg less the reach).
+  const OpenTourCost cost{.reach = 2, .ends = left, .end_weight = 0.5};
+  EXPECT_EQ(cost.of(from, pulled), 81.0);
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
