@@ -6,32 +6,21 @@
 
 namespace hullinspect::planners {
 
-double OpenTourCost::leg(grid::Cell a, grid::Cell b) const {
+int OpenTourCost::leg(grid::Cell a, grid::Cell b) const {
   return std::max(0, std::abs(a.x - b.x) - reach) + std::max(0, std::abs(a.y - b.y) - reach);
 }
 
-double OpenTourCost::end(grid::Cell last) const {
-  if (ends.empty() || end_weight == 0.0) return 0.0;
-  int nearest = std::numeric_limits<int>::max();
-  for (const grid::Cell e : ends) nearest = std::min(nearest, grid::manhattan(last, e));
-  return end_weight * nearest;
-}
-
-double OpenTourCost::of(grid::Cell from, std::span<const grid::Cell> points) const {
-  double total = 0.0;
+int OpenTourCost::of(grid::Cell from, std::span<const grid::Cell> points) const {
+  int total = 0;
   grid::Cell at = from;
   for (const grid::Cell p : points) {
     total += leg(at, p);
     at = p;
   }
-  return points.empty() ? 0.0 : total + end(at);
+  return total;
 }
 
 namespace {
-
-// Moves whose gain is below this are not taken: sums of the same terms in another order differ
-// in their last bits, and a move must not be taken back and forth.
-constexpr double kMinGain = 1e-9;
 
 /// Node i of the tour: 0 is the start, i ≥ 1 is points[i − 1].
 struct Nodes {
@@ -45,9 +34,9 @@ void nearest_neighbour(grid::Cell from, std::span<grid::Cell> points, const Open
   grid::Cell at = from;
   for (std::size_t i = 0; i < points.size(); ++i) {
     std::size_t best = i;
-    double best_d = std::numeric_limits<double>::infinity();
+    int best_d = std::numeric_limits<int>::max();
     for (std::size_t j = i; j < points.size(); ++j) {
-      const double d = cost.leg(at, points[j]);
+      const int d = cost.leg(at, points[j]);
       if (d < best_d) {
         best_d = d;
         best = j;
@@ -64,12 +53,12 @@ bool two_opt_pass(const Nodes& node, const OpenTourCost& cost) {
   bool improved = false;
   for (std::size_t i = 1; i < m; ++i) {
     for (std::size_t j = i + 1; j <= m; ++j) {
-      // The edges into i and out of j change (out of j: the tour's end when j is last).
-      const double before = cost.leg(node(i - 1), node(i)) +
-                            (j < m ? cost.leg(node(j), node(j + 1)) : cost.end(node(j)));
-      const double after = cost.leg(node(i - 1), node(j)) +
-                           (j < m ? cost.leg(node(i), node(j + 1)) : cost.end(node(i)));
-      if (before - after > kMinGain) {
+      // The edges into i and out of j change (out of j: none when j is the last node).
+      const int before =
+          cost.leg(node(i - 1), node(i)) + (j < m ? cost.leg(node(j), node(j + 1)) : 0);
+      const int after =
+          cost.leg(node(i - 1), node(j)) + (j < m ? cost.leg(node(i), node(j + 1)) : 0);
+      if (after < before) {
         std::reverse(node.points.begin() + static_cast<std::ptrdiff_t>(i - 1),
                      node.points.begin() + static_cast<std::ptrdiff_t>(j));
         improved = true;
@@ -87,23 +76,22 @@ bool or_opt_pass(const Nodes& node, const OpenTourCost& cost) {
   for (std::size_t len = 1; len <= 3; ++len) {
     for (std::size_t a = 1; a + len - 1 <= m; ++a) {
       const std::size_t b = a + len - 1;
-      // Taking the run out joins a − 1 to b + 1 (or makes a − 1 the end).
-      const double removed =
+      // Taking the run out joins a − 1 to b + 1 (or makes a − 1 the last node).
+      const int removed =
           cost.leg(node(a - 1), node(a)) +
-          (b < m ? cost.leg(node(b), node(b + 1)) - cost.leg(node(a - 1), node(b + 1))
-                 : cost.end(node(b)) - cost.end(node(a - 1)));
-      double best_gain = kMinGain;
+          (b < m ? cost.leg(node(b), node(b + 1)) - cost.leg(node(a - 1), node(b + 1)) : 0);
+      int best_gain = 0;
       std::size_t best_t = 0;
       bool best_reversed = false;
       for (std::size_t t = 0; t <= m; ++t) {
         if (t + 1 >= a && t <= b) continue;  // next to or inside the run: no move
-        // Between t and t + 1, or after the last node (the run's far end becomes the end).
+        // Between t and t + 1, or after the last node.
         const bool at_end = t == m;
-        const double base = at_end ? cost.end(node(t)) : cost.leg(node(t), node(t + 1));
-        const double forward = cost.leg(node(t), node(a)) +
-                               (at_end ? cost.end(node(b)) : cost.leg(node(b), node(t + 1)));
-        const double reversed = cost.leg(node(t), node(b)) +
-                                (at_end ? cost.end(node(a)) : cost.leg(node(a), node(t + 1)));
+        const int base = at_end ? 0 : cost.leg(node(t), node(t + 1));
+        const int forward =
+            cost.leg(node(t), node(a)) + (at_end ? 0 : cost.leg(node(b), node(t + 1)));
+        const int reversed =
+            cost.leg(node(t), node(b)) + (at_end ? 0 : cost.leg(node(a), node(t + 1)));
         if (removed - (forward - base) > best_gain) {
           best_gain = removed - (forward - base);
           best_t = t;
@@ -115,7 +103,7 @@ bool or_opt_pass(const Nodes& node, const OpenTourCost& cost) {
           best_reversed = true;
         }
       }
-      if (best_gain > kMinGain) {
+      if (best_gain > 0) {
         // Points index = node − 1: the run is points[a − 1, b), the insertion point after node t.
         const auto it = node.points.begin();
         const auto first = static_cast<std::ptrdiff_t>(a - 1);
@@ -141,8 +129,8 @@ bool or_opt_pass(const Nodes& node, const OpenTourCost& cost) {
 void plan_open_tour(grid::Cell from, std::span<grid::Cell> points, const OpenTourCost& cost) {
   nearest_neighbour(from, points, cost);
   const Nodes node{from, points};
-  // Each pass that changes the tour lowers its cost by more than kMinGain; the cap only bounds
-  // the time on pathological inputs.
+  // Each pass that changes the tour shortens it by at least 1; the cap only bounds the time on
+  // pathological inputs.
   constexpr int kMaxPasses = 50;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     const bool two = two_opt_pass(node, cost);

@@ -1,12 +1,11 @@
 // The prior tour's order (planners/open_tour.hpp): a permutation of the points, no 2-opt or
 // Or-opt move left that would shorten it, near the optimum of small instances found by brute
-// force, and its end pulled towards the work after it.
+// force, and the exact tour of a hand instance.
 #include "hullinspect/planners/open_tour.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -35,22 +34,18 @@ bool cell_less(grid::Cell a, grid::Cell b) {
 }
 
 TEST(OpenTour, LegsWithinTheFootprintCostNothing) {
-  const OpenTourCost cost{.reach = 2, .ends = {}, .end_weight = 0.0};
+  const OpenTourCost cost{.reach = 2};
   EXPECT_EQ(cost.leg({0, 0}, {2, 2}), 0.0);
   EXPECT_EQ(cost.leg({0, 0}, {5, 1}), 3.0);
   EXPECT_EQ(cost.leg({0, 0}, {-4, 7}), 2.0 + 5.0);
-  EXPECT_EQ(cost.end({3, 3}), 0.0);  // no ends: the end costs nothing
-  const std::array<grid::Cell, 2> ends{grid::Cell{0, 0}, grid::Cell{10, 0}};
-  const OpenTourCost with_ends{.reach = 2, .ends = ends, .end_weight = 0.5};
-  EXPECT_EQ(with_ends.end({8, 3}), 0.5 * 5);
 }
 
 TEST(OpenTour, EmptyAndSinglePoint) {
   std::vector<grid::Cell> none;
-  plan_open_tour({0, 0}, none, {.reach = 2, .ends = {}, .end_weight = 0.0});
+  plan_open_tour({0, 0}, none, {.reach = 2});
   EXPECT_TRUE(none.empty());
   std::vector<grid::Cell> one{{4, 4}};
-  plan_open_tour({0, 0}, one, {.reach = 2, .ends = {}, .end_weight = 0.0});
+  plan_open_tour({0, 0}, one, {.reach = 2});
   EXPECT_EQ(one.front(), (grid::Cell{4, 4}));
 }
 
@@ -59,8 +54,7 @@ TEST(OpenTour, IsAPermutationWithNoImprovingMoveLeft) {
   for (int instance = 0; instance < 60; ++instance) {
     const int m = 2 + rng.below(40);
     const std::vector<grid::Cell> input = random_points(rng, m);
-    const std::array<grid::Cell, 2> ends{grid::Cell{0, 15}, grid::Cell{59, 15}};
-    const OpenTourCost cost{.reach = 2, .ends = ends, .end_weight = instance % 2 == 0 ? 0.0 : 0.5};
+    const OpenTourCost cost{.reach = 2};
     const grid::Cell from{rng.below(60), rng.below(30)};
     std::vector<grid::Cell> tour = input;
     plan_open_tour(from, tour, cost);
@@ -71,14 +65,14 @@ TEST(OpenTour, IsAPermutationWithNoImprovingMoveLeft) {
     std::sort(b.begin(), b.end(), cell_less);
     ASSERT_EQ(a, b) << "instance " << instance;
 
-    const double planned = cost.of(from, tour);
+    const int planned = cost.of(from, tour);
     const auto size = static_cast<std::ptrdiff_t>(tour.size());
     // Every 2-opt move: reverse tour[i, j).
     for (std::ptrdiff_t i = 0; i < size; ++i) {
       for (std::ptrdiff_t j = i + 2; j <= size; ++j) {
         std::vector<grid::Cell> t = tour;
         std::reverse(t.begin() + i, t.begin() + j);
-        EXPECT_GE(cost.of(from, t), planned - 1e-9)
+        EXPECT_GE(cost.of(from, t), planned)
             << "instance " << instance << " 2-opt " << i << ".." << j;
       }
     }
@@ -93,7 +87,7 @@ TEST(OpenTour, IsAPermutationWithNoImprovingMoveLeft) {
             std::vector<grid::Cell> t = rest;
             t.insert(t.begin() + at, run.begin(), run.end());
             if (reversed) std::reverse(t.begin() + at, t.begin() + at + len);
-            EXPECT_GE(cost.of(from, t), planned - 1e-9)
+            EXPECT_GE(cost.of(from, t), planned)
                 << "instance " << instance << " or-opt " << i << "+" << len << " to " << at;
           }
         }
@@ -112,41 +106,35 @@ TEST(OpenTour, NearTheBruteForceOptimum) {
   for (int instance = 0; instance < kInstances; ++instance) {
     const int m = 3 + rng.below(5);
     std::vector<grid::Cell> points = random_points(rng, m);
-    const std::array<grid::Cell, 2> ends{grid::Cell{0, 0}, grid::Cell{59, 29}};
-    const OpenTourCost cost{.reach = 2, .ends = ends, .end_weight = 0.5};
+    const OpenTourCost cost{.reach = 2};
     const grid::Cell from{30, 15};
     std::vector<grid::Cell> tour = points;
     plan_open_tour(from, tour, cost);
     std::sort(points.begin(), points.end(), cell_less);
-    double best = cost.of(from, points);
+    int best = cost.of(from, points);
     while (std::next_permutation(points.begin(), points.end(), cell_less))
       best = std::min(best, cost.of(from, points));
-    const double planned = cost.of(from, tour);
-    EXPECT_LE(planned, 1.25 * best + 1e-9) << "instance " << instance;
-    if (planned <= best + 1e-9) ++optimal;
-    if (best > 0) excess += planned / best - 1.0;
+    const int planned = cost.of(from, tour);
+    EXPECT_LE(planned, 1.25 * best) << "instance " << instance;
+    if (planned == best) ++optimal;
+    if (best > 0) excess += static_cast<double>(planned) / best - 1.0;
   }
   EXPECT_GE(optimal, kInstances * 8 / 10);
   EXPECT_LE(excess / kInstances, 0.02);
 }
 
-// Points along a row, the UAV in the middle: without an end cost it walks to the nearer side
-// first; with the work after the tour at the left end, the tour ends there instead.
-TEST(OpenTour, TheEndCostPullsTheTourToWhereTheSweepBegins) {
+// Points along a row, the UAV in the middle: it sweeps the nearer side first, then all the way to
+// the other end (3 + 2·8 out to x = 0, 28 back to x = 30, 3·8 on to x = 60, each leg less the
+// reach), not the farther side first (81).
+TEST(OpenTour, AHandInstance) {
   std::vector<grid::Cell> points;
   for (int x = 0; x <= 60; x += 10) points.push_back({x, 5});
   const grid::Cell from{25, 5};
-  std::vector<grid::Cell> free_end = points;
-  plan_open_tour(from, free_end, {.reach = 2, .ends = {}, .end_weight = 0.0});
-  EXPECT_EQ(free_end.back().x, 60);  // left first (nearer), then all the way right
-  const std::array<grid::Cell, 1> left{grid::Cell{0, 5}};
-  std::vector<grid::Cell> pulled = points;
-  plan_open_tour(from, pulled, {.reach = 2, .ends = left, .end_weight = 0.5});
-  EXPECT_EQ(pulled.back().x, 0);
-  EXPECT_GT(pulled.front().x, from.x);  // right first
-  // 3 to x = 30, 3·8 on to x = 60, 38 back to x = 20, 2·8 on to x = 0 (each leg less the reach).
-  const OpenTourCost cost{.reach = 2, .ends = left, .end_weight = 0.5};
-  EXPECT_EQ(cost.of(from, pulled), 81.0);
+  const OpenTourCost cost{.reach = 2};
+  plan_open_tour(from, points, cost);
+  EXPECT_EQ(points.front().x, 20);
+  EXPECT_EQ(points.back().x, 60);
+  EXPECT_EQ(cost.of(from, points), 71);
 }
 
 }  // namespace

@@ -8,19 +8,15 @@
 
 namespace hullinspect::planners {
 
-/// What a tour costs. A leg from a to b costs its Manhattan length less `reach` on each axis (the
+/// What a tour costs: a leg from a to b costs its Manhattan length less `reach` on each axis (the
 /// footprint, Chebyshev half-width `reach`, sees b from that far: points within one footprint
-/// cost nothing). The tour's last point costs `end_weight` times its Manhattan distance to the
-/// nearer of `ends` (where the work after the tour begins; none: nothing).
+/// cost nothing).
 struct OpenTourCost {
   int reach = 0;
-  std::span<const grid::Cell> ends;
-  double end_weight = 0.0;
 
-  double leg(grid::Cell a, grid::Cell b) const;
-  double end(grid::Cell last) const;
+  int leg(grid::Cell a, grid::Cell b) const;
   /// The cost of visiting `points` in their order from `from`.
-  double of(grid::Cell from, std::span<const grid::Cell> points) const;
+  int of(grid::Cell from, std::span<const grid::Cell> points) const;
 };
 
 /// Orders `points` (in place) into a short open tour from `from`: nearest neighbour, then 2-opt
