@@ -67,90 +67,134 @@ class BandOrder {
 };
 }  // namespace
 
-partition::Partition band_order_partition(const world::HullMask& hull,
-                                          const grid::Grid<double>& extra,
-                                          std::span<const int> band_start,
-                                          std::span<const grid::Cell> starts, double row_cost,
-                                          double band_cost) {
-  const auto t0 = std::chrono::steady_clock::now();
+BandPieces::BandPieces(const world::HullMask& hull, const grid::Grid<double>& extra,
+                       std::span<const int> band_start, std::span<const grid::Cell> starts,
+                       double row_cost, double band_cost)
+    : hull_(&hull), order_(hull.cells()) {
   const int n = static_cast<int>(starts.size());
-  const int width = hull.width();
   const bool weighted = extra.size() > 0;
-  const BandOrder band_order(band_start, width);
-  std::vector<int> order(hull.cells());
-  band_order.sort(order);
-  // The rows of the bands, in order: [row_begin[r], row_begin[r + 1]) of `order`, and their work.
-  std::vector<std::size_t> row_begin;
-  std::vector<double> row_work;
-  double total = 0;
-  for (std::size_t j = 0; j < order.size(); ++j) {
-    if (band_order.begins_row(order, j)) {
-      row_begin.push_back(j);
-      row_work.push_back(0.0);
+  const BandOrder band_order(band_start, hull.width());
+  band_order.sort(order_);
+  // The rows of the bands, in order: [row_begin_[r], row_begin_[r + 1]) of `order_`, their work
+  // and the prefix sums of their extra work.
+  extra_before_.push_back(0.0);
+  for (std::size_t j = 0; j < order_.size(); ++j) {
+    if (band_order.begins_row(order_, j)) {
+      row_begin_.push_back(j);
+      row_work_.push_back(0.0);
+      extra_before_.push_back(extra_before_.back());
     }
-    const double work =
-        band_order.begun(order, j, row_cost, band_cost) + (weighted ? extra[order[j]] : 0.0);
-    row_work.back() += work;
-    total += work;
+    const double more = weighted ? extra[order_[j]] : 0.0;
+    row_work_.back() += band_order.begun(order_, j, row_cost, band_cost) + more;
+    extra_before_.back() += more;
+    total_ += band_order.begun(order_, j, row_cost, band_cost) + more;
   }
-  row_begin.push_back(order.size());
+  row_begin_.push_back(order_.size());
   // The pieces go to the UAVs in the order of their starts along the hull.
-  std::vector<int> uav_of_piece(static_cast<std::size_t>(n));
-  std::iota(uav_of_piece.begin(), uav_of_piece.end(), 0);
-  std::stable_sort(uav_of_piece.begin(), uav_of_piece.end(), [&](int a, int b) {
+  uav_of_piece_.resize(static_cast<std::size_t>(n));
+  std::iota(uav_of_piece_.begin(), uav_of_piece_.end(), 0);
+  std::stable_sort(uav_of_piece_.begin(), uav_of_piece_.end(), [&](int a, int b) {
     const grid::Cell sa = starts[static_cast<std::size_t>(a)];
     const grid::Cell sb = starts[static_cast<std::size_t>(b)];
     return sa.x != sb.x ? sa.x < sb.x : sa.y < sb.y;
   });
-  partition::Partition out;
-  out.owner = grid::Grid<std::int16_t>(width, hull.height(), -1);
-  out.region_cells.assign(static_cast<std::size_t>(n), 0);
-  out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
-  out.desired_weight.assign(static_cast<std::size_t>(n), total / n);
-  const std::size_t rows = row_work.size();
-  if (rows < static_cast<std::size_t>(n)) {
-    throw Error(fmt::format("band partition: {} rows of bands for {} UAVs", rows, n));
+  if (rows() < static_cast<std::size_t>(n)) {
+    throw Error(fmt::format("band partition: {} rows of bands for {} UAVs", rows(), n));
   }
-  // Cut where the running sum is nearest k/n of the total, between rows (a row's cells are seen
-  // by the same footprints); every piece gets at least one row.
+}
+
+std::vector<std::size_t> BandPieces::balanced_cuts(std::span<const double> offset) const {
+  // Each UAV's share of the total is less its offset (work it has besides its piece's), so that
+  // piece plus offset comes to the same `common` for every UAV.
+  const int n = uavs();
+  double common = total_;
+  for (int k = 0; k < n; ++k) common += offset_of(offset, k);
+  common /= n;
+  // Cut where the running sum is nearest each share, between rows (a row's cells are seen by the
+  // same footprints); every piece gets at least one row.
+  std::vector<std::size_t> cuts;
   std::size_t next = 0;
   double running = 0;
+  double target = 0;
   for (int piece = 0; piece < n; ++piece) {
-    const int k = uav_of_piece[static_cast<std::size_t>(piece)];
-    const double target = total * (piece + 1) / n;
+    target += common - offset_of(offset, uav_of_piece(piece));
     const std::size_t later = static_cast<std::size_t>(n - piece - 1);
     const std::size_t first = next;
-    while (next + later < rows) {
+    while (next + later < rows()) {
       if (piece < n - 1 && next > first &&
-          std::abs(running + row_work[next] - target) > std::abs(running - target)) {
+          std::abs(running + row_work_[next] - target) > std::abs(running - target)) {
         break;
       }
-      for (std::size_t j = row_begin[next]; j < row_begin[next + 1]; ++j) {
-        out.owner[order[j]] = static_cast<std::int16_t>(k);
-        out.region_cells[static_cast<std::size_t>(k)] += 1;
-      }
-      out.region_weight[static_cast<std::size_t>(k)] += row_work[next];
-      running += row_work[next];
+      running += row_work_[next];
       ++next;
     }
+    if (piece < n - 1) cuts.push_back(next);
   }
-  grid::Grid<std::uint8_t> in_region(width, hull.height(), 0);
+  return cuts;
+}
+
+void BandPieces::assign_rows(grid::Grid<std::int16_t>& owner, std::size_t lo, std::size_t hi,
+                             int k) const {
+  for (std::size_t j = row_begin_[lo]; j < row_begin_[hi]; ++j)
+    owner[order_[j]] = static_cast<std::int16_t>(k);
+}
+
+double BandPieces::work(std::size_t lo, std::size_t hi) const {
+  double sum = 0;
+  for (std::size_t r = lo; r < hi; ++r) sum += row_work_[r];
+  return sum;
+}
+
+partition::Partition BandPieces::cut(std::span<const std::size_t> cuts,
+                                     std::span<const double> offset) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int n = uavs();
+  const int width = hull_->width();
+  partition::Partition out;
+  out.owner = grid::Grid<std::int16_t>(width, hull_->height(), -1);
+  out.region_cells.assign(static_cast<std::size_t>(n), 0);
+  out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
+  out.desired_weight.assign(static_cast<std::size_t>(n), 0.0);
+  double common = total_;
+  for (int k = 0; k < n; ++k) common += offset_of(offset, k);
+  common /= n;
+  for (int piece = 0; piece < n; ++piece) {
+    const std::size_t lo = piece == 0 ? 0 : cuts[static_cast<std::size_t>(piece - 1)];
+    const std::size_t hi = piece == n - 1 ? rows() : cuts[static_cast<std::size_t>(piece)];
+    const int k = uav_of_piece(piece);
+    const auto kk = static_cast<std::size_t>(k);
+    assign_rows(out.owner, lo, hi, k);
+    out.region_cells[kk] = static_cast<int>(row_begin_[hi] - row_begin_[lo]);
+    out.region_weight[kk] = work(lo, hi);
+    out.desired_weight[kk] = common - offset_of(offset, k);
+  }
+  grid::Grid<std::uint8_t> in_region(width, hull_->height(), 0);
   grid::Grid<int> labels;
   grid::BfsScratch scratch;
   for (int k = 0; k < n; ++k) {
-    for (int i : hull.cells()) in_region[i] = out.owner[i] == k;
+    for (int i : hull_->cells()) in_region[i] = out.owner[i] == k;
     if (grid::label_components(in_region, labels, scratch) != 1) {
       throw Error(fmt::format("band partition: the piece of UAV {} is not 4-connected on hull '{}'",
-                              k, hull.source()));
+                              k, hull_->source()));
     }
   }
   double worst = 0;
   for (int k = 0; k < n; ++k) {
-    worst = std::max(worst, std::abs(out.region_weight[static_cast<std::size_t>(k)] - total / n));
+    const auto kk = static_cast<std::size_t>(k);
+    worst = std::max(worst, std::abs(out.region_weight[kk] - out.desired_weight[kk]));
   }
   out.tolerance = worst;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+partition::Partition band_order_partition(const world::HullMask& hull,
+                                          const grid::Grid<double>& extra,
+                                          std::span<const int> band_start,
+                                          std::span<const grid::Cell> starts, double row_cost,
+                                          double band_cost, std::span<const double> offset) {
+  const BandPieces pieces(hull, extra, band_start, starts, row_cost, band_cost);
+  return pieces.cut(pieces.balanced_cuts(offset), offset);
 }
 
 double earliest_common_end(const std::function<bool(double)>& fits) {

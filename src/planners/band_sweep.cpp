@@ -14,7 +14,11 @@ struct Extent {
 
 std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
                                    BandAxis axis, bool trim_ends, grid::Cell from,
-                                   std::span<const int> band_start) {
+                                   std::span<const int> band_start, int x_lo, int x_hi) {
+  // Only columns [x_lo, x_hi] are looked at (a caller that knows the region's columns saves the
+  // scan of the rest).
+  x_lo = std::max(0, x_lo);
+  x_hi = x_hi < 0 ? owner.width() - 1 : std::min(owner.width() - 1, x_hi);
   const bool rows = axis == BandAxis::kRows;
   const int across_size = rows ? owner.height() : owner.width();
   // "along" runs along a band (x for row bands), "across" from band to band.
@@ -26,7 +30,7 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
   int origin = rows ? 0 : std::numeric_limits<int>::max();
   if (!rows) {
     for (int y = 0; y < owner.height(); ++y) {
-      for (int x = 0; x < owner.width(); ++x) {
+      for (int x = x_lo; x <= x_hi; ++x) {
         if (owner(x, y) == uav) origin = std::min(origin, x);
       }
     }
@@ -35,7 +39,7 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
   }
   std::vector<Extent> bands(static_cast<std::size_t>((across_size - origin + s - 1) / s));
   for (int y = 0; y < owner.height(); ++y) {
-    for (int x = 0; x < owner.width(); ++x) {
+    for (int x = x_lo; x <= x_hi; ++x) {
       if (owner(x, y) != uav) continue;
       Extent& e = bands[static_cast<std::size_t>((across(x, y) - origin) / s)];
       e.lo = std::min(e.lo, along(x, y));

@@ -155,6 +155,14 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "visit the prior's cells in the order of a planned tour (nearest neighbour, 2-opt, "
             "Or-opt), planned again when its next cell was seen (false: the nearest cell at "
             "every step)")
+      .flag("approach-edge", &SweepInspectOptions::approach_edge,
+            "fly to the sweep's first band along the region's edge row when that shortens the "
+            "whole flight (the bands passed are flown only over the cells not yet seen)")
+      .flag("balance-flights", &SweepInspectOptions::balance_flights,
+            "without a prior tour, cut the band partition again so that the planned flights from "
+            "the starts (plus expected inspections) end together")
+      .integer("balance-rounds", &SweepInspectOptions::balance_rounds, 0, 100,
+               "passes of balance-flights over the cuts (0: pieces of equal work)")
       .number("inspection-weight", &SweepInspectOptions::inspection_weight, 0.0, 100.0,
               "in the band partition, the inspections expected at a cell the sweep detects (its "
               "weight's excess over 1) count this many times (a toured prior cell's once)")

@@ -9,6 +9,7 @@
 #include "hullinspect/planners/band_partition.hpp"
 #include "hullinspect/planners/open_tour.hpp"
 #include "hullinspect/planners/prior_weights.hpp"
+#include "hullinspect/planners/sweep_approach.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 namespace hullinspect::planners {
@@ -77,7 +78,7 @@ sim::Action SweepInspectPlanner::step(int k, grid::Cell pos, grid::Cell to) cons
 }
 
 std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::int16_t>& owner,
-                                                         int k, grid::Cell from) {
+                                                         int k, grid::Cell from, bool approach) {
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
   BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
   const bool low = uavs_[static_cast<std::size_t>(k)].low;
@@ -96,6 +97,16 @@ std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::i
       waypoints = std::move(columns);
       axis = BandAxis::kColumns;
     }
+  }
+  uavs_[static_cast<std::size_t>(k)].approach_rest = 0;
+  if (approach && options_.approach_edge && reach_ == nullptr) {
+    // approach-edge: fly to the sweep along the region's edge where that sees the bands' ends.
+    const SweepRequest request{
+        k, band, axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
+    SweepPlan plan = approach_and_sweep(owner, request, from, approach_owner_);
+    if (plan.approach > 0)
+      uavs_[static_cast<std::size_t>(k)].approach_rest = plan.waypoints.size() - plan.approach;
+    return std::move(plan.waypoints);
   }
   if (reach_ != nullptr) {
     // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
@@ -218,12 +229,112 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
   }
   const double step = context.params.s2;
   try {
-    auto pieces = band_order_partition(context.hull, extra, band_start, context.starts, step, step);
+    const BandPieces rows(context.hull, extra, band_start, context.starts, step, step);
+    auto pieces = rows.cut(rows.balanced_cuts());
     band_start_ = std::move(band_start);
+    const auto& hull_cells = context.hull.cells();
+    const bool tours = toured && std::any_of(hull_cells.begin(), hull_cells.end(),
+                                             [&](int i) { return context.prior[i] == 1; });
+    const bool one_plane =
+        std::none_of(dense_column_.begin(), dense_column_.end(), [](char d) { return d != 0; });
+    if (options_.balance_flights && !tours && one_plane && reach_ == nullptr)
+      pieces = balance_flights(rows, std::move(pieces), context);
     return std::make_shared<const partition::Partition>(std::move(pieces));
   } catch (const Error&) {
+    band_start_.clear();
     return nullptr;  // a piece not 4-connected: slabs or the partitioner instead
   }
+}
+
+partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows,
+                                                          partition::Partition pieces,
+                                                          const PlannerContext& context) {
+  // The pieces' work counts a row of a band one step and a band one more, wherever the UAV
+  // starts; but a piece's flight depends on where in it the UAV starts and on how its ends cut
+  // the bands. So the cuts are moved, one at a time, by a few rows either way, as long as that
+  // makes the latest planned end (the flight as planned from the start, with the approach, plus
+  // the expected inspections) earlier, or keeps it and spreads the ends less.
+  const int n = rows.uavs();
+  const double step = context.params.s2;
+  std::vector<std::size_t> cuts = rows.balanced_cuts();
+  owner_ = pieces.owner;
+  uavs_.assign(static_cast<std::size_t>(n), Uav{});
+  const auto first_row = [&](int piece) {
+    return piece == 0 ? std::size_t{0} : cuts[static_cast<std::size_t>(piece - 1)];
+  };
+  const auto end_row = [&](int piece) {
+    return piece == n - 1 ? rows.rows() : cuts[static_cast<std::size_t>(piece)];
+  };
+  const auto planned_end = [&](int piece) {
+    const int k = rows.uav_of_piece(piece);
+    return planned_sweep_steps(k, context.starts[static_cast<std::size_t>(k)]) +
+           rows.extra(first_row(piece), end_row(piece)) / step;
+  };
+  std::vector<double> ends(static_cast<std::size_t>(n));
+  for (int piece = 0; piece < n; ++piece)
+    ends[static_cast<std::size_t>(piece)] = planned_end(piece);
+  const auto score = [&] {
+    double latest = 0;
+    double squares = 0;
+    for (double e : ends) {
+      latest = std::max(latest, e);
+      squares += e * e;
+    }
+    return std::pair{latest, squares};
+  };
+  auto best = score();
+  for (int round = 0; round < options_.balance_rounds; ++round) {
+    bool moved_any = false;
+    for (int c = 0; c + 1 < n; ++c) {
+      const auto cc = static_cast<std::size_t>(c);
+      for (const int delta : {-60, -45, -30, -20, -10, -5, -3, -1, 1, 3, 5, 10, 20, 30, 45, 60}) {
+        const std::size_t old = cuts[cc];
+        const long moved = static_cast<long>(old) + delta;
+        if (moved <= static_cast<long>(first_row(c)) || moved >= static_cast<long>(end_row(c + 1)))
+          continue;  // every piece keeps a row
+        const auto cut = static_cast<std::size_t>(moved);
+        const auto give = [&](std::size_t at) {
+          if (at > old) rows.assign_rows(owner_, old, at, rows.uav_of_piece(c));
+          if (at < old) rows.assign_rows(owner_, at, old, rows.uav_of_piece(c + 1));
+        };
+        give(cut);
+        cuts[cc] = cut;
+        const double before_c = ends[cc];
+        const double before_next = ends[cc + 1];
+        ends[cc] = planned_end(c);
+        ends[cc + 1] = planned_end(c + 1);
+        const auto now = score();
+        if (now < best) {
+          best = now;
+          moved_any = true;
+          continue;
+        }
+        cuts[cc] = old;  // undo
+        if (cut > old) rows.assign_rows(owner_, old, cut, rows.uav_of_piece(c + 1));
+        if (cut < old) rows.assign_rows(owner_, cut, old, rows.uav_of_piece(c));
+        ends[cc] = before_c;
+        ends[cc + 1] = before_next;
+      }
+    }
+    if (!moved_any) break;
+  }
+  try {
+    return rows.cut(cuts);
+  } catch (const Error&) {
+    return pieces;  // a moved cut left a piece in two: the equal-work pieces
+  }
+}
+
+double SweepInspectPlanner::planned_sweep_steps(int k, grid::Cell from) {
+  // As the sweep will be planned (sweep_from), both parts when its cells lie on both planes.
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  const auto first = sweep_from(k, from);
+  double steps = flight_length(from, first);
+  if (p.other_part && !first.empty()) {
+    const auto second = part_strips(k, !p.low, first.back());
+    steps += flight_length(first.back(), second);
+  }
+  return steps;
 }
 
 void SweepInspectPlanner::find_dense_columns(const PlannerContext& context) {
@@ -256,14 +367,15 @@ void SweepInspectPlanner::find_dense_columns(const PlannerContext& context) {
   }
 }
 
-std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::Cell from) {
+std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::Cell from,
+                                                         bool approach) {
   part_owner_ = owner_;
   for (int i : hull_cells_) {
     if (part_owner_[i] == k && (dense_column_[static_cast<std::size_t>(i % width_)] != 0) != low)
       part_owner_[i] = -1;
   }
   uavs_[static_cast<std::size_t>(k)].low = low;
-  return strips_from(part_owner_, k, from);
+  return strips_from(part_owner_, k, from, approach);
 }
 
 std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
@@ -304,17 +416,11 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
     const auto start = [&](const std::vector<grid::Cell>& w) {
       return w.empty() ? std::numeric_limits<int>::max() : distances.distance(from, w.front());
     };
-    // Each plan sets the UAV's band axis (and part_strips its plane): keep the chosen one's.
-    std::vector<grid::Cell> high = part_strips(k, false, from);
-    const BandAxis high_axis = p.axis;
-    std::vector<grid::Cell> low = part_strips(k, true, from);
-    if (start(low) < start(high)) {
-      waypoints = std::move(low);
-    } else {
-      waypoints = std::move(high);
-      p.low = false;
-      p.axis = high_axis;
-    }
+    // The plain sweeps' first waypoints decide (an approach would start both beside `from`);
+    // the chosen part is then planned with its approach, which sets the UAV's axis and plane.
+    const bool low_first =
+        start(part_strips(k, true, from, false)) < start(part_strips(k, false, from, false));
+    waypoints = part_strips(k, low_first, from);
     p.other_part = true;
   }
   // Leaving a z = 1 sweep: what is pending around here is inspected before it climbs.
@@ -681,7 +787,18 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
 std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::UavState& u,
                                                              const sim::PlannerView& view) {
   Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (options_.skip_seen_bands) skip_seen_bands(p, u.pos, view);
+  if (p.approach_rest > 0 && p.sweep.remaining().size() <= p.approach_rest) {
+    // The approach is flown: its bands are planned again over what is unobserved now, in case
+    // the flight left the approach's line (a re-plan from elsewhere, an inspection).
+    for (int i : hull_cells_) {
+      if (owner_[i] == k && !unobserved(view, i)) owner_[i] = -1;
+    }
+    // As sweep_from planned it: one part of two planes, or all its cells.
+    p.sweep.assign(p.other_part ? part_strips(k, p.low, u.pos, false)
+                                : strips_from(owner_, k, u.pos, false));
+  }
+  // An approach's legs are not bands: none is skipped (its line leg may see nothing new).
+  if (options_.skip_seen_bands && p.approach_rest == 0) skip_seen_bands(p, u.pos, view);
   const sim::Action a = p.sweep.next_action(u.pos);
   if (a != sim::Action::kHover) return a;
   if (p.other_part) return next_part(k, u, view);
@@ -783,6 +900,8 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
   }
   Uav& p = uavs_[static_cast<std::size_t>(j)];
   p.sweep.assign(std::move(tail));
+  p.approach_rest = 0;  // whatever approach is left is the donor's
+  q.approach_rest = 0;
   p.axis = q.axis;
   p.low = q.low;
   p.other_part = false;

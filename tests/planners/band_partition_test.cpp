@@ -72,6 +72,30 @@ TEST(BandPartition, ExactPiecesOnARectangle) {
   EXPECT_EQ(owners(costed), std::vector<std::string>(6, "000000111111"));
 }
 
+// An offset (work a UAV has besides its piece) shortens its piece by half of it against the
+// other's: on the 12 × 6 rectangle (24 rows of 1), offsets {4, 0} make the common share (24 + 4) /
+// 2 = 14, so UAV 0 gets 10 rows (band 0 and band 1's top four) and UAV 1 14. BandPieces cuts as
+// band_order_partition, and moving a cut moves exactly the rows between.
+TEST(BandPartition, OffsetsShortenAPieceAndCutsMoveRows) {
+  const world::HullMask hull = hull_from(std::vector<std::string>(6, std::string(12, '#')));
+  const std::vector<int> band_start = column_band_starts(std::vector<int>(12, 3));
+  const std::vector<grid::Cell> two{{1, 1}, {10, 1}};
+  const std::vector<double> offset{4.0, 0.0};
+  const auto p = band_order_partition(hull, {}, band_start, two, 1.0, 0.0, offset);
+  EXPECT_EQ(owners(p), (std::vector<std::string>{"000000111111", "000000111111", "000000111111",
+                                                 "000000111111", "000111111111", "000111111111"}));
+  EXPECT_EQ(p.region_weight, (std::vector<double>{10.0, 14.0}));
+  EXPECT_EQ(p.desired_weight, (std::vector<double>{10.0, 14.0}));
+  const BandPieces rows(hull, {}, band_start, two, 1.0, 0.0);
+  EXPECT_EQ(rows.rows(), 24u);
+  EXPECT_EQ(rows.balanced_cuts(offset), (std::vector<std::size_t>{10}));
+  EXPECT_EQ(owners(rows.cut(rows.balanced_cuts())), std::vector<std::string>(6, "000000111111"));
+  grid::Grid<std::int16_t> owner = rows.cut(std::vector<std::size_t>{10}).owner;
+  rows.assign_rows(owner, 10, 12, 0);  // band 1's two bottom rows (flown down: rows 10-11)
+  EXPECT_EQ(owner, rows.cut(std::vector<std::size_t>{12}).owner);
+  EXPECT_DOUBLE_EQ(rows.work(0, 12), 12.0);
+}
+
 // Cells' extra work moves the cut: the left band's rows weigh more, so its UAV gets fewer.
 TEST(BandPartition, ExtraWorkMovesTheCut) {
   const world::HullMask hull = hull_from(std::vector<std::string>(4, std::string(6, '#')));

@@ -28,13 +28,53 @@ std::vector<int> column_band_starts(std::span<const int> width_of_column);
 /// each cell's `extra` (e.g. the inspections expected there; empty: none). Every piece is then
 /// cut, at the start of a row, where the running sum is nearest k/n of the total, the pieces
 /// going to the UAVs in the order of their starts' x (as the stripes partitioner's slabs); a tie
-/// takes the row. Throws Error when there are fewer rows than UAVs or a piece is not 4-connected
-/// (a column of the hull that is not one run of cells can cut one).
+/// takes the row. With `offset` (per UAV, by id; empty: none) a UAV's piece is short of the others'
+/// by its offset (work it has besides the piece, in the same unit), so that piece plus offset is
+/// the same for every UAV. Throws Error when there are fewer rows than UAVs or a piece is not
+/// 4-connected (a column of the hull that is not one run of cells can cut one).
 partition::Partition band_order_partition(const world::HullMask& hull,
                                           const grid::Grid<double>& extra,
                                           std::span<const int> band_start,
                                           std::span<const grid::Cell> starts, double row_cost,
-                                          double band_cost);
+                                          double band_cost, std::span<const double> offset = {});
+
+/// The rows of band_order_partition's boustrophedon and pieces cut between them: piece j (the
+/// j-th along the hull) goes to uav_of_piece(j), and a cut is the first row of the next piece.
+class BandPieces {
+ public:
+  /// As band_order_partition's arguments; throws Error when there are fewer rows than UAVs.
+  BandPieces(const world::HullMask& hull, const grid::Grid<double>& extra,
+             std::span<const int> band_start, std::span<const grid::Cell> starts, double row_cost,
+             double band_cost);
+  std::size_t rows() const { return row_work_.size(); }
+  int uavs() const { return static_cast<int>(uav_of_piece_.size()); }
+  int uav_of_piece(int piece) const { return uav_of_piece_[static_cast<std::size_t>(piece)]; }
+  /// The n − 1 cuts of band_order_partition (with its `offset`).
+  std::vector<std::size_t> balanced_cuts(std::span<const double> offset = {}) const;
+  /// The partition of `cuts` (increasing, every piece at least one row); its desired weights are
+  /// the shares of `offset` as in balanced_cuts. Throws Error when a piece is not 4-connected.
+  partition::Partition cut(std::span<const std::size_t> cuts,
+                           std::span<const double> offset = {}) const;
+  /// Sets the owner of the cells of rows [lo, hi) to k.
+  void assign_rows(grid::Grid<std::int16_t>& owner, std::size_t lo, std::size_t hi, int k) const;
+  /// The work of rows [lo, hi), and the `extra` part of it.
+  double work(std::size_t lo, std::size_t hi) const;
+  double extra(std::size_t lo, std::size_t hi) const {
+    return extra_before_[hi] - extra_before_[lo];
+  }
+
+ private:
+  static double offset_of(std::span<const double> offset, int k) {
+    return offset.empty() ? 0.0 : offset[static_cast<std::size_t>(k)];
+  }
+  const world::HullMask* hull_;
+  std::vector<int> order_;  // hull cells in the boustrophedon's order
+  std::vector<std::size_t> row_begin_;
+  std::vector<double> row_work_;
+  std::vector<double> extra_before_;  // prefix sums of the rows' extra work
+  double total_ = 0;
+  std::vector<int> uav_of_piece_;
+};
 
 /// The smallest end t (within 0.25, by doubling then bisection) for which `fits(t)` holds, `fits`
 /// growing with t: the common end of a split in which every UAV's work must fit.

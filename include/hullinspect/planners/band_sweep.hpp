@@ -23,10 +23,12 @@ enum class BandAxis {
 /// Column bands start at the region's leftmost column, so that a region of width w needs
 /// ceil(w / s) of them; with `band_start` (per column, the first column of its band: a band grid
 /// shared by the regions, column_band_starts in band_partition.hpp) at the band of the region's
-/// leftmost column instead. Returns no waypoints when the UAV owns no cell.
+/// leftmost column instead. Returns no waypoints when the UAV owns no cell. Only the columns
+/// [x_lo, x_hi] of `owner` are read (x_hi < 0: up to the last), which must hold all the UAV's.
 std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
                                    BandAxis axis, bool trim_ends, grid::Cell from,
-                                   std::span<const int> band_start = {});
+                                   std::span<const int> band_start = {}, int x_lo = 0,
+                                   int x_hi = -1);
 
 /// Manhattan length of a flight from `from` through `waypoints` (how strips=auto compares two
 /// sweeps).

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "hullinspect/planners/band_partition.hpp"
 #include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
@@ -101,6 +102,15 @@ struct SweepInspectOptions {
   /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen (false:
   /// the nearest cell at every step).
   bool plan_prior_tour = true;
+  /// Fly to the sweep's first band along the region's edge row (and a band's centre line) when
+  /// that makes the whole flight shorter: the bands it passes are then flown only as far as the
+  /// cells it did not see (false: straight there, x then y).
+  bool approach_edge = true;
+  /// Without a prior tour, move the band partition's cuts (a few rows at a time, up to
+  /// `balance_rounds` passes over them) while the UAVs' latest planned end — the flight from its
+  /// start, with the approach, plus expected inspections — gets earlier.
+  bool balance_flights = true;
+  int balance_rounds = 10;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -126,6 +136,7 @@ class SweepInspectPlanner final : public Planner {
     BandAxis axis = BandAxis::kRows;  // the direction of its sweep's bands
     bool low = false;                 // its sweep is flown at z = 1 (low-sweep-above)
     bool other_part = false;          // its cells of the other plane are swept after these
+    std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
@@ -151,6 +162,12 @@ class SweepInspectPlanner final : public Planner {
   /// band-partition: the pieces of one boustrophedon over the hull's bands, of equal expected
   /// work (the request's weights, dense columns at z = 1), and band_start_ for their sweeps;
   /// null when a piece is not 4-connected.
+  /// balance-flights: the band partition's cuts moved a few rows at a time while that makes the
+  /// latest planned end earlier (or keeps it and spreads the ends less).
+  partition::Partition balance_flights(const BandPieces& rows, partition::Partition pieces,
+                                       const PlannerContext& context);
+  /// The steps of UAV k's sweep as planned from `from` over owner_ (Manhattan, both parts).
+  double planned_sweep_steps(int k, grid::Cell from);
   std::shared_ptr<const partition::Partition> band_partition(
       const partition::PartitionRequest& request, const PlannerContext& context);
   bool prior_distrusted() const {
@@ -165,12 +182,13 @@ class SweepInspectPlanner final : public Planner {
   /// other follows).
   std::vector<grid::Cell> sweep_from(int k, grid::Cell from);
   /// The strips over UAV k's cells in dense (`low`) or other columns, flown from `from`; sets
-  /// Uav::low to `low`.
-  std::vector<grid::Cell> part_strips(int k, bool low, grid::Cell from);
+  /// Uav::low to `low`. `approach` as strips_from's.
+  std::vector<grid::Cell> part_strips(int k, bool low, grid::Cell from, bool approach = true);
   /// The strips over the cells where `owner` is k (bands of s2, or of s1 when Uav::low) flown from
-  /// `from`, from the nearer end (nearer-sweep-end).
-  std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k,
-                                      grid::Cell from);
+  /// `from`, from the nearer end (nearer-sweep-end); led by an edge approach (approach-edge)
+  /// unless `approach` is false.
+  std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
+                                      bool approach = true);
   /// At a failure (take-over-sweep): every cell not yet observed is split anew among the working
   /// UAVs in column slabs, left to right in the order of their positions, so that their predicted
   /// ends — the prior's cells left to visit, the flight to the slab, the slab — are as early as
@@ -232,11 +250,13 @@ class SweepInspectPlanner final : public Planner {
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
-  std::vector<char> handed_over_;        // per UAV: its failure was handled
-  std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
-  grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
-  std::vector<int> tour_left_;           // scratch of tour_steps
-  std::vector<grid::Cell> tour_points_;  // scratch of first_of_planned_tour
+  std::vector<char> handed_over_;   // per UAV: its failure was handled
+  std::vector<char> dense_column_;  // per column: swept at z = 1 (empty: none is)
+  grid::Grid<std::int16_t> part_owner_;
+  grid::Grid<std::int16_t> approach_owner_;  // scratch of approach_and_sweep  // owner_ restricted
+                                             // to one part of a UAV's cells
+  std::vector<int> tour_left_;               // scratch of tour_steps
+  std::vector<grid::Cell> tour_points_;      // scratch of first_of_planned_tour
   std::vector<int> split_cells_;
   std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
   /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its

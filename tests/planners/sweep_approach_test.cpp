@@ -1,0 +1,97 @@
+// Sweep-Inspect's approach to its sweep (planners/sweep_approach.hpp): the flight it plans,
+// approach and bands, sees every cell of the region, for pieces of the band partition and irregular
+// regions, both band axes and footprints 3-11; it is never longer than the plain sweep and shorter
+// over a fleet starting in mid-piece; exact waypoints on a rectangle.
+#include "hullinspect/planners/sweep_approach.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "hullinspect/partition/partitioner.hpp"
+#include "hullinspect/planners/band_partition.hpp"
+#include "hullinspect/world/hull.hpp"
+#include "sweep_coverage.hpp"
+
+namespace hullinspect::planners {
+namespace {
+using sweep_coverage::unseen_cells;
+
+/// Checks the plan of every UAV of `owner` from `starts`: every cell seen, never longer than the
+/// plain sweep; returns the steps saved over all of them.
+int check_plans(const grid::Grid<std::int16_t>& owner, const std::vector<grid::Cell>& starts, int s,
+                BandAxis axis, std::span<const int> band_start) {
+  grid::Grid<std::int16_t> scratch;
+  int saved = 0;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const SweepRequest request{static_cast<int>(k), s, axis, true, band_start, true};
+    const SweepPlan plan = approach_and_sweep(owner, request, starts[k], scratch);
+    const auto plain = plain_sweep(owner, request, starts[k]);
+    SCOPED_TRACE(::testing::Message()
+                 << "uav " << k << " s " << s << " rows " << (axis == BandAxis::kRows));
+    EXPECT_EQ(unseen_cells(owner, static_cast<int>(k), (s - 1) / 2, starts[k], plan.waypoints), 0);
+    const int length = flight_length(starts[k], plan.waypoints);
+    EXPECT_LE(length, flight_length(starts[k], plain));
+    EXPECT_LE(plan.approach, 3u);
+    if (plan.approach == 0) {
+      EXPECT_EQ(plan.waypoints, plain);
+    }
+    saved += flight_length(starts[k], plain) - length;
+  }
+  return saved;
+}
+
+TEST(SweepApproach, SeesEveryCellOfBandPiecesAndIsShorterFromMidPiece) {
+  const auto& hull = world::default_hull();
+  for (int s : {5, 7, 9, 11}) {
+    const std::vector<int> band_start = column_band_starts(std::vector<int>(hull.width(), s));
+    for (int n : {2, 4, 8}) {
+      std::vector<grid::Cell> starts;
+      for (int k = 0; k < n; ++k) starts.push_back({(2 * k + 1) * hull.width() / (2 * n), 15});
+      const auto pieces = band_order_partition(hull, {}, band_start, starts, s, s);
+      // From a start in the middle of its piece the plain sweep first flies to a band's end
+      // over cells its bands see again: the fleet's flights are shorter with the approach.
+      EXPECT_GT(check_plans(pieces.owner, starts, s, BandAxis::kColumns, band_start), 0)
+          << "s " << s << " n " << n;
+    }
+  }
+}
+
+TEST(SweepApproach, SeesEveryCellOfIrregularRegionsForBothAxes) {
+  const auto& hull = world::default_hull();
+  for (int n : {1, 3, 5}) {
+    partition::PartitionRequest request;
+    request.hull = &hull;
+    for (int k = 0; k < n; ++k)
+      request.starts.push_back({(2 * k + 1) * hull.width() / (2 * n), 5 + 7 * k % 20});
+    const auto partition = partition::make_partitioner("transfer", {})->partition(request);
+    for (int s : {3, 7, 11}) {
+      for (const BandAxis axis : {BandAxis::kRows, BandAxis::kColumns})
+        check_plans(partition.owner, request.starts, s, axis, {});
+    }
+  }
+}
+
+// A 21 × 30 region in column bands of 7 (centres 3, 10, 17), from (10, 15). The plain sweep flies
+// to (3, 26) and then three whole bands: 18 + 23 + 7 + 23 + 7 + 23 = 101 steps. Down the middle
+// band's centre line to row 3 first (12 steps) sees its lower 19 rows, so that band is flown over
+// rows 22-26 only: 12 + 7 + 23 + 7 + 4 + 11 + 23 = 87 (the first of the 87-step plans found).
+TEST(SweepApproach, ExactPlanOnARectangle) {
+  grid::Grid<std::int16_t> owner(21, 30, 0);
+  grid::Grid<std::int16_t> scratch;
+  const SweepRequest request{0, 7, BandAxis::kColumns, true, {}, true};
+  const grid::Cell from{10, 15};
+  const auto plain = plain_sweep(owner, request, from);
+  EXPECT_EQ(plain,
+            (std::vector<grid::Cell>{{3, 26}, {3, 3}, {10, 3}, {10, 26}, {17, 26}, {17, 3}}));
+  EXPECT_EQ(flight_length(from, plain), 101);
+  const SweepPlan plan = approach_and_sweep(owner, request, from, scratch);
+  EXPECT_EQ(plan.approach, 1u);
+  EXPECT_EQ(plan.waypoints, (std::vector<grid::Cell>{
+                                {10, 3}, {3, 3}, {3, 26}, {10, 26}, {10, 22}, {17, 26}, {17, 3}}));
+  EXPECT_EQ(flight_length(from, plan.waypoints), 87);
+  EXPECT_EQ(unseen_cells(owner, 0, 3, from, plan.waypoints), 0);
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
