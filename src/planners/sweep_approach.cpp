@@ -19,19 +19,22 @@ std::vector<grid::Cell> plain_sweep(const grid::Grid<std::int16_t>& owner,
 
 SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
                              grid::Cell from, grid::Grid<std::int16_t>& scratch) {
-  // The region's columns: the plans below read only those.
-  SweepRequest within = request;
-  within.x_lo = owner.width();
-  within.x_hi = -1;
+  // The region's extent, in one scan; the plans below read only its columns.
+  int x_lo = owner.width(), x_hi = -1, y_lo = owner.height(), y_hi = -1;
   for (int y = 0; y < owner.height(); ++y) {
     for (int x = 0; x < owner.width(); ++x) {
       if (owner(x, y) != request.uav) continue;
-      within.x_lo = std::min(within.x_lo, x);
-      within.x_hi = std::max(within.x_hi, x);
+      x_lo = std::min(x_lo, x);
+      x_hi = std::max(x_hi, x);
+      y_lo = std::min(y_lo, y);
+      y_hi = std::max(y_hi, y);
     }
   }
   SweepPlan best;
-  if (within.x_hi < 0) return best;
+  if (x_hi < 0) return best;
+  SweepRequest within = request;
+  within.x_lo = x_lo;
+  within.x_hi = x_hi;
   if (scratch.width() != owner.width() || scratch.height() != owner.height())
     scratch = grid::Grid<std::int16_t>(owner.width(), owner.height(), -1);
   best.waypoints = plain_sweep(owner, within, from);
@@ -46,18 +49,10 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
     return rows ? grid::Cell{along_at, across_at} : grid::Cell{across_at, along_at};
   };
   const int across_size = rows ? owner.height() : owner.width();
-  const int along_size = rows ? owner.width() : owner.height();
-  int along_lo = along_size, along_hi = -1, across_lo = across_size, across_hi = -1;
-  for (int y = 0; y < owner.height(); ++y) {
-    for (int x = within.x_lo; x <= within.x_hi; ++x) {
-      if (owner(x, y) != request.uav) continue;
-      const grid::Cell c{x, y};
-      along_lo = std::min(along_lo, along(c));
-      along_hi = std::max(along_hi, along(c));
-      across_lo = std::min(across_lo, across(c));
-      across_hi = std::max(across_hi, across(c));
-    }
-  }
+  const int along_lo = rows ? x_lo : y_lo;
+  const int along_hi = rows ? x_hi : y_hi;
+  const int across_lo = rows ? y_lo : x_lo;
+  const int across_hi = rows ? y_hi : x_hi;
   const int h = (request.band - 1) / 2;
   if (along_lo + h > along_hi - h) return best;  // a region no taller than one footprint
   // The centre line of the band holding an across coordinate (band_sweep's bands).
@@ -72,9 +67,14 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
   const std::array<int, 2> edges{along_lo + h, along_hi - h};
   const std::array<int, 2> lines{from_across,
                                  centre(std::clamp(from_across, across_lo, across_hi))};
-  for (const int line : lines) {
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const int line = lines[l];
+    if (l > 0 && line == lines[0]) continue;  // on a band's centre line already
     for (const int edge : edges) {
-      for (const int target : {line, across(plain_first)}) {
+      const std::array<int, 2> targets{line, across(plain_first)};
+      for (std::size_t t = 0; t < targets.size(); ++t) {
+        const int target = targets[t];
+        if (t > 0 && target == targets[0]) continue;  // the plain sweep starts on this line
         // from → (line, from_along) → (line, edge) → (target, edge), each leg straight.
         const std::array<grid::Cell, 4> path{from, cell(from_along, line), cell(edge, line),
                                              cell(edge, target)};
@@ -87,12 +87,13 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
           const grid::Cell a = path[leg - 1];
           const grid::Cell b = path[leg];
           length += grid::manhattan(a, b);
-          const int x_lo = std::max(0, std::min(a.x, b.x) - h);
-          const int x_hi = std::min(owner.width() - 1, std::max(a.x, b.x) + h);
-          const int y_lo = std::max(0, std::min(a.y, b.y) - h);
-          const int y_hi = std::min(owner.height() - 1, std::max(a.y, b.y) + h);
-          for (int y = y_lo; y <= y_hi; ++y) {
-            for (int x = x_lo; x <= x_hi; ++x) {
+          // The leg's footprints: its box widened by h.
+          const int left = std::max(0, std::min(a.x, b.x) - h);
+          const int right = std::min(owner.width() - 1, std::max(a.x, b.x) + h);
+          const int bottom = std::max(0, std::min(a.y, b.y) - h);
+          const int top = std::min(owner.height() - 1, std::max(a.y, b.y) + h);
+          for (int y = bottom; y <= top; ++y) {
+            for (int x = left; x <= right; ++x) {
               if (scratch(x, y) == request.uav) scratch(x, y) = -1;
             }
           }

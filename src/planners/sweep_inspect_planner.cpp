@@ -230,7 +230,8 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
   const double step = context.params.s2;
   try {
     const BandPieces rows(context.hull, extra, band_start, context.starts, step, step);
-    auto pieces = rows.cut(rows.balanced_cuts());
+    std::vector<std::size_t> cuts = rows.balanced_cuts();
+    auto pieces = rows.cut(cuts);
     band_start_ = std::move(band_start);
     const auto& hull_cells = context.hull.cells();
     const bool tours = toured && std::any_of(hull_cells.begin(), hull_cells.end(),
@@ -238,7 +239,7 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
     const bool one_plane =
         std::none_of(dense_column_.begin(), dense_column_.end(), [](char d) { return d != 0; });
     if (options_.balance_flights && !tours && one_plane && reach_ == nullptr)
-      pieces = balance_flights(rows, std::move(pieces), context);
+      pieces = balance_flights(rows, std::move(cuts), std::move(pieces), context);
     return std::make_shared<const partition::Partition>(std::move(pieces));
   } catch (const Error&) {
     band_start_.clear();
@@ -247,6 +248,7 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
 }
 
 partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows,
+                                                          std::vector<std::size_t> cuts,
                                                           partition::Partition pieces,
                                                           const PlannerContext& context) {
   // The pieces' work counts a row of a band one step and a band one more, wherever the UAV
@@ -256,7 +258,6 @@ partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows
   // the expected inspections) earlier, or keeps it and spreads the ends less.
   const int n = rows.uavs();
   const double step = context.params.s2;
-  std::vector<std::size_t> cuts = rows.balanced_cuts();
   owner_ = pieces.owner;
   uavs_.assign(static_cast<std::size_t>(n), Uav{});
   const auto first_row = [&](int piece) {
@@ -293,12 +294,13 @@ partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows
         if (moved <= static_cast<long>(first_row(c)) || moved >= static_cast<long>(end_row(c + 1)))
           continue;  // every piece keeps a row
         const auto cut = static_cast<std::size_t>(moved);
-        const auto give = [&](std::size_t at) {
-          if (at > old) rows.assign_rows(owner_, old, at, rows.uav_of_piece(c));
-          if (at < old) rows.assign_rows(owner_, at, old, rows.uav_of_piece(c + 1));
+        // Moving cut c from `a` to `b` gives the rows between to the piece before or after it.
+        const auto move_cut = [&](std::size_t a, std::size_t b) {
+          if (b > a) rows.assign_rows(owner_, a, b, rows.uav_of_piece(c));
+          if (b < a) rows.assign_rows(owner_, b, a, rows.uav_of_piece(c + 1));
+          cuts[cc] = b;
         };
-        give(cut);
-        cuts[cc] = cut;
+        move_cut(old, cut);
         const double before_c = ends[cc];
         const double before_next = ends[cc + 1];
         ends[cc] = planned_end(c);
@@ -309,9 +311,7 @@ partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows
           moved_any = true;
           continue;
         }
-        cuts[cc] = old;  // undo
-        if (cut > old) rows.assign_rows(owner_, old, cut, rows.uav_of_piece(c + 1));
-        if (cut < old) rows.assign_rows(owner_, cut, old, rows.uav_of_piece(c));
+        move_cut(cut, old);  // undo
         ends[cc] = before_c;
         ends[cc + 1] = before_next;
       }
@@ -620,9 +620,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
         // Plan the sweep from where the prior's inspections ended, over the region's cells they
         // did not see (a strip band's ends that the tour saw are not flown again).
         if (options_.nearer_sweep_end) {
-          for (int i : hull_cells_) {
-            if (owner_[i] == k && !unobserved(view, i)) owner_[i] = -1;
-          }
+          drop_observed(k, view);
           p.sweep.assign(sweep_from(k, u.pos));
           p.replan = false;
         }
@@ -784,15 +782,19 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
   return sim::Action::kHover;  // kDone
 }
 
+void SweepInspectPlanner::drop_observed(int k, const sim::PlannerView& view) {
+  for (int i : hull_cells_) {
+    if (owner_[i] == k && !unobserved(view, i)) owner_[i] = -1;
+  }
+}
+
 std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::UavState& u,
                                                              const sim::PlannerView& view) {
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   if (p.approach_rest > 0 && p.sweep.remaining().size() <= p.approach_rest) {
     // The approach is flown: its bands are planned again over what is unobserved now, in case
     // the flight left the approach's line (a re-plan from elsewhere, an inspection).
-    for (int i : hull_cells_) {
-      if (owner_[i] == k && !unobserved(view, i)) owner_[i] = -1;
-    }
+    drop_observed(k, view);
     // As sweep_from planned it: one part of two planes, or all its cells.
     p.sweep.assign(p.other_part ? part_strips(k, p.low, u.pos, false)
                                 : strips_from(owner_, k, u.pos, false));

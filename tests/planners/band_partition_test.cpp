@@ -16,6 +16,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "sweep_coverage.hpp"
 
 namespace hullinspect::planners {
 namespace {
@@ -261,8 +262,7 @@ TEST(BandPartition, PiecesOfTheDefaultHullAreBalancedAndSweptOnTheGrid) {
   for (int s : {5, 7, 9, 11}) {
     const std::vector<int> band_start = column_band_starts(std::vector<int>(hull.width(), s));
     for (int n : {2, 4, 8}) {
-      std::vector<grid::Cell> starts;
-      for (int k = 0; k < n; ++k) starts.push_back({(2 * k + 1) * hull.width() / (2 * n), 15});
+      const auto starts = sweep_coverage::spread_starts(hull.width(), n);
       const auto p = band_order_partition(hull, {}, band_start, starts, s, s);
       double total = 0;
       for (double w : p.region_weight) total += w;

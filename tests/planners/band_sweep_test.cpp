@@ -22,8 +22,7 @@ TEST(BandSweep, EveryOwnedCellIsSeenForBothDirectionsTrimmedOrNot) {
   for (int n : {1, 3, 4, 8}) {
     partition::PartitionRequest request;
     request.hull = &hull;
-    for (int k = 0; k < n; ++k)
-      request.starts.push_back({(2 * k + 1) * hull.width() / (2 * n), 15});
+    request.starts = sweep_coverage::spread_starts(hull.width(), n);
     const auto partition = partition::make_partitioner("transfer", {})->partition(request);
     for (int s : {3, 5, 7, 9, 11}) {
       for (const BandAxis axis : {BandAxis::kRows, BandAxis::kColumns}) {

@@ -46,8 +46,7 @@ TEST(SweepApproach, SeesEveryCellOfBandPiecesAndIsShorterFromMidPiece) {
   for (int s : {5, 7, 9, 11}) {
     const std::vector<int> band_start = column_band_starts(std::vector<int>(hull.width(), s));
     for (int n : {2, 4, 8}) {
-      std::vector<grid::Cell> starts;
-      for (int k = 0; k < n; ++k) starts.push_back({(2 * k + 1) * hull.width() / (2 * n), 15});
+      const auto starts = sweep_coverage::spread_starts(hull.width(), n);
       const auto pieces = band_order_partition(hull, {}, band_start, starts, s, s);
       // From a start in the middle of its piece the plain sweep first flies to a band's end
       // over cells its bands see again: the fleet's flights are shorter with the approach.

@@ -1,5 +1,6 @@
 #pragma once
-// What a flight through waypoints sees: shared by the tests of band_sweep and sweep_approach.
+// What a flight through waypoints sees, and the fleets they start: shared by the tests of
+// band_sweep, band_partition and sweep_approach.
 
 #include <algorithm>
 #include <cstdint>
@@ -36,6 +37,14 @@ inline int unseen_cells(const grid::Grid<std::int16_t>& owner, int uav, int h, g
   for (int y = 0; y < owner.height(); ++y)
     for (int x = 0; x < owner.width(); ++x) unseen += owner(x, y) == uav && seen(x, y) == 0;
   return unseen;
+}
+
+/// n start cells spread along a hull `width` wide, at row y: x = (2k + 1)·width / (2n), the
+/// default starts' spacing.
+inline std::vector<grid::Cell> spread_starts(int width, int n, int y = 15) {
+  std::vector<grid::Cell> starts;
+  for (int k = 0; k < n; ++k) starts.push_back({(2 * k + 1) * width / (2 * n), y});
+  return starts;
 }
 
 }  // namespace hullinspect::planners::sweep_coverage

@@ -141,6 +141,8 @@ class SweepInspectPlanner final : public Planner {
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
   /// this one is done; nullopt, the UAV now helping, when its sweep is over.
+  /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them).
+  void drop_observed(int k, const sim::PlannerView& view);
   std::optional<sim::Action> follow_sweep(int k, const sim::UavState& u,
                                           const sim::PlannerView& view);
   /// The part of UAV k's cells on the other plane, when the current part's sweep is done.
@@ -164,8 +166,9 @@ class SweepInspectPlanner final : public Planner {
   /// null when a piece is not 4-connected.
   /// balance-flights: the band partition's cuts moved a few rows at a time while that makes the
   /// latest planned end earlier (or keeps it and spreads the ends less).
-  partition::Partition balance_flights(const BandPieces& rows, partition::Partition pieces,
-                                       const PlannerContext& context);
+  /// `cuts` are `pieces`' (rows.balanced_cuts()).
+  partition::Partition balance_flights(const BandPieces& rows, std::vector<std::size_t> cuts,
+                                       partition::Partition pieces, const PlannerContext& context);
   /// The steps of UAV k's sweep as planned from `from` over owner_ (Manhattan, both parts).
   double planned_sweep_steps(int k, grid::Cell from);
   std::shared_ptr<const partition::Partition> band_partition(
