@@ -15,6 +15,15 @@
 namespace hullinspect::planners {
 
 namespace {
+// Whether the leg from `a` to `b` runs along x (as a row band's). A band runs along its sweep's
+// axis, but an approach leg (approach-edge) may run across it; a leg that is not straight (or
+// empty) is taken as the sweep's.
+bool leg_along_x(BandAxis axis, grid::Cell a, grid::Cell b) {
+  if (a.y == b.y && a.x != b.x) return true;
+  if (a.x == b.x && a.y != b.y) return false;
+  return axis == BandAxis::kRows;
+}
+
 int chebyshev(grid::Cell a, grid::Cell b) {
   return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y));
 }
@@ -678,8 +687,6 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
         // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
         // a cell beyond the trimmed end of a band (within h2 of its last position, never within
         // h1) or behind its start would otherwise wait for the helpers at the mission's end.
-        const bool rows = p.axis == BandAxis::kRows;
-        const auto along_of = [rows](grid::Cell c) { return rows ? c.x : c.y; };
         grid::Cell next = u.pos;
         for (const grid::Cell w : p.sweep.remaining()) {
           if (w != u.pos) {
@@ -687,6 +694,8 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
             break;
           }
         }
+        const bool rows = leg_along_x(p.axis, u.pos, next);
+        const auto along_of = [rows](grid::Cell c) { return rows ? c.x : c.y; };
         const bool leg_along = rows ? next.y == u.pos.y : next.x == u.pos.x;
         const int leg_lo = std::min(along_of(u.pos), leg_along ? along_of(next) : along_of(u.pos));
         const int leg_hi = std::max(along_of(u.pos), leg_along ? along_of(next) : along_of(u.pos));
@@ -1130,7 +1139,7 @@ grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos
   // end it is flying to, up to where it now is, that leaves no cell of the band between the two
   // footprints unobserved.
   const grid::Cell end = p.sweep.target();
-  const bool rows = p.axis == BandAxis::kRows;
+  const bool rows = leg_along_x(p.axis, p.resume, end);
   const int end_along = rows ? end.x : end.y;
   const int resume_along = rows ? p.resume.x : p.resume.y;
   const int line = rows ? p.resume.y : p.resume.x;
