@@ -245,12 +245,8 @@ TEST(SweepInspect, IsTruthBlind) {
 // within their noise: docs/beyond.md, ablation.)
 TEST(SweepInspect, TheBandOptionsEachLowerTheirTime) {
   const auto& hull = world::default_hull();
-  struct Off {
-    OptionMap options;
-    bool t_m;  // compare T_m (else T_c)
-  };
-  for (const Off& off :
-       {Off{{{"follow-clusters", "false"}}, false}, Off{{{"trust-statistics", "false"}}, false}}) {
+  for (const OptionMap& off :
+       {OptionMap{{"follow-clusters", "false"}}, OptionMap{{"trust-statistics", "false"}}}) {
     int on_sum = 0;
     int off_sum = 0;
     for (int s2 : {7, 11}) {
@@ -258,23 +254,23 @@ TEST(SweepInspect, TheBandOptionsEachLowerTheirTime) {
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
           const auto on = spec_for("sweep-inspect", "imperfect", s2, n, seed);
           auto without = on;
-          without.planner_options = off.options;
+          without.planner_options = off;
           bool checked = false;
           const auto a = run_checked(on, hull, checked);
           bool checked_off = false;
           const auto b = run_checked(without, hull, checked_off);
-          SCOPED_TRACE(::testing::Message() << off.options.begin()->first << " s2=" << s2
-                                            << " n=" << n << " seed=" << seed);
+          SCOPED_TRACE(::testing::Message()
+                       << off.begin()->first << " s2=" << s2 << " n=" << n << " seed=" << seed);
           ASSERT_TRUE(a.complete);
           ASSERT_TRUE(b.complete);
           EXPECT_TRUE(checked);
           EXPECT_TRUE(checked_off);
-          on_sum += off.t_m ? *a.t_m : *a.t_c;
-          off_sum += off.t_m ? *b.t_m : *b.t_c;
+          on_sum += *a.t_c;
+          off_sum += *b.t_c;
         }
       }
     }
-    SCOPED_TRACE(off.options.begin()->first);
+    SCOPED_TRACE(off.begin()->first);
     EXPECT_LT(on_sum, off_sum);
   }
 }
@@ -617,6 +613,7 @@ class EarlyDescentCounter final : public MissionObserver, public AnnotationSink 
       if (a.x != b.x && a.y != b.y) continue;  // not a straight leg
       const bool along_x = a.y == b.y;
       const int dir = along_x ? (b.x > a.x ? 1 : -1) : (b.y > a.y ? 1 : -1);
+      const int leg = std::abs(along_x ? b.x - a.x : b.y - a.y);
       bool cause = false;
       bool ahead = false;
       for (int i = 0; i < map_.size(); ++i) {
@@ -624,7 +621,6 @@ class EarlyDescentCounter final : public MissionObserver, public AnnotationSink 
         const grid::Cell c = map_.cell(i);
         const int along = dir * (along_x ? c.x - a.x : c.y - a.y);
         const int across = std::abs(along_x ? c.y - a.y : c.x - a.x);
-        const int leg = std::abs(along_x ? b.x - a.x : b.y - a.y);
         if (across > h2 || std::abs(along) > h2) continue;
         if (along > h1 && along <= leg) {
           ahead = true;  // the leg brings it abreast later

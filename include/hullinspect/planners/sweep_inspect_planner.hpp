@@ -139,10 +139,10 @@ class SweepInspectPlanner final : public Planner {
     std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
-  /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
-  /// this one is done; nullopt, the UAV now helping, when its sweep is over.
   /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them).
   void drop_observed(int k, const sim::PlannerView& view);
+  /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
+  /// this one is done; nullopt, the UAV now helping, when its sweep is over.
   std::optional<sim::Action> follow_sweep(int k, const sim::UavState& u,
                                           const sim::PlannerView& view);
   /// The part of UAV k's cells on the other plane, when the current part's sweep is done.
@@ -253,11 +253,10 @@ class SweepInspectPlanner final : public Planner {
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
-  std::vector<char> handed_over_;   // per UAV: its failure was handled
-  std::vector<char> dense_column_;  // per column: swept at z = 1 (empty: none is)
-  grid::Grid<std::int16_t> part_owner_;
-  grid::Grid<std::int16_t> approach_owner_;  // scratch of approach_and_sweep  // owner_ restricted
-                                             // to one part of a UAV's cells
+  std::vector<char> handed_over_;            // per UAV: its failure was handled
+  std::vector<char> dense_column_;           // per column: swept at z = 1 (empty: none is)
+  grid::Grid<std::int16_t> part_owner_;      // owner_ restricted to one part of a UAV's cells
+  grid::Grid<std::int16_t> approach_owner_;  // scratch of approach_and_sweep
   std::vector<int> tour_left_;               // scratch of tour_steps
   std::vector<grid::Cell> tour_points_;      // scratch of first_of_planned_tour
   std::vector<int> split_cells_;
