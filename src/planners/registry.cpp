@@ -165,7 +165,11 @@ Params<SweepInspectOptions> sweep_inspect_params() {
                "passes of balance-flights over the cuts (0: pieces of equal work)")
       .number("inspection-weight", &SweepInspectOptions::inspection_weight, 0.0, 100.0,
               "in the band partition, the inspections expected at a cell the sweep detects (its "
-              "weight's excess over 1) count this many times (a toured prior cell's once)")
+              "weight's excess over 1) count this many times (a toured prior cell's, "
+              "prior-tour-weight times)")
+      .number("prior-tour-weight", &SweepInspectOptions::prior_tour_weight, 0.0, 100.0,
+              "in the band partition, a prior cell toured first counts its weight's excess over 1 "
+              "this many times (share-prior re-splits the tours after the partition)")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {
