@@ -168,8 +168,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
               "weight's excess over 1) count this many times (a toured prior cell's, "
               "prior-tour-weight times)")
       .number("prior-tour-weight", &SweepInspectOptions::prior_tour_weight, 0.0, 100.0,
-              "in the band partition, a prior cell toured first counts its weight's excess over 1 "
-              "this many times (share-prior re-splits the tours after the partition)")
+              "with share-prior, in the band partition, a prior cell toured first counts its "
+              "weight's excess over 1 this many times (share-prior re-splits the tours after the "
+              "partition; without it, once)")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

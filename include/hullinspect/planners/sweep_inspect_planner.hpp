@@ -94,10 +94,10 @@ struct SweepInspectOptions {
   /// In the band partition, the inspections expected at a cell the sweep detects (its weight's
   /// excess over 1) count this many times (a toured prior cell's, prior_tour_weight times).
   double inspection_weight = 2.0;
-  /// In the band partition, a prior cell toured first counts its weight's excess over 1 this many
-  /// times: share-prior re-splits the tours among neighbours after the partition, so a piece
-  /// that the partition shrank for its tour would end its sweep early (0.25: tuning seeds,
-  /// docs/beyond.md item 1).
+  /// With share-prior, in the band partition, a prior cell toured first counts its weight's
+  /// excess over 1 this many times: share-prior re-splits the tours among neighbours after the
+  /// partition, so a piece that the partition shrank for its tour would end its sweep early
+  /// (0.25: tuning seeds, docs/beyond.md item 1). Without share-prior it counts once.
   double prior_tour_weight = 0.25;
   /// While sweeping, also descend for a detected cell within the footprint (but not abreast)
   /// that the current leg of the flight comes no nearer to: beyond a band's trimmed end, or
