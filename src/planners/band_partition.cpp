@@ -85,9 +85,10 @@ BandPieces::BandPieces(const world::HullMask& hull, const grid::Grid<double>& ex
       extra_before_.push_back(extra_before_.back());
     }
     const double more = weighted ? extra[order_[j]] : 0.0;
-    row_work_.back() += band_order.begun(order_, j, row_cost, band_cost) + more;
+    const double work = band_order.begun(order_, j, row_cost, band_cost) + more;
+    row_work_.back() += work;
     extra_before_.back() += more;
-    total_ += band_order.begun(order_, j, row_cost, band_cost) + more;
+    total_ += work;
   }
   row_begin_.push_back(order_.size());
   // The pieces go to the UAVs in the order of their starts along the hull.
@@ -103,13 +104,17 @@ BandPieces::BandPieces(const world::HullMask& hull, const grid::Grid<double>& ex
   }
 }
 
+double BandPieces::common_share(std::span<const double> offset) const {
+  double common = total_;
+  for (int k = 0; k < uavs(); ++k) common += offset_of(offset, k);
+  return common / uavs();
+}
+
 std::vector<std::size_t> BandPieces::balanced_cuts(std::span<const double> offset) const {
   // Each UAV's share of the total is less its offset (work it has besides its piece's), so that
-  // piece plus offset comes to the same `common` for every UAV.
+  // piece plus offset comes to the same common share for every UAV.
   const int n = uavs();
-  double common = total_;
-  for (int k = 0; k < n; ++k) common += offset_of(offset, k);
-  common /= n;
+  const double common = common_share(offset);
   // Cut where the running sum is nearest each share, between rows (a row's cells are seen by the
   // same footprints); every piece gets at least one row.
   std::vector<std::size_t> cuts;
@@ -155,9 +160,7 @@ partition::Partition BandPieces::cut(std::span<const std::size_t> cuts,
   out.region_cells.assign(static_cast<std::size_t>(n), 0);
   out.region_weight.assign(static_cast<std::size_t>(n), 0.0);
   out.desired_weight.assign(static_cast<std::size_t>(n), 0.0);
-  double common = total_;
-  for (int k = 0; k < n; ++k) common += offset_of(offset, k);
-  common /= n;
+  const double common = common_share(offset);
   for (int piece = 0; piece < n; ++piece) {
     const std::size_t lo = piece == 0 ? 0 : cuts[static_cast<std::size_t>(piece - 1)];
     const std::size_t hi = piece == n - 1 ? rows() : cuts[static_cast<std::size_t>(piece)];

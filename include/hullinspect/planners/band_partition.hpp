@@ -67,6 +67,8 @@ class BandPieces {
   static double offset_of(std::span<const double> offset, int k) {
     return offset.empty() ? 0.0 : offset[static_cast<std::size_t>(k)];
   }
+  /// What every UAV's piece plus its offset comes to: (total + offsets) / n.
+  double common_share(std::span<const double> offset) const;
   const world::HullMask* hull_;
   std::vector<int> order_;  // hull cells in the boustrophedon's order
   std::vector<std::size_t> row_begin_;
