@@ -24,12 +24,16 @@ import pandas as pd
 
 PAPER = ["lawnmower", "part-tsp", "part-tsp0", "coop-frontier"]
 OURS = "sweep-inspect"
+ORACLE = "oracle-part-tsp"  # a bound, not a planner: never the best paper planner
 SCENARIOS = ["perfect", "imperfect", "inhomogeneous", "combined"]
 RESAMPLES = 4000
 
 
-def ratio_interval(numerator, denominator, rng):
-    """95 % percentile bootstrap interval of mean(numerator) / mean(denominator), seeds paired."""
+def ratio_interval(numerator, denominator, stream):
+    """95 % percentile bootstrap interval of mean(numerator) / mean(denominator), seeds paired;
+    `stream` (a list of ints) seeds the resampling, so that each interval has a stream of its
+    own and adding one leaves the others as they were."""
+    rng = np.random.default_rng([15] + stream)
     count = len(numerator)
     if count < 2:
         value = numerator.mean() / denominator.mean()
@@ -41,9 +45,10 @@ def ratio_interval(numerator, denominator, rng):
 
 
 def cells(runs):
-    """One dict per cell of the paper's scenarios found in runs, in the table's order."""
-    runs = runs[runs["algorithm"].isin(PAPER + [OURS])]
-    rng = np.random.default_rng(15)
+    """One dict per cell of the paper's scenarios found in runs, in the table's order: the table's
+    values, and for tools/plot_beyond.py Sweep-Inspect's T_m over the lawnmower's (with its
+    interval), the oracle's mean T_c (NaN without it) and the mean lower bounds."""
+    runs = runs[runs["algorithm"].isin(PAPER + [OURS, ORACLE])]
     out = []
     for scenario in SCENARIOS:
         for s2 in sorted(runs["s2"].unique()):
@@ -66,20 +71,30 @@ def cells(runs):
                     "best_T_c": means.loc[best, "T_c"], "T_c": means.loc[OURS, "T_c"],
                     "ratio": means.loc[OURS, "T_c"] / means.loc[best, "T_c"],
                     "ratio_ci": ratio_interval(paired["ours"].to_numpy(),
-                                               paired["best"].to_numpy(), rng),
+                                               paired["best"].to_numpy(), [len(out), 0]),
                     "diff": diff.mean(), "diff_half": half,
                     "faster": int((diff > 0).sum()), "seeds": len(diff),
                     "lawnmower_T_m": means.loc["lawnmower", "T_m"], "T_m": means.loc[OURS, "T_m"],
                     "complete": int(ours["complete"].sum()), "runs": len(ours),
                     "fail_complete": int(fail["complete"].sum()), "fail_runs": len(fail),
                     "fail_ratio": float("nan"), "fail_ratio_ci": (float("nan"), float("nan")),
+                    "bound_T_c": cell["bound_T_c"].mean(), "bound_T_m": cell["bound_T_m"].mean(),
+                    "oracle_T_c": (means.loc[ORACLE, "T_c"] if ORACLE in means.index
+                                   else float("nan")),
                 }
+                lawnmower = cell[cell.algorithm == "lawnmower"].set_index("seed")
+                t_m = pd.concat([ours["T_m"], lawnmower["T_m"]], axis=1,
+                                keys=["ours", "lawnmower"]).dropna()
+                row["T_m_ratio"] = row["T_m"] / row["lawnmower_T_m"]
+                row["T_m_ratio_ci"] = ratio_interval(t_m["ours"].to_numpy(),
+                                                     t_m["lawnmower"].to_numpy(), [len(out), 2])
                 if not fail.empty:
                     with_failure = pd.concat([fail.set_index("seed")["T_c"], ours["T_c"]], axis=1,
                                              keys=["fail", "none"]).dropna()
                     row["fail_ratio"] = fail["T_c"].mean() / means.loc[OURS, "T_c"]
                     row["fail_ratio_ci"] = ratio_interval(with_failure["fail"].to_numpy(),
-                                                          with_failure["none"].to_numpy(), rng)
+                                                          with_failure["none"].to_numpy(),
+                                                          [len(out), 1])
                 out.append(row)
     return out
 

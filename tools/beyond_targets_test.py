@@ -29,10 +29,11 @@ def runs(ours, ours_failing, lawnmower=100.0):
                                ("part-tsp0", 140.0), ("coop-frontier", 120.0),
                                ("sweep-inspect", ours[i])]:
             rows.append({"scenario": "imperfect", "s2": 7, "uavs": 4, "seed": seed,
-                         "algorithm": algorithm, "T_c": t_c, "T_m": t_c + 10, "complete": 1})
+                         "algorithm": algorithm, "T_c": t_c, "T_m": t_c + 10, "complete": 1,
+                         "bound_T_c": 20, "bound_T_m": 50})
         rows.append({"scenario": "imperfect-fail1", "s2": 7, "uavs": 4, "seed": seed,
                      "algorithm": "sweep-inspect", "T_c": ours_failing[i], "T_m": 0,
-                     "complete": 1})
+                     "complete": 1, "bound_T_c": 20, "bound_T_m": 50})
     return pd.DataFrame(rows)
 
 
