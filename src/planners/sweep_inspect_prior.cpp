@@ -1,0 +1,194 @@
+// Sweep-Inspect's tours of the prior's cells at z = 1 (docs/beyond.md, item 2): the planned tour,
+// its estimate, and the re-splits that end neighbours' tours together (share-prior), also of a
+// failed UAV's cells.
+
+#include "hullinspect/planners/sweep_inspect_planner.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+#include "hullinspect/planners/open_tour.hpp"
+#include "hullinspect/world/no_fly.hpp"
+
+namespace hullinspect::planners {
+
+bool SweepInspectPlanner::hand_over_prior(const sim::PlannerView& view) {
+  bool handed = false;
+  for (std::size_t j = 0; j < uavs_.size(); ++j) {
+    if (!view.uavs[j].failed || prior_[j].empty()) continue;
+    handed = true;
+    for (int i : prior_[j]) {
+      const grid::Cell c = view.map.cell(i);
+      int best = -1;
+      int best_d = std::numeric_limits<int>::max();
+      for (std::size_t k = 0; k < uavs_.size(); ++k) {
+        if (view.uavs[k].failed || !reachable(static_cast<int>(k), i, world::kReachZ1)) continue;
+        const int d = uav_distances_[k]->distance(
+            view.uavs[k].pos, reach_position(static_cast<int>(k), view.uavs[k].pos, c, h1_));
+        if (d < best_d) {
+          best_d = d;
+          best = static_cast<int>(k);
+        }
+      }
+      if (best >= 0) prior_[static_cast<std::size_t>(best)].push_back(i);
+    }
+    prior_[j].clear();
+  }
+  return handed;
+}
+
+int SweepInspectPlanner::first_of_planned_tour(grid::Cell from, std::span<const int> cells) {
+  tour_points_.clear();
+  for (const int i : cells) tour_points_.push_back(hull_cell(i));
+  // The tour's end is free: pulling it towards the nearer end of the sweep after it (half the
+  // flight there added to its cost) lowered T_m by 1.2 s and raised T_c by 0.9 s on the tuning
+  // seeds.
+  plan_open_tour(from, tour_points_, {.reach = h1_});
+  const grid::Cell first = tour_points_.front();
+  return first.y * width_ + first.x;
+}
+
+int SweepInspectPlanner::tour_steps(grid::Cell from, std::span<const int> cells) {
+  // A nearest-first tour at z = 1 (Manhattan, the project's x-then-y flights) in which the
+  // footprint (Chebyshev half-width h1) sees every cell along each leg: a planning estimate.
+  tour_left_.assign(cells.begin(), cells.end());
+  int steps = 0;
+  grid::Cell at = from;
+  while (!tour_left_.empty()) {
+    int best_d = std::numeric_limits<int>::max();
+    grid::Cell best{};
+    for (const int i : tour_left_) {
+      const grid::Cell c = hull_cell(i);
+      const grid::Cell q{std::clamp(at.x, c.x - h1_, c.x + h1_),
+                         std::clamp(at.y, c.y - h1_, c.y + h1_)};
+      const int d = grid::manhattan(at, q);
+      if (d < best_d) {
+        best_d = d;
+        best = q;
+      }
+    }
+    steps += best_d;
+    // Seen on the way: within h1 of the leg along x (row at.y), then of the leg along y.
+    const int x_lo = std::min(at.x, best.x) - h1_;
+    const int x_hi = std::max(at.x, best.x) + h1_;
+    const int y_lo = std::min(at.y, best.y) - h1_;
+    const int y_hi = std::max(at.y, best.y) + h1_;
+    std::erase_if(tour_left_, [&](int i) {
+      const grid::Cell c = hull_cell(i);
+      const bool along_x = std::abs(c.y - at.y) <= h1_ && c.x >= x_lo && c.x <= x_hi;
+      const bool along_y = std::abs(c.x - best.x) <= h1_ && c.y >= y_lo && c.y <= y_hi;
+      return along_x || along_y;
+    });
+    at = best;
+  }
+  return steps;
+}
+
+std::size_t SweepInspectPlanner::split_tours(int a, grid::Cell pa, int b, grid::Cell pb,
+                                             std::vector<int>& cells, int* later) {
+  // Cells only a can inspect first, then by how much nearer they are to a than to b, cells only
+  // b can inspect last (no-fly zones); a takes a prefix.
+  const auto key = [&](int i) {
+    const bool to_a = reachable(a, i, world::kReachZ1);
+    const bool to_b = reachable(b, i, world::kReachZ1);
+    if (to_a != to_b)
+      return to_a ? std::numeric_limits<int>::min() : std::numeric_limits<int>::max();
+    const grid::Cell c = hull_cell(i);
+    return grid::manhattan(pa, c) - grid::manhattan(pb, c);
+  };
+  std::stable_sort(cells.begin(), cells.end(), [&](int x, int y) { return key(x) < key(y); });
+  std::size_t t_min = 0;
+  std::size_t t_max = cells.size();
+  while (t_min < cells.size() && key(cells[t_min]) == std::numeric_limits<int>::min()) ++t_min;
+  while (t_max > t_min && key(cells[t_max - 1]) == std::numeric_limits<int>::max()) --t_max;
+  const std::span<const int> all(cells);
+  const auto tour_a = [&](std::size_t t) { return tour_steps(pa, all.first(t)); };
+  const auto tour_b = [&](std::size_t t) { return tour_steps(pb, all.subspan(t)); };
+  std::size_t lo = t_min;
+  std::size_t hi = t_max;
+  while (lo < hi) {  // the first t at which a's tour is at least b's (the estimates cross)
+    const std::size_t mid = (lo + hi) / 2;
+    if (tour_a(mid) >= tour_b(mid)) {
+      hi = mid;
+    } else {
+      lo = mid + 1;
+    }
+  }
+  std::size_t t = lo;
+  int end = std::max(tour_a(t), tour_b(t));
+  if (t > t_min) {
+    const int before = std::max(tour_a(t - 1), tour_b(t - 1));
+    if (before <= end) {
+      t -= 1;
+      end = before;
+    }
+  }
+  *later = end;
+  return t;
+}
+
+bool SweepInspectPlanner::take_prior_share(int k, grid::Cell pos) {
+  // The working UAV of k's flight part with the longest tour of the prior's cells left.
+  const std::size_t ku = static_cast<std::size_t>(k);
+  int giver = -1;
+  int giver_steps = 0;
+  for (std::size_t j = 0; j < uavs_.size(); ++j) {
+    if (j == ku || uavs_[j].mode != Mode::kPrior || prior_[j].empty() ||
+        uav_distances_[j] != uav_distances_[ku]) {
+      continue;
+    }
+    const int steps = tour_steps(positions_[j], prior_[j]);
+    if (steps > giver_steps) {
+      giver_steps = steps;
+      giver = static_cast<int>(j);
+    }
+  }
+  if (giver < 0) return false;
+  auto& cells = prior_[static_cast<std::size_t>(giver)];
+  int later = 0;
+  const std::size_t t =
+      split_tours(k, pos, giver, positions_[static_cast<std::size_t>(giver)], cells, &later);
+  // Only when it saves the giver at least a strip's width of steps.
+  if (t == 0 || later + (2 * h2_ + 1) > giver_steps) return false;
+  prior_[ku].assign(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(t));
+  cells.erase(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(t));
+  return true;
+}
+
+void SweepInspectPlanner::balance_prior_tours(std::span<const grid::Cell> starts,
+                                              const sim::PlannerView* view) {
+  // Neighbours (in the order of their starts along x) of one flight part re-split the union of
+  // their prior cells so that the later of their two tours ends earliest; a few passes spread a
+  // long tour over more than one neighbour.
+  const std::size_t n = uavs_.size();
+  split_helpers_.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (view == nullptr || !view->uavs[k].failed)
+      split_helpers_.push_back({static_cast<int>(k), starts[k]});
+  }
+  std::stable_sort(split_helpers_.begin(), split_helpers_.end(),
+                   [](const auto& a, const auto& b) { return a.second.x < b.second.x; });
+  for (int pass = 0; pass < kBalancePasses; ++pass) {
+    for (std::size_t r = 0; r + 1 < split_helpers_.size(); ++r) {
+      const auto [a, pa] = split_helpers_[r];
+      const auto [b, pb] = split_helpers_[r + 1];
+      auto& cells_a = prior_[static_cast<std::size_t>(a)];
+      auto& cells_b = prior_[static_cast<std::size_t>(b)];
+      if (uav_distances_[static_cast<std::size_t>(a)] !=
+              uav_distances_[static_cast<std::size_t>(b)] ||
+          cells_a.size() + cells_b.size() == 0)
+        continue;
+      const int now = std::max(tour_steps(pa, cells_a), tour_steps(pb, cells_b));
+      split_cells_.assign(cells_a.begin(), cells_a.end());
+      split_cells_.insert(split_cells_.end(), cells_b.begin(), cells_b.end());
+      int later = 0;
+      const std::size_t t = split_tours(a, pa, b, pb, split_cells_, &later);
+      if (later >= now) continue;
+      cells_a.assign(split_cells_.begin(), split_cells_.begin() + static_cast<std::ptrdiff_t>(t));
+      cells_b.assign(split_cells_.begin() + static_cast<std::ptrdiff_t>(t), split_cells_.end());
+    }
+  }
+}
+
+}  // namespace hullinspect::planners

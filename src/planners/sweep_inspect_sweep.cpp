@@ -1,0 +1,344 @@
+// Sweep-Inspect's sweeps (docs/beyond.md, items 4 and 5): planning a UAV's bands, following them
+// (skipping what is seen), rejoining after an inspection, and taking over the tail of another
+// UAV's sweep (share-sweep).
+
+#include "hullinspect/planners/sweep_inspect_planner.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+#include "hullinspect/planners/sweep_approach.hpp"
+#include "hullinspect/world/no_fly.hpp"
+
+#include "sweep_inspect_detail.hpp"
+
+namespace hullinspect::planners {
+
+using sweep_inspect_detail::leg_along_x;
+using sweep_inspect_detail::unobserved;
+
+std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::int16_t>& owner,
+                                                         int k, grid::Cell from, bool approach) {
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
+  BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
+  const bool low = uavs_[static_cast<std::size_t>(k)].low;
+  // On the band partition's grid a z = 2 sweep flies the grid's columns: the pieces are cut for
+  // them (rows across a piece's part-bands flew more: on the tuning seeds `auto` there cost T_m
+  // 6-12 s with a right prior); its z = 1 sweeps of dense columns still choose.
+  const bool auto_axis = options_.strips == "auto" && (band_start_.empty() || low);
+  axis = options_.strips == "rows" || auto_axis ? BandAxis::kRows : BandAxis::kColumns;
+  const int band = low ? h1_ * 2 + 1 : h2_ * 2 + 1;
+  auto waypoints = band_sweep(owner, k, band, axis, options_.trim_strip_ends, from, band_start_);
+  if (auto_axis) {
+    // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
+    auto columns =
+        band_sweep(owner, k, band, BandAxis::kColumns, options_.trim_strip_ends, from, band_start_);
+    if (flight_length(from, columns) < flight_length(from, waypoints)) {
+      waypoints = std::move(columns);
+      axis = BandAxis::kColumns;
+    }
+  }
+  uavs_[static_cast<std::size_t>(k)].approach_rest = 0;
+  if (approach && options_.approach_edge && reach_ == nullptr) {
+    // approach-edge: fly to the sweep along the region's edge where that sees the bands' ends.
+    const SweepRequest request{
+        k, band, axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
+    SweepPlan plan = approach_and_sweep(owner, request, from, approach_owner_);
+    if (plan.approach > 0)
+      uavs_[static_cast<std::size_t>(k)].approach_rest = plan.waypoints.size() - plan.approach;
+    return std::move(plan.waypoints);
+  }
+  if (reach_ != nullptr) {
+    // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
+    // the flight between waypoints goes around no-fly positions, and whatever the strips then
+    // miss is found as unknown cells by the help phase.
+    std::vector<grid::Cell> flyable;
+    for (const grid::Cell w : waypoints) {
+      const grid::Cell v = distances.allowed(w) ? w : distances.viewpoint(w, band / 2);
+      if (v != grid::kNoCell && (flyable.empty() || flyable.back() != v)) flyable.push_back(v);
+    }
+    waypoints = std::move(flyable);
+  }
+  // The same strips top to bottom when their far end is nearer (after the prior's inspections).
+  if (options_.nearer_sweep_end && waypoints.size() > 1 &&
+      distances.distance(from, waypoints.back()) < distances.distance(from, waypoints.front())) {
+    std::reverse(waypoints.begin(), waypoints.end());
+  }
+  return waypoints;
+}
+
+std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::Cell from,
+                                                         bool approach) {
+  part_owner_ = owner_;
+  for (int i : hull_cells_) {
+    if (part_owner_[i] == k && (dense_column_[static_cast<std::size_t>(i % width_)] != 0) != low)
+      part_owner_[i] = -1;
+  }
+  uavs_[static_cast<std::size_t>(k)].low = low;
+  return strips_from(part_owner_, k, from, approach);
+}
+
+std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  const bool was_low = p.low;
+  p.other_part = false;
+  p.low = false;
+  std::vector<grid::Cell> waypoints;
+  int dense = 0;
+  int sparse = 0;
+  int dense_lo = width_;
+  int dense_hi = -1;
+  if (!dense_column_.empty()) {
+    for (int i : hull_cells_) {
+      if (owner_[i] == k) {
+        const bool d = dense_column_[static_cast<std::size_t>(i % width_)] != 0;
+        ++(d ? dense : sparse);
+        if (d) {
+          dense_lo = std::min(dense_lo, i % width_);
+          dense_hi = std::max(dense_hi, i % width_);
+        }
+      }
+    }
+  }
+  // A dense part that a few z = 1 bands would cover is swept at z = 2 with the rest: each z = 1
+  // band is a whole pass of the hull's height (and a plane change), for a few columns.
+  if (sparse > 0 && dense > 0 &&
+      dense_hi - dense_lo + 1 <= options_.low_sweep_min_bands * (2 * h1_ + 1))
+    dense = 0;
+  if (dense == 0) {
+    waypoints = strips_from(owner_, k, from);
+  } else if (sparse == 0) {
+    p.low = true;
+    waypoints = strips_from(owner_, k, from);
+  } else {
+    // Both planes: first the part whose sweep starts nearer, then the other from where it ends.
+    grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
+    const auto start = [&](const std::vector<grid::Cell>& w) {
+      return w.empty() ? std::numeric_limits<int>::max() : distances.distance(from, w.front());
+    };
+    // The plain sweeps' first waypoints decide (an approach would start both beside `from`);
+    // the chosen part is then planned with its approach, which sets the UAV's axis and plane.
+    const bool low_first =
+        start(part_strips(k, true, from, false)) < start(part_strips(k, false, from, false));
+    waypoints = part_strips(k, low_first, from);
+    p.other_part = true;
+  }
+  // Leaving a z = 1 sweep: what is pending around here is inspected before it climbs.
+  if (was_low && !p.low) p.resume = from;
+  return waypoints;
+}
+
+void SweepInspectPlanner::drop_observed(int k, const sim::PlannerView& view) {
+  for (int i : hull_cells_) {
+    if (owner_[i] == k && !unobserved(view, i)) owner_[i] = -1;
+  }
+}
+
+std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::UavState& u,
+                                                             const sim::PlannerView& view) {
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  if (p.approach_rest > 0 && p.sweep.remaining().size() <= p.approach_rest) {
+    // The approach is flown: its bands are planned again over what is unobserved now, in case
+    // the flight left the approach's line (a re-plan from elsewhere, an inspection).
+    drop_observed(k, view);
+    // As sweep_from planned it: one part of two planes, or all its cells.
+    p.sweep.assign(p.other_part ? part_strips(k, p.low, u.pos, false)
+                                : strips_from(owner_, k, u.pos, false));
+  }
+  // An approach's legs are not bands: none is skipped (its line leg may see nothing new).
+  if (options_.skip_seen_bands && p.approach_rest == 0) skip_seen_bands(p, u.pos, view);
+  const sim::Action a = p.sweep.next_action(u.pos);
+  if (a != sim::Action::kHover) return a;
+  if (p.other_part) return next_part(k, u, view);
+  p.mode = Mode::kHelp;
+  return std::nullopt;
+}
+
+sim::Action SweepInspectPlanner::next_part(int k, const sim::UavState& u,
+                                           const sim::PlannerView& view) {
+  // One part of its cells swept: the other, planned from here, on its plane.
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  p.other_part = false;
+  const bool low = !p.low;
+  p.sweep.assign(part_strips(k, low, u.pos));
+  if (!low) p.resume = u.pos;  // from z = 1: inspect what is pending here, climb, sweep
+  return decide_uav(k, u, view);
+}
+
+bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
+                                          const sim::PlannerView& view) {
+  // The UAVs' sweeps end tens of steps apart (on the tuning seeds of the combined scenario,
+  // n = 8, the first 20-60 s before the last): the one that is done takes the far end of the
+  // sweep that would end last — its last bands, or the far part of its last band — which keeps
+  // the bands' structure where helping cell by cell flies to scattered cells. A sweep left is
+  // estimated as the walk through its waypoints (Manhattan) times kTailWalkCost (inspections on
+  // the way); the split is anywhere along a band, or at a leg between two bands (not flown).
+  grid::DistanceService& mine = *uav_distances_[static_cast<std::size_t>(j)];
+  int donor = -1;
+  double donor_alone = 0.0;
+  TailSplit chosen;
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    const Uav& q = uavs_[k];
+    if (static_cast<int>(k) == j || view.uavs[k].failed || uav_distances_[k] != &mine) continue;
+    if (!q.sweep_planned || q.other_part || q.replan) continue;
+    if (q.mode != Mode::kSweep && q.mode != Mode::kReturn && q.mode != Mode::kInspect) continue;
+    const auto rest = q.sweep.remaining();
+    if (rest.empty()) continue;
+    const bool sweeping = q.mode == Mode::kSweep;
+    const grid::Cell from = sweeping ? view.uavs[k].pos : q.resume;
+    const int back = sweeping ? 0 : grid::manhattan(view.uavs[k].pos, q.resume);
+    // tail_walk_[i]: the walk from `from` to rest[i].
+    tail_walk_.assign(rest.size(), grid::manhattan(from, rest[0]));
+    for (std::size_t i = 1; i < rest.size(); ++i)
+      tail_walk_[i] = tail_walk_[i - 1] + grid::manhattan(rest[i - 1], rest[i]);
+    const double alone = back + kTailWalkCost * tail_walk_.back();
+    if (donor >= 0 && alone <= donor_alone) continue;
+    // distance(a, b) searches from b: from here once for every candidate (flights are symmetric).
+    const int to_end = mine.distance(rest.back(), u.pos);
+    const double total = tail_walk_.back();
+    TailSplit split;
+    split.end = alone - (2 * h2_ + 1);  // a split must save at least s2 steps
+    const auto consider = [&](std::size_t leg, grid::Cell at, double kept, bool skip_leg) {
+      // k flies to `at` (on leg `leg`, the leg into rest[leg]) and stops; the UAV j takes the
+      // rest: from `at` (or, skipping a leg between bands, from rest[leg]) to the end.
+      const grid::Cell first = skip_leg ? rest[leg] : at;
+      const double taken = total - (skip_leg ? tail_walk_[leg] : kept);
+      const int to_first = mine.distance(first, u.pos);
+      if (to_first == grid::kUnreachable) return;
+      const double keeps = back + kTailWalkCost * kept;
+      const double takes = std::min(to_first, to_end) + kTailWalkCost * taken;
+      const double end = std::max(keeps, takes);
+      if (end >= split.end) return;
+      split = {end, static_cast<int>(leg), at, skip_leg, to_end < to_first};
+    };
+    for (std::size_t leg = 0; leg < rest.size(); ++leg) {
+      const grid::Cell a = leg == 0 ? from : rest[leg - 1];
+      const grid::Cell b = rest[leg];
+      const double before = leg == 0 ? 0.0 : tail_walk_[leg - 1];
+      if (back + kTailWalkCost * before >= split.end) break;  // k's share only grows
+      const bool band_leg = q.axis == BandAxis::kRows ? a.y == b.y : a.x == b.x;
+      if (!band_leg) {
+        if (leg > 0) consider(leg, a, before, true);
+        continue;
+      }
+      const int length = grid::manhattan(a, b);
+      const grid::Cell dir{(b.x > a.x) - (b.x < a.x), (b.y > a.y) - (b.y < a.y)};
+      for (int d = 1; d < length; ++d) {
+        const grid::Cell at{a.x + d * dir.x, a.y + d * dir.y};
+        if (mine.allowed(at)) consider(leg, at, before + d, false);
+      }
+    }
+    if (split.leg < 0) continue;
+    donor = static_cast<int>(k);
+    donor_alone = alone;
+    chosen = split;
+  }
+  if (donor < 0) return false;
+  Uav& q = uavs_[static_cast<std::size_t>(donor)];
+  const auto rest = q.sweep.remaining();
+  const auto leg = static_cast<std::size_t>(chosen.leg);
+  std::vector<grid::Cell> tail;
+  if (!chosen.skip_leg) tail.push_back(chosen.at);
+  tail.insert(tail.end(), rest.begin() + static_cast<std::ptrdiff_t>(leg), rest.end());
+  if (chosen.backward) std::reverse(tail.begin(), tail.end());
+  if (chosen.skip_leg) {
+    q.sweep.keep(leg);  // up to rest[leg - 1], the start of the leg between two bands
+  } else {
+    q.sweep.keep(leg, chosen.at);
+  }
+  Uav& p = uavs_[static_cast<std::size_t>(j)];
+  p.sweep.assign(std::move(tail));
+  p.approach_rest = 0;  // whatever approach is left is the donor's
+  q.approach_rest = 0;
+  p.axis = q.axis;
+  p.low = q.low;
+  p.other_part = false;
+  p.sweep_planned = true;
+  p.mode = Mode::kSweep;
+  p.target_cell = -1;
+  p.resume = u.pos;  // from z = 1 onto a z = 2 tail: what is pending here first, then climb
+  return true;
+}
+
+grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos,
+                                             const sim::PlannerView& view) const {
+  // From the point where it left the strip (on the strip's centre line, at z = 2) the UAV saw the
+  // strip band up to h2 cells ahead, and on the way below it saw more of it; from a point r of the
+  // centre line the footprint sees h2 cells behind r. So it may rejoin at any r, towards the strip
+  // end it is flying to, up to where it now is, that leaves no cell of the band between the two
+  // footprints unobserved.
+  const grid::Cell end = p.sweep.target();
+  const bool rows = leg_along_x(p.axis, p.resume, end);
+  const int end_along = rows ? end.x : end.y;
+  const int resume_along = rows ? p.resume.x : p.resume.y;
+  const int line = rows ? p.resume.y : p.resume.x;
+  if ((rows ? end.y : end.x) != line || end_along == resume_along) return p.resume;
+  const int dir = end_along > resume_along ? 1 : -1;
+  const int reach = std::min(std::max(0, dir * ((rows ? pos.x : pos.y) - resume_along)),
+                             std::abs(end_along - resume_along));
+  const auto& map = view.map;
+  const int across_size = rows ? map.height() : map.width();
+  int ahead = 0;
+  for (int r = 1; r <= reach; ++r) {
+    // The band's cells across at `along`, just behind r's footprint, must have been observed.
+    const int along = resume_along + dir * (r - h2_ - 1);
+    if (r > 2 * h2_ + 1) {
+      bool gap = false;
+      for (int a = std::max(0, line - h2_); a <= std::min(across_size - 1, line + h2_); ++a) {
+        const int i = rows ? map.index(along, a) : map.index(a, along);
+        if (map[i] != sim::kNotHull && unobserved(view, i)) gap = true;
+      }
+      if (gap) break;
+    }
+    const grid::Cell candidate =
+        rows ? grid::Cell{resume_along + dir * r, line} : grid::Cell{line, resume_along + dir * r};
+    if (uav_distances_[static_cast<std::size_t>(k)]->allowed(candidate)) ahead = r;
+  }
+  return rows ? grid::Cell{resume_along + dir * ahead, line}
+              : grid::Cell{line, resume_along + dir * ahead};
+}
+
+bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
+                                              const sim::PlannerView& view) const {
+  // At z = 1 (a low sweep) the footprint is s1 wide, and it also inspects the detected cells.
+  const auto& map = view.map;
+  const int h = low ? h1_ : h2_;
+  const int x_lo = std::max(0, std::min(a.x, b.x) - h);
+  const int x_hi = std::min(map.width() - 1, std::max(a.x, b.x) + h);
+  const int y_lo = std::max(0, std::min(a.y, b.y) - h);
+  const int y_hi = std::min(map.height() - 1, std::max(a.y, b.y) + h);
+  for (int y = y_lo; y <= y_hi; ++y) {
+    for (int x = x_lo; x <= x_hi; ++x) {
+      const int i = map.index(x, y);
+      if (unobserved(view, i) || (low && map[i] == sim::kCorrosionSeen)) return true;
+    }
+  }
+  return false;
+}
+
+void SweepInspectPlanner::skip_seen_bands(Uav& p, grid::Cell pos,
+                                          const sim::PlannerView& view) const {
+  // The waypoints come in pairs, the two ends of a band, on one line. The leg being flown (from
+  // here, on the band's line, to its end) and each following band are dropped while their
+  // footprints would see nothing new: a helper or an inspection saw those cells already.
+  for (;;) {
+    const auto left = p.sweep.remaining();
+    if (left.empty()) return;
+    const grid::Cell end = left.front();
+    const bool on_line = (p.axis == BandAxis::kRows) ? pos.y == end.y : pos.x == end.x;
+    if (on_line && pos != end) {
+      if (leg_sees_unobserved(pos, end, p.low, view)) return;
+      p.sweep.skip(1);
+      continue;
+    }
+    // Flying to a band's first end: skip the whole band when it would see nothing.
+    if (left.size() < 2) return;
+    const grid::Cell other = left[1];
+    const bool band = (p.axis == BandAxis::kRows) ? end.y == other.y : end.x == other.x;
+    if (!band || leg_sees_unobserved(end, other, p.low, view)) return;
+    p.sweep.skip(2);
+  }
+}
+
+}  // namespace hullinspect::planners
