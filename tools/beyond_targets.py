@@ -44,6 +44,13 @@ def ratio_interval(numerator, denominator, stream):
     return low, high
 
 
+def stream(scenario, s2, n, quantity):
+    """The resampling stream of one interval: its cell and which ratio (0: T_c over the best
+    paper planner's, 1: with one failure over none, 2: T_m over the lawnmower's), so that an
+    interval is the same whichever cells a runs.csv holds and whichever tool prints it."""
+    return [SCENARIOS.index(scenario), int(s2), int(n), quantity]
+
+
 def cells(runs):
     """One dict per cell of the paper's scenarios found in runs, in the table's order: the table's
     values, and for tools/plot_beyond.py Sweep-Inspect's T_m over the lawnmower's (with its
@@ -71,7 +78,7 @@ def cells(runs):
                     "best_T_c": means.loc[best, "T_c"], "T_c": means.loc[OURS, "T_c"],
                     "ratio": means.loc[OURS, "T_c"] / means.loc[best, "T_c"],
                     "ratio_ci": ratio_interval(paired["ours"].to_numpy(),
-                                               paired["best"].to_numpy(), [len(out), 0]),
+                                               paired["best"].to_numpy(), stream(scenario, s2, n, 0)),
                     "diff": diff.mean(), "diff_half": half,
                     "faster": int((diff > 0).sum()), "seeds": len(diff),
                     "lawnmower_T_m": means.loc["lawnmower", "T_m"], "T_m": means.loc[OURS, "T_m"],
@@ -87,14 +94,14 @@ def cells(runs):
                                 keys=["ours", "lawnmower"]).dropna()
                 row["T_m_ratio"] = row["T_m"] / row["lawnmower_T_m"]
                 row["T_m_ratio_ci"] = ratio_interval(t_m["ours"].to_numpy(),
-                                                     t_m["lawnmower"].to_numpy(), [len(out), 2])
+                                                     t_m["lawnmower"].to_numpy(), stream(scenario, s2, n, 2))
                 if not fail.empty:
                     with_failure = pd.concat([fail.set_index("seed")["T_c"], ours["T_c"]], axis=1,
                                              keys=["fail", "none"]).dropna()
                     row["fail_ratio"] = fail["T_c"].mean() / means.loc[OURS, "T_c"]
                     row["fail_ratio_ci"] = ratio_interval(with_failure["fail"].to_numpy(),
                                                           with_failure["none"].to_numpy(),
-                                                          [len(out), 1])
+                                                          stream(scenario, s2, n, 1))
                 out.append(row)
     return out
 

@@ -129,7 +129,8 @@ def failure_cells(runs, algorithm):
                     else float("nan")
                 interval = beyond_targets.ratio_interval(
                     paired["fail"].to_numpy(), paired["none"].to_numpy(),
-                    [len(out), 3]) if completed == len(fail) else (float("nan"), float("nan"))
+                    beyond_targets.stream(scenario, s2, n, 1)) if completed == len(fail) \
+                    else (float("nan"), float("nan"))
                 out.append((scenario, s2, n, ratio, interval, completed, len(fail)))
     return out
 

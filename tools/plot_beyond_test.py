@@ -101,6 +101,15 @@ class PlotBeyond(unittest.TestCase):
                   if ln.get_linestyle() == "--"}
         self.assertEqual(levels, {1.3})
 
+    def test_failure_intervals_are_the_tables(self):
+        wobbly = self.runs.copy()
+        failing = (wobbly.scenario == "imperfect-fail1") & (wobbly.algorithm == "sweep-inspect")
+        wobbly.loc[failing, "T_c"] += wobbly.loc[failing, "seed"] ** 2  # intervals of some width
+        table = beyond_targets.cells(wobbly)
+        drawn = plot_beyond.failure_cells(wobbly, "sweep-inspect")
+        self.assertEqual([c["fail_ratio_ci"] for c in table], [c[4] for c in drawn])
+        self.assertLess(table[0]["fail_ratio_ci"][0], table[0]["fail_ratio_ci"][1])
+
     def test_the_command_writes_both_figures(self):
         with tempfile.TemporaryDirectory() as scratch:
             path = Path(scratch) / "runs.csv"
