@@ -1,6 +1,6 @@
-// Sweep-Inspect (docs/beyond.md, item 5): the mission's start and each step's decision per UAV —
-// prior tour, sweep, inspection, return, help — and the trace annotations. The other stages are
-// in sweep_inspect_{partition,sweep,targets,prior,failure}.cpp.
+// Sweep-Inspect (docs/beyond.md, "Sweep-Inspect"): the mission's start and each step's decision per
+// UAV — prior tour, sweep, inspection, return, help — and the trace annotations. The other stages
+// are in sweep_inspect_{partition,sweep,targets,prior,failure}.cpp.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 

@@ -1,6 +1,6 @@
-// Sweep-Inspect's sweeps (docs/beyond.md, items 4 and 5): planning a UAV's bands, following them
-// (skipping what is seen), rejoining after an inspection, and taking over the tail of another
-// UAV's sweep (share-sweep).
+// Sweep-Inspect's sweeps (docs/beyond.md, Sweep-Inspect items 4–6): planning a UAV's bands,
+// following them (skipping what is seen), rejoining after an inspection, and taking over the tail
+// of another UAV's sweep (share-sweep).
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
