@@ -174,51 +174,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     p.mode = Mode::kPrior;
   }
   if (p.mode == Mode::kPrior) {
-    // Inspect the prior's cells of the region first, nearest first, then sweep.
-    auto& cells = prior_[static_cast<std::size_t>(k)];
-    if (prior_distrusted()) cells.clear();  // a prior this wrong is not worth a tour: sweep
-    if (cells.empty() && options_.share_prior && u.z == 1 && !prior_distrusted()) {
-      take_prior_share(k, u.pos);  // the longest tour left gives it the part it ends sooner
-    }
-    if (cells.empty()) {
-      if (u.z == 1 && !p.low) return sim::Action::kChangePlane;
-      if (p.sweep_planned) {
-        p.mode = p.after_prior;
-      } else {
-        p.mode = Mode::kSweep;
-        p.sweep_planned = true;
-        // Plan the sweep from where the prior's inspections ended, over the region's cells they
-        // did not see (a strip band's ends that the tour saw are not flown again).
-        if (options_.nearer_sweep_end) {
-          drop_observed(k, view);
-          p.sweep.assign(sweep_from(k, u.pos));
-          p.replan = false;
-        }
-      }
-    } else {
-      if (u.z == 2) return sim::Action::kChangePlane;
-      if (options_.plan_prior_tour) {
-        // Plan anew when the cell it flew to was seen (on the way, or by another UAV) or went to
-        // another UAV (share-prior): the rest of the tour may be ordered better from here.
-        if (p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen ||
-            std::find(cells.begin(), cells.end(), p.target_cell) == cells.end())
-          p.target_cell = first_of_planned_tour(u.pos, cells);
-        p.target = reach_position(k, u.pos, view.map.cell(p.target_cell), h1_);
-        return step(k, u.pos, p.target);
-      }
-      int best = -1;
-      int best_d = std::numeric_limits<int>::max();
-      for (int i : cells) {
-        const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
-            u.pos, reach_position(k, u.pos, view.map.cell(i), h1_));
-        if (d < best_d) {
-          best_d = d;
-          best = i;
-        }
-      }
-      p.target = reach_position(k, u.pos, view.map.cell(best), h1_);
-      return step(k, u.pos, p.target);
-    }
+    if (const auto a = prior_tour_step(k, u, view)) return *a;
   }
 
   if (p.mode == Mode::kSweep && p.low) {
@@ -242,39 +198,10 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
         p.sweep.assign(sweep_from(k, u.pos));
       }
       if (p.mode == Mode::kReturn && u.pos == p.resume) p.mode = Mode::kSweep;
-      if (p.mode == Mode::kSweep && options_.inspect_on_the_way) {
-        // Descend when a detected cell is abreast: its position along the band within reach of
-        // the z = 1 footprint (across it, within the band's width). Also, with
-        // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
-        // a cell beyond the trimmed end of a band (within h2 of its last position, never within
-        // h1) or behind its start would otherwise wait for the helpers at the mission's end.
-        grid::Cell next = u.pos;
-        for (const grid::Cell w : p.sweep.remaining()) {
-          if (w != u.pos) {
-            next = w;
-            break;
-          }
-        }
-        const bool rows = leg_along_x(p.axis, u.pos, next);
-        const auto along_of = [rows](grid::Cell c) { return rows ? c.x : c.y; };
-        const bool leg_along = rows ? next.y == u.pos.y : next.x == u.pos.x;
-        const int leg_lo = std::min(along_of(u.pos), leg_along ? along_of(next) : along_of(u.pos));
-        const int leg_hi = std::max(along_of(u.pos), leg_along ? along_of(next) : along_of(u.pos));
-        for (int i : pending_) {
-          const grid::Cell c = view.map.cell(i);
-          const int along = std::abs(along_of(c) - along_of(u.pos));
-          const int across = rows ? std::abs(c.y - u.pos.y) : std::abs(c.x - u.pos.x);
-          const int nearest_on_leg = along_of(c) < leg_lo   ? leg_lo - along_of(c)
-                                     : along_of(c) > leg_hi ? along_of(c) - leg_hi
-                                                            : 0;
-          const bool here_or_never = along <= h1_ || (options_.inspect_band_ends && along <= h2_ &&
-                                                      nearest_on_leg >= along);
-          if (here_or_never && across <= h2_ && reachable(k, i, world::kReachZ1) &&
-              !claimed_by_other(k, i)) {
-            p.resume = u.pos;
-            return sim::Action::kChangePlane;
-          }
-        }
+      if (p.mode == Mode::kSweep && options_.inspect_on_the_way &&
+          detection_abreast(k, u.pos, view)) {
+        p.resume = u.pos;
+        return sim::Action::kChangePlane;
       }
       if (p.mode == Mode::kReturn) return step(k, u.pos, p.resume);
       if (const auto a = follow_sweep(k, u, view)) return *a;
@@ -313,42 +240,7 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     return step(k, u.pos, p.target);
   }
 
-  if (p.mode == Mode::kHelp) {
-    // Keep a target while it is still work; else take the nearest unclaimed work anywhere:
-    // detected cells first (inspected from z = 1), then unknown cells (covered from z = 2).
-    // A cell taken as unknown that turned out corroded needs z = 1 now: drop it when no z = 1
-    // footprint reaches it (no-fly zones).
-    const bool target_done = p.target_cell < 0 ||
-                             (view.map[p.target_cell] != sim::kUnknown &&
-                              !(view.map[p.target_cell] == sim::kCorrosionSeen)) ||
-                             (view.map[p.target_cell] == sim::kCorrosionSeen &&
-                              (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0 &&
-                              !reachable(k, p.target_cell, world::kReachZ1));
-    if (target_done || claimed_by_other(k, p.target_cell)) {
-      // Detected cells first (a sweep passing abreast is not sure to), then the tail of the sweep
-      // that would end last (share-sweep), then unknown cells.
-      p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
-      if (p.target_cell < 0 && options_.share_sweep && take_sweep_tail(k, u, view))
-        return decide_uav(k, u, view);
-      if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
-      if (p.target_cell < 0) {
-        p.mode = Mode::kDone;
-        return sim::Action::kHover;
-      }
-    }
-    const grid::Cell c = view.map.cell(p.target_cell);
-    // A detected cell (seen at z = 2, M = 2) needs z = 1; anything else is covered from z = 2.
-    const bool inspect = view.map[p.target_cell] == sim::kCorrosionSeen &&
-                         (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0;
-    const int want_z = inspect ? 1 : 2;
-    p.target = reach_position(k, u.pos, c, inspect ? h1_ : h2_);
-    if (u.z != want_z) {
-      // Change plane where the work is: go there first at z = 2, climb at once from z = 1.
-      if (u.z == 2 && u.pos != p.target) return step(k, u.pos, p.target);
-      return sim::Action::kChangePlane;
-    }
-    return step(k, u.pos, p.target);
-  }
+  if (p.mode == Mode::kHelp) return help_step(k, u, view);
   return sim::Action::kHover;  // kDone
 }
 

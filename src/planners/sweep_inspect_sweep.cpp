@@ -341,4 +341,41 @@ void SweepInspectPlanner::skip_seen_bands(Uav& p, grid::Cell pos,
   }
 }
 
+bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
+                                            const sim::PlannerView& view) const {
+  const Uav& p = uavs_[static_cast<std::size_t>(k)];
+  // Descend when a detected cell is abreast: its position along the band within reach of
+  // the z = 1 footprint (across it, within the band's width). Also, with
+  // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
+  // a cell beyond the trimmed end of a band (within h2 of its last position, never within
+  // h1) or behind its start would otherwise wait for the helpers at the mission's end.
+  grid::Cell next = pos;
+  for (const grid::Cell w : p.sweep.remaining()) {
+    if (w != pos) {
+      next = w;
+      break;
+    }
+  }
+  const bool rows = leg_along_x(p.axis, pos, next);
+  const auto along_of = [rows](grid::Cell c) { return rows ? c.x : c.y; };
+  const bool leg_along = rows ? next.y == pos.y : next.x == pos.x;
+  const int leg_lo = std::min(along_of(pos), leg_along ? along_of(next) : along_of(pos));
+  const int leg_hi = std::max(along_of(pos), leg_along ? along_of(next) : along_of(pos));
+  for (int i : pending_) {
+    const grid::Cell c = view.map.cell(i);
+    const int along = std::abs(along_of(c) - along_of(pos));
+    const int across = rows ? std::abs(c.y - pos.y) : std::abs(c.x - pos.x);
+    const int nearest_on_leg = along_of(c) < leg_lo   ? leg_lo - along_of(c)
+                               : along_of(c) > leg_hi ? along_of(c) - leg_hi
+                                                      : 0;
+    const bool here_or_never =
+        along <= h1_ || (options_.inspect_band_ends && along <= h2_ && nearest_on_leg >= along);
+    if (here_or_never && across <= h2_ && reachable(k, i, world::kReachZ1) &&
+        !claimed_by_other(k, i)) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace hullinspect::planners

@@ -1,5 +1,6 @@
-// Sweep-Inspect's choice of single targets: the nearest detection, unobserved cell or cluster edge
-// a UAV may take, and the claims that keep two UAVs off one target (yield-claims).
+// Sweep-Inspect's single targets (docs/beyond.md, Sweep-Inspect item 6): the help phase of a UAV
+// whose sweep is done, the nearest detection, unobserved cell or cluster edge a UAV may take, and
+// the claims that keep two UAVs off one target (yield-claims).
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -107,6 +108,45 @@ int SweepInspectPlanner::nearest_cluster_edge(int k, grid::Cell pos, grid::Cell 
     }
   }
   return best;
+}
+
+sim::Action SweepInspectPlanner::help_step(int k, const sim::UavState& u,
+                                           const sim::PlannerView& view) {
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  // Keep a target while it is still work; else take the nearest unclaimed work anywhere:
+  // detected cells first (inspected from z = 1), then unknown cells (covered from z = 2).
+  // A cell taken as unknown that turned out corroded needs z = 1 now: drop it when no z = 1
+  // footprint reaches it (no-fly zones).
+  const bool target_done = p.target_cell < 0 ||
+                           (view.map[p.target_cell] != sim::kUnknown &&
+                            !(view.map[p.target_cell] == sim::kCorrosionSeen)) ||
+                           (view.map[p.target_cell] == sim::kCorrosionSeen &&
+                            (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0 &&
+                            !reachable(k, p.target_cell, world::kReachZ1));
+  if (target_done || claimed_by_other(k, p.target_cell)) {
+    // Detected cells first (a sweep passing abreast is not sure to), then the tail of the sweep
+    // that would end last (share-sweep), then unknown cells.
+    p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
+    if (p.target_cell < 0 && options_.share_sweep && take_sweep_tail(k, u, view))
+      return decide_uav(k, u, view);
+    if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
+    if (p.target_cell < 0) {
+      p.mode = Mode::kDone;
+      return sim::Action::kHover;
+    }
+  }
+  const grid::Cell c = view.map.cell(p.target_cell);
+  // A detected cell (seen at z = 2, M = 2) needs z = 1; anything else is covered from z = 2.
+  const bool inspect = view.map[p.target_cell] == sim::kCorrosionSeen &&
+                       (view.seen[p.target_cell] & sim::kSeenAtZ2) != 0;
+  const int want_z = inspect ? 1 : 2;
+  p.target = reach_position(k, u.pos, c, inspect ? h1_ : h2_);
+  if (u.z != want_z) {
+    // Change plane where the work is: go there first at z = 2, climb at once from z = 1.
+    if (u.z == 2 && u.pos != p.target) return step(k, u.pos, p.target);
+    return sim::Action::kChangePlane;
+  }
+  return step(k, u.pos, p.target);
 }
 
 }  // namespace hullinspect::planners

@@ -144,6 +144,15 @@ class SweepInspectPlanner final : public Planner {
     std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Mode kPrior: UAV k's next move on its tour of the prior's cells at z = 1; nullopt when the
+  /// tour is done and the UAV has moved on to its sweep (or back to what it left).
+  std::optional<sim::Action> prior_tour_step(int k, const sim::UavState& u,
+                                             const sim::PlannerView& view);
+  /// inspect-on-the-way: whether a detected cell is abreast of UAV k sweeping at `pos` (or, with
+  /// inspect-band-ends, beyond the leg it flies), so that it descends now.
+  bool detection_abreast(int k, grid::Cell pos, const sim::PlannerView& view) const;
+  /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere (or a sweep tail).
+  sim::Action help_step(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them).
   void drop_observed(int k, const sim::PlannerView& view);
   /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
