@@ -44,6 +44,14 @@ def ratio_interval(numerator, denominator, stream):
     return low, high
 
 
+def paired_ratio(numerator, denominator, stream_key):
+    """mean(numerator) / mean(denominator) of two per-seed Series (indexed by seed), and its
+    bootstrap interval over the seeds both have (ratio_interval, seeded by `stream_key`)."""
+    paired = pd.concat([numerator, denominator], axis=1, keys=["a", "b"]).dropna()
+    interval = ratio_interval(paired["a"].to_numpy(), paired["b"].to_numpy(), stream_key)
+    return numerator.mean() / denominator.mean(), interval
+
+
 def stream(scenario, s2, n, quantity):
     """The resampling stream of one interval: its cell and which ratio (0: T_c over the best
     paper planner's, 1: with one failure over none, 2: T_m over the lawnmower's), so that an
@@ -71,17 +79,19 @@ def cells(runs):
                 theirs = cell[cell.algorithm == best].set_index("seed")
                 diff = (theirs["T_c"] - ours["T_c"]).dropna()
                 half = 1.96 * diff.std(ddof=1) / math.sqrt(len(diff)) if len(diff) > 1 else 0.0
-                paired = pd.concat([ours["T_c"], theirs["T_c"]], axis=1, keys=["ours", "best"])
-                paired = paired.dropna()
+                ratio, ratio_ci = paired_ratio(ours["T_c"], theirs["T_c"],
+                                               stream(scenario, s2, n, 0))
+                t_m_ratio, t_m_ratio_ci = paired_ratio(
+                    ours["T_m"], cell[cell.algorithm == "lawnmower"].set_index("seed")["T_m"],
+                    stream(scenario, s2, n, 2))
                 row = {
                     "scenario": scenario, "s2": s2, "n": n, "best": best,
                     "best_T_c": means.loc[best, "T_c"], "T_c": means.loc[OURS, "T_c"],
-                    "ratio": means.loc[OURS, "T_c"] / means.loc[best, "T_c"],
-                    "ratio_ci": ratio_interval(paired["ours"].to_numpy(),
-                                               paired["best"].to_numpy(), stream(scenario, s2, n, 0)),
+                    "ratio": ratio, "ratio_ci": ratio_ci,
                     "diff": diff.mean(), "diff_half": half,
                     "faster": int((diff > 0).sum()), "seeds": len(diff),
                     "lawnmower_T_m": means.loc["lawnmower", "T_m"], "T_m": means.loc[OURS, "T_m"],
+                    "T_m_ratio": t_m_ratio, "T_m_ratio_ci": t_m_ratio_ci,
                     "complete": int(ours["complete"].sum()), "runs": len(ours),
                     "fail_complete": int(fail["complete"].sum()), "fail_runs": len(fail),
                     "fail_ratio": float("nan"), "fail_ratio_ci": (float("nan"), float("nan")),
@@ -89,19 +99,9 @@ def cells(runs):
                     "oracle_T_c": (means.loc[ORACLE, "T_c"] if ORACLE in means.index
                                    else float("nan")),
                 }
-                lawnmower = cell[cell.algorithm == "lawnmower"].set_index("seed")
-                t_m = pd.concat([ours["T_m"], lawnmower["T_m"]], axis=1,
-                                keys=["ours", "lawnmower"]).dropna()
-                row["T_m_ratio"] = row["T_m"] / row["lawnmower_T_m"]
-                row["T_m_ratio_ci"] = ratio_interval(t_m["ours"].to_numpy(),
-                                                     t_m["lawnmower"].to_numpy(), stream(scenario, s2, n, 2))
                 if not fail.empty:
-                    with_failure = pd.concat([fail.set_index("seed")["T_c"], ours["T_c"]], axis=1,
-                                             keys=["fail", "none"]).dropna()
-                    row["fail_ratio"] = fail["T_c"].mean() / means.loc[OURS, "T_c"]
-                    row["fail_ratio_ci"] = ratio_interval(with_failure["fail"].to_numpy(),
-                                                          with_failure["none"].to_numpy(),
-                                                          stream(scenario, s2, n, 1))
+                    row["fail_ratio"], row["fail_ratio_ci"] = paired_ratio(
+                        fail.set_index("seed")["T_c"], ours["T_c"], stream(scenario, s2, n, 1))
                 out.append(row)
     return out
 
@@ -123,7 +123,8 @@ def main(path):
         low, high = r["ratio_ci"]
         fail_low, fail_high = r["fail_ratio_ci"]
         print(f"| {r['scenario']} | {r['s2']} | {r['n']} | {r['best_T_c']:.0f} ({r['best']}) "
-              f"| {r['T_c']:.0f} | {r['ratio']:.2f}{'' if t_c_ok else ' ✗'} [{low:.2f}, {high:.2f}] "
+              f"| {r['T_c']:.0f} | {r['ratio']:.2f}{'' if t_c_ok else ' ✗'} "
+              f"[{low:.2f}, {high:.2f}] "
               f"| {r['diff']:.1f} [{r['diff'] - r['diff_half']:.1f}, "
               f"{r['diff'] + r['diff_half']:.1f}] "
               f"| {r['faster']}/{r['seeds']} | {r['lawnmower_T_m']:.0f} "

@@ -122,15 +122,11 @@ def failure_cells(runs, algorithm):
                 fail = mine[mine.scenario == scenario + "-fail1"].set_index("seed")
                 if none.empty or fail.empty:
                     continue
-                paired = pd.concat([fail["T_c"], none["T_c"]], axis=1,
-                                   keys=["fail", "none"]).dropna()
                 completed = int(fail["complete"].sum())
-                ratio = fail["T_c"].mean() / none["T_c"].mean() if completed == len(fail) \
-                    else float("nan")
-                interval = beyond_targets.ratio_interval(
-                    paired["fail"].to_numpy(), paired["none"].to_numpy(),
-                    beyond_targets.stream(scenario, s2, n, 1)) if completed == len(fail) \
-                    else (float("nan"), float("nan"))
+                ratio, interval = float("nan"), (float("nan"), float("nan"))
+                if completed == len(fail):  # else no ratio: some missions never ended
+                    ratio, interval = beyond_targets.paired_ratio(
+                        fail["T_c"], none["T_c"], beyond_targets.stream(scenario, s2, n, 1))
                 out.append((scenario, s2, n, ratio, interval, completed, len(fail)))
     return out
 
