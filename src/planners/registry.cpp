@@ -95,6 +95,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("resume-ahead", &SweepInspectOptions::resume_ahead,
             "after an inspection rejoin the strip up to s2/2 columns ahead (already seen) instead "
             "of where it was left")
+      .flag("replan-rejoin", &SweepInspectOptions::replan_rejoin,
+            "after an inspection plan the sweep anew from where the UAV is when that flight is "
+            "shorter than the way back to the band and on (not among no-fly zones)")
       .flag("nearer-sweep-end", &SweepInspectOptions::nearer_sweep_end,
             "plan the sweep from where the prior's inspections ended, over the cells they did not "
             "see, from its nearer end (false: the whole region bottom-up from the start cell)")

@@ -234,6 +234,11 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
     p.target_cell = cell;
     if (cell < 0) {
       if (options_.resume_ahead) p.resume = rejoin_point(k, p, u.pos, view);
+      if (replan_after_inspection(k, u.pos, view) && p.low) {
+        // The sweep planned from here starts with dense columns, swept at z = 1: no climb.
+        p.mode = Mode::kSweep;
+        return decide_uav(k, u, view);
+      }
       return sim::Action::kChangePlane;
     }
     p.target = reach_position(k, u.pos, view.map.cell(cell), h1_);

@@ -261,6 +261,35 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
   return true;
 }
 
+bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
+                                                  const sim::PlannerView& view) {
+  // An inspection can take a UAV up to the inspection radius away from its band (a rectangle at
+  // the footprint's edge, a cluster followed), and flying back to where it left the band cost
+  // each UAV 10-14 moves a mission (imperfect, s2 = 11, n = 8, tuning seeds): the sweep planned
+  // anew from here over what is still unobserved is often shorter. Both flights are estimated as
+  // the sweep will be planned (both parts, with the approach); the state that planning sets is
+  // the UAV's again unless the plan from here is taken.
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  if (!options_.replan_rejoin || reach_ != nullptr || p.resume == pos) return false;
+  drop_observed(k, view);
+  const auto restore = [&p, low = p.low, other_part = p.other_part, axis = p.axis,
+                        approach_rest = p.approach_rest, resume = p.resume] {
+    p.low = low;
+    p.other_part = other_part;
+    p.axis = axis;
+    p.approach_rest = approach_rest;
+    p.resume = resume;
+  };
+  const double back = grid::manhattan(pos, p.resume) + planned_sweep_steps(k, p.resume);
+  restore();
+  const double here = planned_sweep_steps(k, pos);
+  restore();
+  if (here >= back) return false;
+  p.sweep.assign(sweep_from(k, pos));
+  p.resume = pos;
+  return true;
+}
+
 grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos,
                                              const sim::PlannerView& view) const {
   // From the point where it left the strip (on the strip's centre line, at z = 2) the UAV saw the

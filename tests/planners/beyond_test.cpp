@@ -689,6 +689,71 @@ TEST(SweepInspect, ASweepingUavDescendsOnlyForWhatIsAbreastOnItsLeg) {
   RecordProperty("t_c_sum", t_c);
 }
 
+// replan-rejoin: after an inspection a UAV plans its sweep anew from where it is when that is
+// shorter than flying back to the band. Counted: the moves made in mode "return" (the flight from
+// where it climbed to where it rejoins its sweep), summed with T_c over the imperfect and
+// combined scenarios, s2 = 7 and 11, n = 4 and 8, every mission complete under the checker.
+class ReturnMoveCounter final : public MissionObserver, public AnnotationSink {
+ public:
+  void on_start(const sim::Simulator& sim, const Planner&) override {
+    positions_.clear();
+    for (const auto& u : sim.uavs()) positions_.push_back(u.pos);
+  }
+  void on_step(const sim::Simulator& sim, const Planner& planner) override {
+    // The annotations are those of the decision that led to this step.
+    returning_.assign(positions_.size(), 0);
+    planner.annotate(*this);
+    for (std::size_t k = 0; k < positions_.size(); ++k) {
+      const grid::Cell now = sim.uavs()[k].pos;
+      if (returning_[k] != 0 && now != positions_[k]) ++return_moves;
+      positions_[k] = now;
+    }
+  }
+  void uav(int k, std::string_view mode, grid::Cell, std::span<const grid::Cell>) override {
+    returning_[static_cast<std::size_t>(k)] = mode == "return" ? 1 : 0;
+  }
+  void cells(std::string_view, std::span<const int>) override {}
+  int return_moves = 0;
+
+ private:
+  std::vector<grid::Cell> positions_;
+  std::vector<char> returning_;
+};
+
+TEST(SweepInspect, ReplanRejoinShortensTheWayBack) {
+  const auto& hull = world::default_hull();
+  int moves[2] = {0, 0};
+  int t_c[2] = {0, 0};
+  for (bool replan : {true, false}) {
+    for (const char* scenario : {"imperfect", "combined"}) {
+      for (int s2 : {7, 11}) {
+        for (int n : {4, 8}) {
+          for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
+            auto spec = spec_for("sweep-inspect", scenario, s2, n, seed);
+            spec.planner_options = {{"replan-rejoin", replan ? "true" : "false"}};
+            ReturnMoveCounter counter;
+            bool checked = false;
+            const auto r = run_checked(spec, hull, checked, &counter);
+            SCOPED_TRACE(::testing::Message() << scenario << " s2=" << s2 << " n=" << n
+                                              << " seed=" << seed << " replan=" << replan);
+            ASSERT_TRUE(r.complete);
+            EXPECT_TRUE(checked);
+            moves[replan ? 0 : 1] += counter.return_moves;
+            t_c[replan ? 0 : 1] += *r.t_c;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(moves[1], 0);  // without the option UAVs do fly back
+  EXPECT_LT(moves[0], moves[1]);
+  EXPECT_LT(t_c[0], t_c[1]);
+  RecordProperty("return_moves_with", moves[0]);
+  RecordProperty("return_moves_without", moves[1]);
+  RecordProperty("t_c_with", t_c[0]);
+  RecordProperty("t_c_without", t_c[1]);
+}
+
 // skip-seen-bands at z = 1 too: on the combined scenario, where the front zone is swept at z = 1,
 // the UAVs skip the bands of a low sweep that others (helpers, a neighbour's inspections) have
 // already observed and inspected; summed over s2 = 7, 9 and 11, n = 4 and 8, seeds 1–3, T_c and

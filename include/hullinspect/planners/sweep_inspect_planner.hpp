@@ -36,6 +36,10 @@ struct SweepInspectOptions {
   /// After an inspection, rejoin the strip up to s2/2 columns ahead of where it was left (those
   /// columns were already seen from there) instead of flying back to that point.
   bool resume_ahead = true;
+  /// After an inspection, plan the sweep anew from where the UAV is (over the cells of its region
+  /// not yet observed) when that flight is shorter than the way back to the rejoin point and the
+  /// sweep planned from there (Manhattan estimates; not among no-fly zones).
+  bool replan_rejoin = true;
   /// Plan the sweep from where the prior's inspections ended, over the region's cells they did
   /// not see, bottom-up or top-down, whichever end is nearer (false: the whole region bottom-up
   /// from the start cell).
@@ -244,6 +248,9 @@ class SweepInspectPlanner final : public Planner {
   /// `low`: with the s1 footprint, or a detected cell to inspect).
   bool leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
                            const sim::PlannerView& view) const;
+  /// replan-rejoin: UAV k, its inspection done at `pos`, plans its sweep from `pos` when that is
+  /// shorter than flying back to Uav::resume and on; true (and Uav::resume = pos) if it did.
+  bool replan_after_inspection(int k, grid::Cell pos, const sim::PlannerView& view);
   /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
   grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
