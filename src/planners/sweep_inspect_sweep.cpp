@@ -399,10 +399,9 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
                                                       : 0;
     const bool here_or_never =
         along <= h1_ || (options_.inspect_band_ends && along <= h2_ && nearest_on_leg >= along);
-    if (here_or_never && across <= h2_ && reachable(k, i, world::kReachZ1) &&
-        !claimed_by_other(k, i)) {
-      return true;
-    }
+    // The cells nearest_pending may take, so that a UAV never descends for one it then leaves
+    // (with help off, a detection in another UAV's region: it climbed and descended for ever).
+    if (here_or_never && across <= h2_ && may_inspect(k, i)) return true;
   }
   return false;
 }

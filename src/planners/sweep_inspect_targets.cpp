@@ -34,6 +34,11 @@ bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
   return false;
 }
 
+bool SweepInspectPlanner::may_inspect(int k, int i) const {
+  return (options_.help || partition_->owner[i] == k) && reachable(k, i, world::kReachZ1) &&
+         !claimed_by_other(k, i);
+}
+
 int SweepInspectPlanner::nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
                                          const sim::PlannerView& view) const {
   int best = -1;
@@ -41,8 +46,7 @@ int SweepInspectPlanner::nearest_pending(int k, grid::Cell pos, grid::Cell aroun
   for (int i : pending_) {
     const grid::Cell c = view.map.cell(i);
     if (radius >= 0 && chebyshev(c, around) > radius) continue;
-    if (!options_.help && partition_->owner[i] != k) continue;
-    if (!reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+    if (!may_inspect(k, i)) continue;
     const int d =
         uav_distances_[static_cast<std::size_t>(k)]->distance(pos, reach_position(k, pos, c, h1_));
     if (d < best_d) {

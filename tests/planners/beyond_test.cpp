@@ -1127,5 +1127,27 @@ TEST(SweepInspect, WithoutHelpAFailedUavsRegionStaysUndone) {
   EXPECT_TRUE(checked);
 }
 
+// With help off a UAV inspects only its own region's detections, so it must also descend only
+// for those: the sweep-inspect ablation found a UAV that descended for a neighbour's detection
+// abreast of it, found nothing of its own to inspect, climbed and descended again until the time
+// limit (imperfect, s2 = 11, n = 8, seed 1 000 014). Without failures every mission completes.
+TEST(SweepInspect, WithoutHelpAUavDescendsOnlyForItsOwnDetections) {
+  std::vector<std::uint64_t> seeds = {1000014};
+  for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) seeds.push_back(seed);
+  for (const std::uint64_t seed : seeds) {
+    for (int n : {4, 8}) {
+      auto spec = spec_for("sweep-inspect", "imperfect", 11, n, seed);
+      spec.planner_options = {{"help", "false"}};
+      spec.params.time_limit = 2000;
+      bool checked = false;
+      const auto r = run_checked(spec, world::default_hull(), checked);
+      SCOPED_TRACE(::testing::Message() << "n=" << n << " seed=" << seed);
+      EXPECT_TRUE(r.complete);
+      EXPECT_TRUE(checked);
+      EXPECT_LT(r.totals().plane_changes, 40 * n);  // caught between the planes: hundreds
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hullinspect::planners

@@ -176,6 +176,9 @@ class SweepInspectPlanner final : public Planner {
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
+  /// Whether UAV k may inspect detected cell i: in its region when help is off, seen from z = 1
+  /// by some position it can reach, not claimed by another UAV.
+  bool may_inspect(int k, int i) const;
   /// low-sweep-above: marks the columns of the corrosion zones (one zone when the statistics are
   /// unknown) whose cells the sweep expects corroded more often than low-sweep-above.
   void find_dense_columns(const PlannerContext& context);
