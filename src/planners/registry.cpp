@@ -154,6 +154,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("inspect-band-ends", &SweepInspectOptions::inspect_band_ends,
             "while sweeping also descend for a detected cell in the footprint that the flight's "
             "current leg comes no nearer to (beyond a band's trimmed end)")
+      .flag("descend-when-level", &SweepInspectOptions::descend_when_level,
+            "descend for a detection abreast only once it is no longer ahead on the leg, so that "
+            "the z = 2 footprint has seen the rows beyond it (false: within s1/2 ahead)")
       .flag("plan-prior-tour", &SweepInspectOptions::plan_prior_tour,
             "visit the prior's cells in the order of a planned tour (nearest neighbour, 2-opt, "
             "Or-opt), planned again when its next cell was seen (false: the nearest cell at "

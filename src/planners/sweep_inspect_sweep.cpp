@@ -374,7 +374,8 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
                                             const sim::PlannerView& view) const {
   const Uav& p = uavs_[static_cast<std::size_t>(k)];
   // Descend when a detected cell is abreast: its position along the band within reach of
-  // the z = 1 footprint (across it, within the band's width). Also, with
+  // the z = 1 footprint (across it, within the band's width), and with descend-when-level no
+  // longer ahead on the leg. Also, with
   // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
   // a cell beyond the trimmed end of a band (within h2 of its last position, never within
   // h1) or behind its start would otherwise wait for the helpers at the mission's end.
@@ -397,8 +398,14 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
     const int nearest_on_leg = along_of(c) < leg_lo   ? leg_lo - along_of(c)
                                : along_of(c) > leg_hi ? along_of(c) - leg_hi
                                                       : 0;
+    // descend-when-level: not while the cell is still ahead on the leg; once it is level, the
+    // footprint has seen h2 rows beyond it, a rectangle's last rows among them.
+    const bool ahead = options_.descend_when_level && leg_along && next != pos &&
+                       (along_of(next) > along_of(pos)) == (along_of(c) > along_of(pos)) &&
+                       along_of(c) != along_of(pos);
     const bool here_or_never =
-        along <= h1_ || (options_.inspect_band_ends && along <= h2_ && nearest_on_leg >= along);
+        (along <= h1_ && !ahead) ||
+        (options_.inspect_band_ends && along <= h2_ && nearest_on_leg >= along);
     // The cells nearest_pending may take, so that a UAV never descends for one it then leaves
     // (with help off, a detection in another UAV's region: it climbed and descended for ever).
     if (here_or_never && across <= h2_ && may_inspect(k, i)) return true;

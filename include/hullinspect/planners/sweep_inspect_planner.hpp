@@ -107,6 +107,10 @@ struct SweepInspectOptions {
   /// that the current leg of the flight comes no nearer to: beyond a band's trimmed end, or
   /// behind its start (false: such cells wait for the helpers).
   bool inspect_band_ends = true;
+  /// Descend for a detection abreast only once it is no longer ahead on the leg being flown (up
+  /// to h1 behind), so that the z = 2 footprint has seen the rows beyond it first (false: as soon
+  /// as it is within h1 ahead).
+  bool descend_when_level = true;
   /// Visit the prior's cells in the order of a planned open tour (open_tour.hpp: nearest
   /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen (false:
   /// the nearest cell at every step).
