@@ -80,6 +80,42 @@ TimeSums summed_times(const char* scenario, const OptionMap& options,
   return sums;
 }
 
+/// One count of a mission observer and T_c, each summed over the missions of Sweep-Inspect with
+/// `option` true ([0]) and false ([1]) on `scenarios` × s2 ∈ {7, 11} × n ∈ {4, 8} × seeds 1–3;
+/// every mission must complete under the shared checker. `count` reads an observer's count.
+struct OnOffSums {
+  int count[2] = {0, 0};
+  int t_c[2] = {0, 0};
+};
+template <class Observer, class Count>
+OnOffSums sums_with_and_without(const char* option, std::initializer_list<const char*> scenarios,
+                                Count count) {
+  OnOffSums sums;
+  for (bool on : {true, false}) {
+    for (const char* scenario : scenarios) {
+      for (int s2 : {7, 11}) {
+        for (int n : {4, 8}) {
+          for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            auto spec = spec_for("sweep-inspect", scenario, s2, n, seed);
+            spec.planner_options = {{option, on ? "true" : "false"}};
+            Observer observer;
+            bool checked = false;
+            const auto r = run_checked(spec, world::default_hull(), checked, &observer);
+            SCOPED_TRACE(::testing::Message() << scenario << " s2=" << s2 << " n=" << n
+                                              << " seed=" << seed << " " << option << "=" << on);
+            EXPECT_TRUE(r.complete);
+            EXPECT_TRUE(checked);
+            if (!r.complete) continue;
+            sums.count[on ? 0 : 1] += count(observer);
+            sums.t_c[on ? 0 : 1] += *r.t_c;
+          }
+        }
+      }
+    }
+  }
+  return sums;
+}
+
 TEST(Failures, PartTspLeavesAFailedUavsRegionUndoneAndReportsIncomplete) {
   const auto& hull = world::default_hull();
   for (const char* algorithm : {"part-tsp", "lawnmower"}) {
@@ -559,32 +595,11 @@ class HelpInspectionCounter final : public MissionObserver, public AnnotationSin
 };
 
 TEST(SweepInspect, InspectBandEndsLeavesLessForTheHelpers) {
-  const auto& hull = world::default_hull();
-  int help[2] = {0, 0};
-  int t_c[2] = {0, 0};
-  for (bool ends : {true, false}) {
-    for (const char* scenario : {"imperfect", "combined"}) {
-      for (int s2 : {7, 11}) {
-        for (int n : {4, 8}) {
-          for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-            auto spec = spec_for("sweep-inspect", scenario, s2, n, seed);
-            spec.planner_options = {{"inspect-band-ends", ends ? "true" : "false"}};
-            HelpInspectionCounter counter;
-            bool checked = false;
-            const auto r = run_checked(spec, hull, checked, &counter);
-            SCOPED_TRACE(::testing::Message() << scenario << " s2=" << s2 << " n=" << n
-                                              << " seed=" << seed << " ends=" << ends);
-            ASSERT_TRUE(r.complete);
-            EXPECT_TRUE(checked);
-            help[ends ? 0 : 1] += counter.help_inspections;
-            t_c[ends ? 0 : 1] += *r.t_c;
-          }
-        }
-      }
-    }
-  }
-  EXPECT_LT(help[0], help[1]);
-  EXPECT_LT(t_c[0], t_c[1]);
+  const auto sums = sums_with_and_without<HelpInspectionCounter>(
+      "inspect-band-ends", {"imperfect", "combined"},
+      [](const HelpInspectionCounter& c) { return c.help_inspections; });
+  EXPECT_LT(sums.count[0], sums.count[1]);
+  EXPECT_LT(sums.t_c[0], sums.t_c[1]);
 }
 
 // inspect-on-the-way follows the leg being flown, not the bands' axis: an approach leg
@@ -699,33 +714,14 @@ TEST(SweepInspect, ASweepingUavDescendsOnlyForWhatIsAbreastOnItsLeg) {
 // without the option some descents are for cells still ahead, and T_c summed over the imperfect
 // missions is higher.
 TEST(SweepInspect, DescendWhenLevelWaitsForTheDetectionToComeLevel) {
-  const auto& hull = world::default_hull();
-  int before_level[2] = {0, 0};
-  int t_c[2] = {0, 0};
-  for (bool level : {true, false}) {
-    for (int s2 : {7, 11}) {
-      for (int n : {4, 8}) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-          auto spec = spec_for("sweep-inspect", "imperfect", s2, n, seed);
-          spec.planner_options = {{"descend-when-level", level ? "true" : "false"}};
-          EarlyDescentCounter counter;
-          bool checked = false;
-          const auto r = run_checked(spec, hull, checked, &counter);
-          SCOPED_TRACE(::testing::Message()
-                       << "s2=" << s2 << " n=" << n << " seed=" << seed << " level=" << level);
-          ASSERT_TRUE(r.complete);
-          EXPECT_TRUE(checked);
-          before_level[level ? 0 : 1] += counter.before_level;
-          t_c[level ? 0 : 1] += *r.t_c;
-        }
-      }
-    }
-  }
-  EXPECT_EQ(before_level[0], 0);
-  EXPECT_GT(before_level[1], 0);
-  EXPECT_LT(t_c[0], t_c[1]);
-  RecordProperty("t_c_with", t_c[0]);
-  RecordProperty("t_c_without", t_c[1]);
+  const auto sums = sums_with_and_without<EarlyDescentCounter>(
+      "descend-when-level", {"imperfect"},
+      [](const EarlyDescentCounter& c) { return c.before_level; });
+  EXPECT_EQ(sums.count[0], 0);
+  EXPECT_GT(sums.count[1], 0);
+  EXPECT_LT(sums.t_c[0], sums.t_c[1]);
+  RecordProperty("t_c_with", sums.t_c[0]);
+  RecordProperty("t_c_without", sums.t_c[1]);
 }
 
 // replan-rejoin: after an inspection a UAV plans its sweep anew from where it is when that is
@@ -760,37 +756,16 @@ class ReturnMoveCounter final : public MissionObserver, public AnnotationSink {
 };
 
 TEST(SweepInspect, ReplanRejoinShortensTheWayBack) {
-  const auto& hull = world::default_hull();
-  int moves[2] = {0, 0};
-  int t_c[2] = {0, 0};
-  for (bool replan : {true, false}) {
-    for (const char* scenario : {"imperfect", "combined"}) {
-      for (int s2 : {7, 11}) {
-        for (int n : {4, 8}) {
-          for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-            auto spec = spec_for("sweep-inspect", scenario, s2, n, seed);
-            spec.planner_options = {{"replan-rejoin", replan ? "true" : "false"}};
-            ReturnMoveCounter counter;
-            bool checked = false;
-            const auto r = run_checked(spec, hull, checked, &counter);
-            SCOPED_TRACE(::testing::Message() << scenario << " s2=" << s2 << " n=" << n
-                                              << " seed=" << seed << " replan=" << replan);
-            ASSERT_TRUE(r.complete);
-            EXPECT_TRUE(checked);
-            moves[replan ? 0 : 1] += counter.return_moves;
-            t_c[replan ? 0 : 1] += *r.t_c;
-          }
-        }
-      }
-    }
-  }
-  EXPECT_GT(moves[1], 0);  // without the option UAVs do fly back
-  EXPECT_LT(moves[0], moves[1]);
-  EXPECT_LT(t_c[0], t_c[1]);
-  RecordProperty("return_moves_with", moves[0]);
-  RecordProperty("return_moves_without", moves[1]);
-  RecordProperty("t_c_with", t_c[0]);
-  RecordProperty("t_c_without", t_c[1]);
+  const auto sums = sums_with_and_without<ReturnMoveCounter>(
+      "replan-rejoin", {"imperfect", "combined"},
+      [](const ReturnMoveCounter& c) { return c.return_moves; });
+  EXPECT_GT(sums.count[1], 0);  // without the option UAVs do fly back
+  EXPECT_LT(sums.count[0], sums.count[1]);
+  EXPECT_LT(sums.t_c[0], sums.t_c[1]);
+  RecordProperty("return_moves_with", sums.count[0]);
+  RecordProperty("return_moves_without", sums.count[1]);
+  RecordProperty("t_c_with", sums.t_c[0]);
+  RecordProperty("t_c_without", sums.t_c[1]);
 }
 
 // skip-seen-bands at z = 1 too: on the combined scenario, where the front zone is swept at z = 1,
