@@ -242,6 +242,26 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
   if (!chosen.skip_leg) tail.push_back(chosen.at);
   tail.insert(tail.end(), rest.begin() + static_cast<std::ptrdiff_t>(leg), rest.end());
   if (chosen.backward) std::reverse(tail.begin(), tail.end());
+  // The tail's cells become the taker's in owner_, so that a sweep planned again from owner_
+  // (replan-rejoin) neither drops the tail nor gives it back to the donor.
+  const int half = q.low ? h1_ : h2_;
+  const auto& map = view.map;
+  for (std::size_t i = 0; i + 1 < tail.size(); ++i) {
+    const grid::Cell a = tail[i];
+    const grid::Cell b = tail[i + 1];
+    const bool band_leg = q.axis == BandAxis::kRows ? a.y == b.y : a.x == b.x;
+    if (!band_leg) continue;  // a flight between two bands
+    const int x_lo = std::max(0, std::min(a.x, b.x) - half);
+    const int x_hi = std::min(map.width() - 1, std::max(a.x, b.x) + half);
+    const int y_lo = std::max(0, std::min(a.y, b.y) - half);
+    const int y_hi = std::min(map.height() - 1, std::max(a.y, b.y) + half);
+    for (int y = y_lo; y <= y_hi; ++y) {
+      for (int x = x_lo; x <= x_hi; ++x) {
+        const int c = map.index(x, y);
+        if (owner_[c] == donor) owner_[c] = static_cast<std::int16_t>(j);
+      }
+    }
+  }
   if (chosen.skip_leg) {
     q.sweep.keep(leg);  // up to rest[leg - 1], the start of the leg between two bands
   } else {

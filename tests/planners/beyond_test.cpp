@@ -856,12 +856,16 @@ class SweepTailWatcher final : public MissionObserver, public AnnotationSink {
   }
   void cells(std::string_view, std::span<const int>) override {}
   int takes = 0;
+  /// Takers that stopped sweeping before their tail's last waypoint with cells unobserved in its
+  /// footprint (not counting a taker whose plan was since cut by another take).
+  int abandoned = 0;
 
  private:
   struct Seen {
     std::string mode;
     std::vector<grid::Cell> plan;
   };
+  static constexpr grid::Cell kNone{-1, -1};
   static bool sweeping(const std::string& mode) { return mode == "sweep" || mode == "low sweep"; }
   static int held(const std::vector<grid::Cell>& cells, const std::vector<grid::Cell>& plan) {
     int n = 0;
@@ -871,6 +875,7 @@ class SweepTailWatcher final : public MissionObserver, public AnnotationSink {
   void look(const sim::Simulator& sim, const Planner& planner) {
     const auto uavs = sim.uavs();
     now_.assign(uavs.size(), Seen{});
+    tail_end_.resize(uavs.size(), kNone);
     planner.annotate(*this);
     for (std::size_t j = 0; j < before_.size(); ++j) {
       if (uavs[j].failed || !sweeping(now_[j].mode)) continue;
@@ -884,12 +889,34 @@ class SweepTailWatcher final : public MissionObserver, public AnnotationSink {
         if (k != j && sweeping(before_[k].mode) && held(fresh, before_[k].plan) >= need &&
             held(fresh, now_[k].plan) <= 1) {
           ++takes;
+          tail_end_[j] = now_[j].plan.back();
+          tail_end_[k] = kNone;  // its plan was cut: its own tail, if any, went on elsewhere
           break;
         }
       }
     }
+    const int h2 = (sim.params().s2 - 1) / 2;
+    const auto& map = sim.map();
+    for (std::size_t j = 0; j < tail_end_.size(); ++j) {
+      const grid::Cell end = tail_end_[j];
+      if (end == kNone) continue;
+      if (uavs[j].failed || uavs[j].pos == end) {
+        tail_end_[j] = kNone;
+        continue;
+      }
+      if (now_[j].mode != "help" && now_[j].mode != "done") continue;
+      bool unseen = false;  // its tail's end still has cells nobody observed
+      for (int y = std::max(0, end.y - h2); y <= std::min(map.height() - 1, end.y + h2); ++y) {
+        for (int x = std::max(0, end.x - h2); x <= std::min(map.width() - 1, end.x + h2); ++x) {
+          unseen = unseen || map(x, y) == sim::kUnknown;
+        }
+      }
+      abandoned += unseen ? 1 : 0;
+      tail_end_[j] = kNone;
+    }
     before_ = now_;
   }
+  std::vector<grid::Cell> tail_end_;  // per UAV: the last waypoint of the tail it took
   std::vector<Seen> now_;
   std::vector<Seen> before_;
 };
@@ -922,6 +949,28 @@ TEST(SweepInspect, ShareSweepHandsTheLastBandsOver) {
     }
   }
   EXPECT_LT(t_m[0], t_m[1]);
+}
+
+// share-sweep with replan-rejoin: the cells of a tail handed over become the taker's, so that a
+// taker that inspects on the way and plans its sweep anew from where it is (replan-rejoin)
+// plans it over the tail. Before, the tail's cells stayed the donor's: the taker planned over
+// its own region, swept already, and gave the tail up for the helpers (imperfect, n = 8: these
+// seeds, where a taker inspected on its tail; the check fails there without the hand-over).
+TEST(SweepInspect, ATakerKeepsTheTailItTookWhenItPlansAgain) {
+  int takes = 0;
+  for (const auto& [s2, seed] :
+       std::vector<std::pair<int, std::uint64_t>>{{7, 1000018}, {9, 1000000}, {11, 1000035}}) {
+    auto spec = spec_for("sweep-inspect", "imperfect", s2, 8, seed);
+    SweepTailWatcher watcher;
+    bool checked = false;
+    const auto r = run_checked(spec, world::default_hull(), checked, &watcher);
+    SCOPED_TRACE(::testing::Message() << "s2=" << s2 << " seed=" << seed);
+    ASSERT_TRUE(r.complete);
+    EXPECT_TRUE(checked);
+    EXPECT_EQ(watcher.abandoned, 0);
+    takes += watcher.takes;
+  }
+  EXPECT_GE(takes, 2);
 }
 
 // Row bands, column bands and the per-region choice complete every scenario under the checker,
