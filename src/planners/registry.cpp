@@ -97,7 +97,7 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "of where it was left")
       .flag("replan-rejoin", &SweepInspectOptions::replan_rejoin,
             "after an inspection plan the sweep anew from where the UAV is when that flight is "
-            "shorter than the way back to the band and on (not among no-fly zones)")
+            "shorter than the way back to the band and on")
       .flag("nearer-sweep-end", &SweepInspectOptions::nearer_sweep_end,
             "plan the sweep from where the prior's inspections ended, over the cells they did not "
             "see, from its nearer end (false: the whole region bottom-up from the start cell)")

@@ -143,10 +143,25 @@ double SweepInspectPlanner::planned_sweep_steps(int k, grid::Cell from) {
   // As the sweep will be planned (sweep_from), both parts when its cells lie on both planes.
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   const auto first = sweep_from(k, from);
-  double steps = flight_length(from, first);
+  double steps = flight_steps(k, from, first);
   if (p.other_part && !first.empty()) {
     const auto second = part_strips(k, !p.low, first.back());
-    steps += flight_length(first.back(), second);
+    steps += flight_steps(k, first.back(), second);
+  }
+  return steps;
+}
+
+double SweepInspectPlanner::flight_steps(int k, grid::Cell from,
+                                         const std::vector<grid::Cell>& waypoints) {
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
+  if (!distances.has_no_fly()) return flight_length(from, waypoints);
+  // Among no-fly zones, the flights the UAV will fly (the service's; a waypoint it cannot
+  // reach counts as Manhattan, as the follower then flies as far as it can).
+  double steps = 0;
+  for (const grid::Cell w : waypoints) {
+    const int d = distances.distance(from, w);
+    steps += d == grid::kUnreachable ? grid::manhattan(from, w) : d;
+    from = w;
   }
   return steps;
 }

@@ -287,10 +287,11 @@ bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
   // the footprint's edge, a cluster followed), and flying back to where it left the band cost
   // each UAV 10-14 moves a mission (imperfect, s2 = 11, n = 8, tuning seeds): the sweep planned
   // anew from here over what is still unobserved is often shorter. Both flights are estimated as
-  // the sweep will be planned (both parts, with the approach); the state that planning sets is
+  // the sweep will be planned (both parts, with the approach; among no-fly zones the service's
+  // flights, where the way back around a zone is longer still); the state that planning sets is
   // the UAV's again unless the plan from here is taken.
   Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (!options_.replan_rejoin || reach_ != nullptr || p.resume == pos) return false;
+  if (!options_.replan_rejoin || p.resume == pos) return false;
   drop_observed(k, view);
   const auto restore = [&p, low = p.low, other_part = p.other_part, axis = p.axis,
                         approach_rest = p.approach_rest, resume = p.resume] {
@@ -300,7 +301,10 @@ bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
     p.approach_rest = approach_rest;
     p.resume = resume;
   };
-  const double back = grid::manhattan(pos, p.resume) + planned_sweep_steps(k, p.resume);
+  const int to_resume = uav_distances_[static_cast<std::size_t>(k)]->distance(pos, p.resume);
+  const double back =
+      (to_resume == grid::kUnreachable ? grid::manhattan(pos, p.resume) : to_resume) +
+      planned_sweep_steps(k, p.resume);
   restore();
   const double here = planned_sweep_steps(k, pos);
   restore();

@@ -81,15 +81,17 @@ TimeSums summed_times(const char* scenario, const OptionMap& options,
 }
 
 /// One count of a mission observer and T_c, each summed over the missions of Sweep-Inspect with
-/// `option` true ([0]) and false ([1]) on `scenarios` × s2 ∈ {7, 11} × n ∈ {4, 8} × seeds 1–3;
-/// every mission must complete under the shared checker. `count` reads an observer's count.
+/// `option` true ([0]) and false ([1]) on `scenarios` × s2 ∈ {7, 11} × n ∈ {4, 8} × seeds 1–3
+/// (among `no_fly`'s zones when given); every mission must complete under the shared checker.
+/// `count` reads an observer's count.
 struct OnOffSums {
   int count[2] = {0, 0};
   int t_c[2] = {0, 0};
 };
 template <class Observer, class Count>
 OnOffSums sums_with_and_without(const char* option, std::initializer_list<const char*> scenarios,
-                                Count count) {
+                                Count count,
+                                std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly = nullptr) {
   OnOffSums sums;
   for (bool on : {true, false}) {
     for (const char* scenario : scenarios) {
@@ -98,6 +100,7 @@ OnOffSums sums_with_and_without(const char* option, std::initializer_list<const 
           for (std::uint64_t seed = 1; seed <= 3; ++seed) {
             auto spec = spec_for("sweep-inspect", scenario, s2, n, seed);
             spec.planner_options = {{option, on ? "true" : "false"}};
+            spec.params.no_fly = no_fly;
             Observer observer;
             bool checked = false;
             const auto r = run_checked(spec, world::default_hull(), checked, &observer);
@@ -760,6 +763,26 @@ TEST(SweepInspect, ReplanRejoinShortensTheWayBack) {
       "replan-rejoin", {"imperfect", "combined"},
       [](const ReturnMoveCounter& c) { return c.return_moves; });
   EXPECT_GT(sums.count[1], 0);  // without the option UAVs do fly back
+  EXPECT_LT(sums.count[0], sums.count[1]);
+  EXPECT_LT(sums.t_c[0], sums.t_c[1]);
+  RecordProperty("return_moves_with", sums.count[0]);
+  RecordProperty("return_moves_without", sums.count[1]);
+  RecordProperty("t_c_with", sums.t_c[0]);
+  RecordProperty("t_c_without", sums.t_c[1]);
+}
+
+// The same among no-fly zones (the beyond preset's mooring lines and gangway, on the default
+// hull's grid), where the flights are the distance service's: the way back around a zone is
+// longer still.
+TEST(SweepInspect, ReplanRejoinShortensTheWayBackAmongNoFlyZones) {
+  const auto& hull = world::default_hull();
+  auto no_fly = std::make_shared<testing::NoFlyMask>(hull.width(), hull.height(), 0);
+  for (int x : {20, 40, 190, 210}) testing::no_fly_box(*no_fly, x, 10, x, 29);
+  testing::no_fly_box(*no_fly, 110, 18, 117, 29);
+  const auto sums = sums_with_and_without<ReturnMoveCounter>(
+      "replan-rejoin", {"imperfect"}, [](const ReturnMoveCounter& c) { return c.return_moves; },
+      no_fly);
+  EXPECT_GT(sums.count[1], 0);
   EXPECT_LT(sums.count[0], sums.count[1]);
   EXPECT_LT(sums.t_c[0], sums.t_c[1]);
   RecordProperty("return_moves_with", sums.count[0]);

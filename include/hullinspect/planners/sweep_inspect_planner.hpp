@@ -39,7 +39,7 @@ struct SweepInspectOptions {
   bool resume_ahead = true;
   /// After an inspection, plan the sweep anew from where the UAV is (over the cells of its region
   /// not yet observed) when that flight is shorter than the way back to the rejoin point and the
-  /// sweep planned from there (Manhattan estimates; not among no-fly zones).
+  /// sweep planned from there (flights as the distance service gives them).
   bool replan_rejoin = true;
   /// Plan the sweep from where the prior's inspections ended, over the region's cells they did
   /// not see, bottom-up or top-down, whichever end is nearer (false: the whole region bottom-up
@@ -195,8 +195,11 @@ class SweepInspectPlanner final : public Planner {
   /// `cuts` are `pieces`' (rows.balanced_cuts()).
   partition::Partition balance_flights(const BandPieces& rows, std::vector<std::size_t> cuts,
                                        partition::Partition pieces, const PlannerContext& context);
-  /// The steps of UAV k's sweep as planned from `from` over owner_ (Manhattan, both parts).
+  /// The steps of UAV k's sweep as planned from `from` over owner_ (both parts; flight_steps).
   double planned_sweep_steps(int k, grid::Cell from);
+  /// The flight of UAV k from `from` through `waypoints`: Manhattan, or among no-fly zones the
+  /// distance service's.
+  double flight_steps(int k, grid::Cell from, const std::vector<grid::Cell>& waypoints);
   std::shared_ptr<const partition::Partition> band_partition(
       const partition::PartitionRequest& request, const PlannerContext& context);
   bool prior_distrusted() const {
