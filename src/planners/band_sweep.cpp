@@ -74,6 +74,11 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
   return waypoints;
 }
 
+LegBox leg_footprints(grid::Cell a, grid::Cell b, int half, int width, int height) {
+  return {std::max(0, std::min(a.x, b.x) - half), std::min(width - 1, std::max(a.x, b.x) + half),
+          std::max(0, std::min(a.y, b.y) - half), std::min(height - 1, std::max(a.y, b.y) + half)};
+}
+
 int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints) {
   int length = 0;
   for (const grid::Cell w : waypoints) {

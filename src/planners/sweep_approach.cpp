@@ -87,13 +87,9 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
           const grid::Cell a = path[leg - 1];
           const grid::Cell b = path[leg];
           length += grid::manhattan(a, b);
-          // The leg's footprints: its box widened by h.
-          const int left = std::max(0, std::min(a.x, b.x) - h);
-          const int right = std::min(owner.width() - 1, std::max(a.x, b.x) + h);
-          const int bottom = std::max(0, std::min(a.y, b.y) - h);
-          const int top = std::min(owner.height() - 1, std::max(a.y, b.y) + h);
-          for (int y = bottom; y <= top; ++y) {
-            for (int x = left; x <= right; ++x) {
+          const LegBox box = leg_footprints(a, b, h, owner.width(), owner.height());
+          for (int y = box.y_lo; y <= box.y_hi; ++y) {
+            for (int x = box.x_lo; x <= box.x_hi; ++x) {
               if (scratch(x, y) == request.uav) scratch(x, y) = -1;
             }
           }

@@ -251,12 +251,9 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
     const grid::Cell b = tail[i + 1];
     const bool band_leg = q.axis == BandAxis::kRows ? a.y == b.y : a.x == b.x;
     if (!band_leg) continue;  // a flight between two bands
-    const int x_lo = std::max(0, std::min(a.x, b.x) - half);
-    const int x_hi = std::min(map.width() - 1, std::max(a.x, b.x) + half);
-    const int y_lo = std::max(0, std::min(a.y, b.y) - half);
-    const int y_hi = std::min(map.height() - 1, std::max(a.y, b.y) + half);
-    for (int y = y_lo; y <= y_hi; ++y) {
-      for (int x = x_lo; x <= x_hi; ++x) {
+    const LegBox box = leg_footprints(a, b, half, map.width(), map.height());
+    for (int y = box.y_lo; y <= box.y_hi; ++y) {
+      for (int x = box.x_lo; x <= box.x_hi; ++x) {
         const int c = map.index(x, y);
         if (owner_[c] == donor) owner_[c] = static_cast<std::int16_t>(j);
       }
@@ -356,13 +353,9 @@ bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b, bool l
                                               const sim::PlannerView& view) const {
   // At z = 1 (a low sweep) the footprint is s1 wide, and it also inspects the detected cells.
   const auto& map = view.map;
-  const int h = low ? h1_ : h2_;
-  const int x_lo = std::max(0, std::min(a.x, b.x) - h);
-  const int x_hi = std::min(map.width() - 1, std::max(a.x, b.x) + h);
-  const int y_lo = std::max(0, std::min(a.y, b.y) - h);
-  const int y_hi = std::min(map.height() - 1, std::max(a.y, b.y) + h);
-  for (int y = y_lo; y <= y_hi; ++y) {
-    for (int x = x_lo; x <= x_hi; ++x) {
+  const LegBox box = leg_footprints(a, b, low ? h1_ : h2_, map.width(), map.height());
+  for (int y = box.y_lo; y <= box.y_hi; ++y) {
+    for (int x = box.x_lo; x <= box.x_hi; ++x) {
       const int i = map.index(x, y);
       if (unobserved(view, i) || (low && map[i] == sim::kCorrosionSeen)) return true;
     }

@@ -34,4 +34,14 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
 /// sweeps).
 int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints);
 
+/// The box of cells that a footprint of half-width `half` sees along the straight leg from `a`
+/// to `b`, clipped to a `width` × `height` grid (corners inclusive).
+struct LegBox {
+  int x_lo = 0;
+  int x_hi = -1;
+  int y_lo = 0;
+  int y_hi = -1;
+};
+LegBox leg_footprints(grid::Cell a, grid::Cell b, int half, int width, int height);
+
 }  // namespace hullinspect::planners
