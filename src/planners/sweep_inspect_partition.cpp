@@ -153,17 +153,19 @@ double SweepInspectPlanner::planned_sweep_steps(int k, grid::Cell from) {
 
 double SweepInspectPlanner::flight_steps(int k, grid::Cell from,
                                          const std::vector<grid::Cell>& waypoints) {
-  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
-  if (!distances.has_no_fly()) return flight_length(from, waypoints);
-  // Among no-fly zones, the flights the UAV will fly (the service's; a waypoint it cannot
-  // reach counts as Manhattan, as the follower then flies as far as it can).
   double steps = 0;
   for (const grid::Cell w : waypoints) {
-    const int d = distances.distance(from, w);
-    steps += d == grid::kUnreachable ? grid::manhattan(from, w) : d;
+    steps += flight(k, from, w);
     from = w;
   }
   return steps;
+}
+
+int SweepInspectPlanner::flight(int k, grid::Cell a, grid::Cell b) {
+  // The service's flight (Manhattan without no-fly zones); a position it cannot reach counts as
+  // Manhattan, as the follower then flies as far as it can.
+  const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(a, b);
+  return d == grid::kUnreachable ? grid::manhattan(a, b) : d;
 }
 
 void SweepInspectPlanner::find_dense_columns(const PlannerContext& context) {

@@ -298,10 +298,7 @@ bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
     p.approach_rest = approach_rest;
     p.resume = resume;
   };
-  const int to_resume = uav_distances_[static_cast<std::size_t>(k)]->distance(pos, p.resume);
-  const double back =
-      (to_resume == grid::kUnreachable ? grid::manhattan(pos, p.resume) : to_resume) +
-      planned_sweep_steps(k, p.resume);
+  const double back = flight(k, pos, p.resume) + planned_sweep_steps(k, p.resume);
   restore();
   const double here = planned_sweep_steps(k, pos);
   restore();
@@ -408,6 +405,12 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
   const bool leg_along = rows ? next.y == pos.y : next.x == pos.x;
   const int leg_lo = std::min(along_of(pos), leg_along ? along_of(next) : along_of(pos));
   const int leg_hi = std::max(along_of(pos), leg_along ? along_of(next) : along_of(pos));
+  // descend-when-level: the direction the leg is flown along (0: not flying along a leg), so
+  // that a cell still ahead on it waits; once it is level, the footprint has seen h2 rows beyond
+  // it, a rectangle's last rows among them.
+  const int leg_dir = !options_.descend_when_level || !leg_along || next == pos ? 0
+                      : along_of(next) > along_of(pos)                          ? 1
+                                                                                : -1;
   for (int i : pending_) {
     const grid::Cell c = view.map.cell(i);
     const int along = std::abs(along_of(c) - along_of(pos));
@@ -415,11 +418,7 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
     const int nearest_on_leg = along_of(c) < leg_lo   ? leg_lo - along_of(c)
                                : along_of(c) > leg_hi ? along_of(c) - leg_hi
                                                       : 0;
-    // descend-when-level: not while the cell is still ahead on the leg; once it is level, the
-    // footprint has seen h2 rows beyond it, a rectangle's last rows among them.
-    const bool ahead = options_.descend_when_level && leg_along && next != pos &&
-                       (along_of(next) > along_of(pos)) == (along_of(c) > along_of(pos)) &&
-                       along_of(c) != along_of(pos);
+    const bool ahead = leg_dir * (along_of(c) - along_of(pos)) > 0;
     const bool here_or_never =
         (along <= h1_ && !ahead) ||
         (options_.inspect_band_ends && along <= h2_ && nearest_on_leg >= along);

@@ -197,9 +197,11 @@ class SweepInspectPlanner final : public Planner {
                                        partition::Partition pieces, const PlannerContext& context);
   /// The steps of UAV k's sweep as planned from `from` over owner_ (both parts; flight_steps).
   double planned_sweep_steps(int k, grid::Cell from);
-  /// The flight of UAV k from `from` through `waypoints`: Manhattan, or among no-fly zones the
-  /// distance service's.
+  /// The flight of UAV k from `from` through `waypoints`, leg by leg as flight() gives it.
   double flight_steps(int k, grid::Cell from, const std::vector<grid::Cell>& waypoints);
+  /// UAV k's flight from a to b: its distance service's (Manhattan without no-fly zones), or
+  /// Manhattan where that finds no path.
+  int flight(int k, grid::Cell a, grid::Cell b);
   std::shared_ptr<const partition::Partition> band_partition(
       const partition::PartitionRequest& request, const PlannerContext& context);
   bool prior_distrusted() const {
