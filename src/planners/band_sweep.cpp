@@ -5,16 +5,8 @@
 
 namespace hullinspect::planners {
 
-namespace {
-struct Extent {
-  int lo = std::numeric_limits<int>::max();  // along the band
-  int hi = -1;
-};
-}  // namespace
-
-std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
-                                   BandAxis axis, bool trim_ends, grid::Cell from,
-                                   std::span<const int> band_start, int x_lo, int x_hi) {
+RegionBands region_bands(const grid::Grid<std::int16_t>& owner, int uav, int s, BandAxis axis,
+                         std::span<const int> band_start, int x_lo, int x_hi) {
   // Only columns [x_lo, x_hi] are looked at (a caller that knows the region's columns saves the
   // scan of the rest).
   x_lo = std::max(0, x_lo);
@@ -27,36 +19,44 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
   // Row bands start at the grid's bottom (as the lawnmower's strips); column bands at the
   // region's leftmost column, so a region w columns wide needs ceil(w / s) of them, or on the
   // band grid given (a region of the band partition).
-  int origin = rows ? 0 : std::numeric_limits<int>::max();
+  RegionBands region;
+  region.origin = rows ? 0 : std::numeric_limits<int>::max();
   if (!rows) {
     for (int y = 0; y < owner.height(); ++y) {
       for (int x = x_lo; x <= x_hi; ++x) {
-        if (owner(x, y) == uav) origin = std::min(origin, x);
+        if (owner(x, y) == uav) region.origin = std::min(region.origin, x);
       }
     }
-    if (origin == std::numeric_limits<int>::max()) return {};
-    if (!band_start.empty()) origin = band_start[static_cast<std::size_t>(origin)];
+    if (region.origin == std::numeric_limits<int>::max()) return {};
+    if (!band_start.empty()) region.origin = band_start[static_cast<std::size_t>(region.origin)];
   }
-  std::vector<Extent> bands(static_cast<std::size_t>((across_size - origin + s - 1) / s));
+  region.bands.assign(static_cast<std::size_t>((across_size - region.origin + s - 1) / s),
+                      BandExtent{std::numeric_limits<int>::max(), -1});
   for (int y = 0; y < owner.height(); ++y) {
     for (int x = x_lo; x <= x_hi; ++x) {
       if (owner(x, y) != uav) continue;
-      Extent& e = bands[static_cast<std::size_t>((across(x, y) - origin) / s)];
+      BandExtent& e = region.bands[static_cast<std::size_t>((across(x, y) - region.origin) / s)];
       e.lo = std::min(e.lo, along(x, y));
       e.hi = std::max(e.hi, along(x, y));
     }
   }
+  return region;
+}
+
+std::vector<grid::Cell> sweep_bands(const RegionBands& region, int s, BandAxis axis, bool trim_ends,
+                                    grid::Cell from, int across_size) {
+  const bool rows = axis == BandAxis::kRows;
   const int h = (s - 1) / 2;
   const auto cell = [rows](int along_at, int across_at) {
     return rows ? grid::Cell{along_at, across_at} : grid::Cell{across_at, along_at};
   };
   std::vector<grid::Cell> waypoints;
   grid::Cell at = from;
-  for (std::size_t j = 0; j < bands.size(); ++j) {
-    const Extent& e = bands[j];
+  for (std::size_t j = 0; j < region.bands.size(); ++j) {
+    const BandExtent& e = region.bands[j];
     if (e.hi < 0) continue;
     // The footprint of a position on the centre line holds the whole band's width.
-    const int centre = std::min(origin + static_cast<int>(j) * s + h, across_size - 1);
+    const int centre = std::min(region.origin + static_cast<int>(j) * s + h, across_size - 1);
     int lo = e.lo;
     int hi = e.hi;
     if (trim_ends) {
@@ -72,6 +72,14 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
     at = last;
   }
   return waypoints;
+}
+
+std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
+                                   BandAxis axis, bool trim_ends, grid::Cell from,
+                                   std::span<const int> band_start, int x_lo, int x_hi) {
+  const int across_size = axis == BandAxis::kRows ? owner.height() : owner.width();
+  return sweep_bands(region_bands(owner, uav, s, axis, band_start, x_lo, x_hi), s, axis, trim_ends,
+                     from, across_size);
 }
 
 LegBox leg_footprints(grid::Cell a, grid::Cell b, int half, int width, int height) {

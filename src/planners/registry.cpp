@@ -164,6 +164,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("approach-edge", &SweepInspectOptions::approach_edge,
             "fly to the sweep's first band along the region's edge row when that shortens the "
             "whole flight (the bands passed are flown only over the cells not yet seen)")
+      .flag("own-band-first", &SweepInspectOptions::own_band_first,
+            "also plan sweeps that begin at the UAV's own band (the bands on one side of it, "
+            "whole or up to a cut near the UAV, then the rest), when that shortens the flight")
       .flag("balance-flights", &SweepInspectOptions::balance_flights,
             "without a prior tour, cut the band partition again so that the planned flights from "
             "the starts (plus expected inspections) end together")

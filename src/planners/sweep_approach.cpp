@@ -7,18 +7,128 @@
 
 namespace hullinspect::planners {
 
+namespace {
+
+/// The waypoints flown backwards when their far end is nearer to `from` (nearer-sweep-end).
+void nearer_end_first(std::vector<grid::Cell>& waypoints, grid::Cell from, bool nearer_end) {
+  if (nearer_end && waypoints.size() > 1 &&
+      grid::manhattan(from, waypoints.back()) < grid::manhattan(from, waypoints.front()))
+    std::reverse(waypoints.begin(), waypoints.end());
+}
+
+/// own-band-first: the plans in two parts (approach_and_sweep's doc), taken into `best` when
+/// shorter than `best_length`.
+void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
+                    grid::Cell from, int across_lo, int across_hi, SweepScratch& scratch,
+                    SweepPlan& best, int& best_length) {
+  const bool rows = request.axis == BandAxis::kRows;
+  const int s = request.band;
+  const int h = (s - 1) / 2;
+  const int across_size = rows ? owner.height() : owner.width();
+  const int along_size = rows ? owner.width() : owner.height();
+  const RegionBands region = region_bands(owner, request.uav, s, request.axis, request.band_start,
+                                          request.x_lo, request.x_hi);
+  if (region.bands.empty()) return;
+  // Each band's cells along it, as the last cell at or before and the first at or after each
+  // along coordinate, so that a band cut anywhere is two extents read in O(1).
+  const std::size_t count = region.bands.size();
+  const auto at = [along_size](std::size_t j, int a) {
+    return j * static_cast<std::size_t>(along_size) + static_cast<std::size_t>(a);
+  };
+  scratch.last_upto.assign(count * static_cast<std::size_t>(along_size), -1);
+  scratch.first_from.assign(count * static_cast<std::size_t>(along_size),
+                            std::numeric_limits<int>::max());
+  for (int y = 0; y < owner.height(); ++y) {
+    for (int x = request.x_lo; x <= request.x_hi; ++x) {
+      if (owner(x, y) != request.uav) continue;
+      const int a = rows ? x : y;
+      const auto j = static_cast<std::size_t>(((rows ? y : x) - region.origin) / s);
+      scratch.last_upto[at(j, a)] = a;
+      scratch.first_from[at(j, a)] = a;
+    }
+  }
+  for (std::size_t j = 0; j < count; ++j) {
+    for (int a = 1; a < along_size; ++a)
+      scratch.last_upto[at(j, a)] =
+          std::max(scratch.last_upto[at(j, a)], scratch.last_upto[at(j, a - 1)]);
+    for (int a = along_size - 2; a >= 0; --a)
+      scratch.first_from[at(j, a)] =
+          std::min(scratch.first_from[at(j, a)], scratch.first_from[at(j, a + 1)]);
+  }
+  const int from_along = rows ? from.x : from.y;
+  const int from_across = std::clamp(rows ? from.y : from.x, across_lo, across_hi);
+  const int own = (from_across - region.origin) / s;
+  const auto last_upto = [&](std::size_t j, int a) {
+    return a < 0 ? -1 : scratch.last_upto[at(j, std::min(a, along_size - 1))];
+  };
+  const auto first_from = [&](std::size_t j, int a) {
+    return a >= along_size ? std::numeric_limits<int>::max()
+                           : scratch.first_from[at(j, std::max(a, 0))];
+  };
+  scratch.first.origin = region.origin;
+  scratch.second.origin = region.origin;
+  for (const int offset : {0, -h, h}) {
+    const int cut = from_along + offset;
+    for (const int across_side : {1, -1}) {
+      // along_side 0: the bands' whole extents; -1: their cells up to the cut; 1: from it.
+      for (const int along_side : {0, -1, 1}) {
+        if (offset != 0 && along_side == 0) continue;  // no cut: once
+        scratch.first.bands.assign(count, BandExtent{});
+        scratch.second.bands.assign(count, BandExtent{});
+        bool any = false;
+        for (std::size_t j = 0; j < count; ++j) {
+          const BandExtent e = region.bands[j];
+          if (e.hi < 0) continue;
+          BandExtent& one = scratch.first.bands[j];
+          BandExtent& two = scratch.second.bands[j];
+          if (across_side * (static_cast<int>(j) - own) < 0) {
+            two = e;
+          } else if (along_side == 0) {
+            one = e;
+          } else {
+            // The cells on the first part's side of the cut, and the others.
+            const int near_end =
+                along_side < 0 ? cut : cut - 1;  // the last cell before the far side
+            const BandExtent low{e.lo, last_upto(j, near_end)};
+            const BandExtent high{first_from(j, near_end + 1), e.hi};
+            (along_side < 0 ? one : two) = low.lo <= low.hi ? low : BandExtent{};
+            (along_side < 0 ? two : one) = high.lo <= high.hi ? high : BandExtent{};
+          }
+          any = any || one.hi >= 0;
+        }
+        if (!any) continue;
+        auto first =
+            sweep_bands(scratch.first, s, request.axis, request.trim_ends, from, across_size);
+        nearer_end_first(first, from, request.nearer_end);
+        if (first.empty()) continue;
+        auto second = sweep_bands(scratch.second, s, request.axis, request.trim_ends, first.back(),
+                                  across_size);
+        nearer_end_first(second, first.back(), request.nearer_end);
+        const int length = flight_length(from, first) + flight_length(first.back(), second);
+        if (length >= best_length) continue;
+        best_length = length;
+        best.waypoints = std::move(first);
+        best.waypoints.insert(best.waypoints.end(), second.begin(), second.end());
+        best.approach = 0;
+        best.own_band_first = true;
+      }
+    }
+  }
+}
+
+}  // namespace
+
 std::vector<grid::Cell> plain_sweep(const grid::Grid<std::int16_t>& owner,
                                     const SweepRequest& request, grid::Cell from) {
   auto waypoints = band_sweep(owner, request.uav, request.band, request.axis, request.trim_ends,
                               from, request.band_start, request.x_lo, request.x_hi);
-  if (request.nearer_end && waypoints.size() > 1 &&
-      grid::manhattan(from, waypoints.back()) < grid::manhattan(from, waypoints.front()))
-    std::reverse(waypoints.begin(), waypoints.end());
+  nearer_end_first(waypoints, from, request.nearer_end);
   return waypoints;
 }
 
 SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
-                             grid::Cell from, grid::Grid<std::int16_t>& scratch) {
+                             grid::Cell from, SweepScratch& scratch_space) {
+  grid::Grid<std::int16_t>& scratch = scratch_space.owner;
   // The region's extent, in one scan; the plans below read only its columns.
   int x_lo = owner.width(), x_hi = -1, y_lo = owner.height(), y_hi = -1;
   for (int y = 0; y < owner.height(); ++y) {
@@ -67,7 +177,7 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
   const std::array<int, 2> edges{along_lo + h, along_hi - h};
   const std::array<int, 2> lines{from_across,
                                  centre(std::clamp(from_across, across_lo, across_hi))};
-  for (std::size_t l = 0; l < lines.size(); ++l) {
+  for (std::size_t l = 0; request.edge_approach && l < lines.size(); ++l) {
     const int line = lines[l];
     if (l > 0 && line == lines[0]) continue;  // on a band's centre line already
     for (const int edge : edges) {
@@ -109,6 +219,8 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
       }
     }
   }
+  if (request.own_band_first)
+    own_band_first(owner, within, from, across_lo, across_hi, scratch_space, best, best_length);
   return best;
 }
 

@@ -40,11 +40,14 @@ std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::i
     }
   }
   uavs_[static_cast<std::size_t>(k)].approach_rest = 0;
-  if (approach && options_.approach_edge && reach_ == nullptr) {
-    // approach-edge: fly to the sweep along the region's edge where that sees the bands' ends.
-    const SweepRequest request{
+  if (approach && (options_.approach_edge || options_.own_band_first) && reach_ == nullptr) {
+    // approach-edge: fly to the sweep along the region's edge where that sees the bands' ends;
+    // own-band-first: begin with the bands on one side of the UAV's, where that is shorter.
+    SweepRequest request{
         k, band, axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
-    SweepPlan plan = approach_and_sweep(owner, request, from, approach_owner_);
+    request.edge_approach = options_.approach_edge;
+    request.own_band_first = options_.own_band_first;
+    SweepPlan plan = approach_and_sweep(owner, request, from, sweep_scratch_);
     if (plan.approach > 0)
       uavs_[static_cast<std::size_t>(k)].approach_rest = plan.waypoints.size() - plan.approach;
     return std::move(plan.waypoints);
@@ -131,7 +134,13 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
 
 void SweepInspectPlanner::drop_observed(int k, const sim::PlannerView& view) {
   for (int i : hull_cells_) {
-    if (owner_[i] == k && !unobserved(view, i)) owner_[i] = -1;
+    if (owner_[i] != k || unobserved(view, i)) continue;
+    // A detection in a column swept at z = 1 stays: the sweep planned anew inspects it on its
+    // way (left out, it waited for the helpers: found on the combined scenario, s2 = 11, n = 4).
+    if (view.map[i] == sim::kCorrosionSeen && !dense_column_.empty() &&
+        dense_column_[static_cast<std::size_t>(i % width_)] != 0)
+      continue;
+    owner_[i] = -1;
   }
 }
 

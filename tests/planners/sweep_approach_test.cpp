@@ -1,7 +1,8 @@
 // Sweep-Inspect's approach to its sweep (planners/sweep_approach.hpp): the flight it plans,
-// approach and bands, sees every cell of the region, for pieces of the band partition and irregular
-// regions, both band axes and footprints 3-11; it is never longer than the plain sweep and shorter
-// over a fleet starting in mid-piece; exact waypoints on a rectangle.
+// approach and bands (or its own band first), sees every cell of the region, for pieces of the
+// band partition and irregular regions, both band axes and footprints 3-11; it is never longer
+// than the plain sweep and shorter over a fleet starting in mid-piece; exact waypoints on a
+// rectangle.
 #include "hullinspect/planners/sweep_approach.hpp"
 
 #include <gtest/gtest.h>
@@ -20,21 +21,26 @@ using sweep_coverage::unseen_cells;
 /// Checks the plan of every UAV of `owner` from `starts`: every cell seen, never longer than the
 /// plain sweep; returns the steps saved over all of them.
 int check_plans(const grid::Grid<std::int16_t>& owner, const std::vector<grid::Cell>& starts, int s,
-                BandAxis axis, std::span<const int> band_start) {
-  grid::Grid<std::int16_t> scratch;
+                BandAxis axis, std::span<const int> band_start, bool own_band_first = false) {
+  SweepScratch scratch;
   int saved = 0;
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    const SweepRequest request{static_cast<int>(k), s, axis, true, band_start, true};
+    SweepRequest request{static_cast<int>(k), s, axis, true, band_start, true};
+    request.own_band_first = own_band_first;
     const SweepPlan plan = approach_and_sweep(owner, request, starts[k], scratch);
     const auto plain = plain_sweep(owner, request, starts[k]);
     SCOPED_TRACE(::testing::Message()
-                 << "uav " << k << " s " << s << " rows " << (axis == BandAxis::kRows));
+                 << "uav " << k << " s " << s << " rows " << (axis == BandAxis::kRows)
+                 << " own band first " << own_band_first);
     EXPECT_EQ(unseen_cells(owner, static_cast<int>(k), (s - 1) / 2, starts[k], plan.waypoints), 0);
     const int length = flight_length(starts[k], plan.waypoints);
     EXPECT_LE(length, flight_length(starts[k], plain));
     EXPECT_LE(plan.approach, 3u);
-    if (plan.approach == 0) {
+    if (plan.approach == 0 && !plan.own_band_first) {
       EXPECT_EQ(plan.waypoints, plain);
+    }
+    if (!own_band_first) {
+      EXPECT_FALSE(plan.own_band_first);
     }
     saved += flight_length(starts[k], plain) - length;
   }
@@ -50,8 +56,11 @@ TEST(SweepApproach, SeesEveryCellOfBandPiecesAndIsShorterFromMidPiece) {
       const auto pieces = band_order_partition(hull, {}, band_start, starts, s, s);
       // From a start in the middle of its piece the plain sweep first flies to a band's end
       // over cells its bands see again: the fleet's flights are shorter with the approach.
-      EXPECT_GT(check_plans(pieces.owner, starts, s, BandAxis::kColumns, band_start), 0)
-          << "s " << s << " n " << n;
+      for (const bool own_band_first : {false, true}) {
+        EXPECT_GT(
+            check_plans(pieces.owner, starts, s, BandAxis::kColumns, band_start, own_band_first), 0)
+            << "s " << s << " n " << n;
+      }
     }
   }
 }
@@ -65,8 +74,10 @@ TEST(SweepApproach, SeesEveryCellOfIrregularRegionsForBothAxes) {
       request.starts.push_back({(2 * k + 1) * hull.width() / (2 * n), 5 + 7 * k % 20});
     const auto partition = partition::make_partitioner("transfer", {})->partition(request);
     for (int s : {3, 7, 11}) {
-      for (const BandAxis axis : {BandAxis::kRows, BandAxis::kColumns})
-        check_plans(partition.owner, request.starts, s, axis, {});
+      for (const BandAxis axis : {BandAxis::kRows, BandAxis::kColumns}) {
+        for (const bool own_band_first : {false, true})
+          check_plans(partition.owner, request.starts, s, axis, {}, own_band_first);
+      }
     }
   }
 }
@@ -77,7 +88,7 @@ TEST(SweepApproach, SeesEveryCellOfIrregularRegionsForBothAxes) {
 // rows 22-26 only: 12 + 7 + 23 + 7 + 4 + 11 + 23 = 87 (the first of the 87-step plans found).
 TEST(SweepApproach, ExactPlanOnARectangle) {
   grid::Grid<std::int16_t> owner(21, 30, 0);
-  grid::Grid<std::int16_t> scratch;
+  SweepScratch scratch;
   const SweepRequest request{0, 7, BandAxis::kColumns, true, {}, true};
   const grid::Cell from{10, 15};
   const auto plain = plain_sweep(owner, request, from);
@@ -90,6 +101,30 @@ TEST(SweepApproach, ExactPlanOnARectangle) {
                                 {10, 3}, {3, 3}, {3, 26}, {10, 26}, {10, 22}, {17, 26}, {17, 3}}));
   EXPECT_EQ(flight_length(from, plan.waypoints), 87);
   EXPECT_EQ(unseen_cells(owner, 0, 3, from, plan.waypoints), 0);
+}
+
+// A 40 × 30 region in row bands of 5 (centres 2, 7, ..., 27), from (20, 15) in its fourth band.
+// The plain sweep first flies 29 steps to (37, 27), then six whole bands: 264 steps (the edge
+// approach: 254). Own band first: the four bands from its own down, their cells up to the cut
+// h = 2 after it (x <= 22), from (20, 17): 2 + 4·18 + 3·5 = 89 steps; then the rest from (20, 2),
+// those bands' right parts up and the two top bands whole: 160 steps, 249 in all.
+TEST(SweepApproach, OwnBandFirstOnARectangle) {
+  grid::Grid<std::int16_t> owner(40, 30, 0);
+  SweepScratch scratch;
+  SweepRequest request{0, 5, BandAxis::kRows, true, {}, true};
+  const grid::Cell from{20, 15};
+  EXPECT_EQ(flight_length(from, plain_sweep(owner, request, from)), 264);
+  EXPECT_EQ(flight_length(from, approach_and_sweep(owner, request, from, scratch).waypoints), 254);
+  request.own_band_first = true;
+  const SweepPlan plan = approach_and_sweep(owner, request, from, scratch);
+  EXPECT_TRUE(plan.own_band_first);
+  EXPECT_EQ(plan.approach, 0u);
+  EXPECT_EQ(plan.waypoints, (std::vector<grid::Cell>{
+                                {20, 17}, {2, 17},  {2, 12},  {20, 12}, {20, 7}, {2, 7},   {2, 2},
+                                {20, 2},  {25, 2},  {37, 2},  {37, 7},  {25, 7}, {25, 12}, {37, 12},
+                                {37, 17}, {25, 17}, {37, 22}, {2, 22},  {2, 27}, {37, 27}}));
+  EXPECT_EQ(flight_length(from, plan.waypoints), 249);
+  EXPECT_EQ(unseen_cells(owner, 0, 2, from, plan.waypoints), 0);
 }
 
 }  // namespace

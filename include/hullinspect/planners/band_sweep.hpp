@@ -30,6 +30,28 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
                                    std::span<const int> band_start = {}, int x_lo = 0,
                                    int x_hi = -1);
 
+/// One band's cells along it (x for row bands): the first and the last; hi < 0 when it holds none.
+struct BandExtent {
+  int lo = 0;
+  int hi = -1;
+};
+
+/// The bands of one UAV's cells, as band_sweep cuts them: band j spans the across coordinates
+/// [origin + j·s, origin + (j + 1)·s) and is flown along its centre line.
+struct RegionBands {
+  int origin = 0;
+  std::vector<BandExtent> bands;
+};
+
+/// band_sweep's bands (same arguments); no bands when the UAV owns no cell.
+RegionBands region_bands(const grid::Grid<std::int16_t>& owner, int uav, int s, BandAxis axis,
+                         std::span<const int> band_start = {}, int x_lo = 0, int x_hi = -1);
+
+/// band_sweep's waypoints over the given bands of a grid `across_size` bands' cells wide (the
+/// grid's height for row bands, its width for column bands).
+std::vector<grid::Cell> sweep_bands(const RegionBands& region, int s, BandAxis axis, bool trim_ends,
+                                    grid::Cell from, int across_size);
+
 /// Manhattan length of a flight from `from` through `waypoints` (how strips=auto compares two
 /// sweeps).
 int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints);

@@ -25,23 +25,38 @@ struct SweepRequest {
   bool nearer_end = true;           ///< fly the sweep backwards when its last waypoint is nearer
   int x_lo = 0;                     ///< only these columns hold the UAV's cells (band_sweep's)
   int x_hi = -1;
+  bool edge_approach = true;    ///< consider approaches along the region's edge (approach-edge)
+  bool own_band_first = false;  ///< consider sweeps that begin at the UAV's band (own-band-first)
 };
 
 /// A sweep's waypoints, the first `approach` of them its approach's.
 struct SweepPlan {
   std::vector<grid::Cell> waypoints;
   std::size_t approach = 0;
+  bool own_band_first = false;  ///< the sweep begins with the bands on one side of the UAV's
 };
 
-/// The waypoints of a sweep over `owner`'s cells of `request.uav` from `from`, led by an approach
-/// when that makes the whole flight shorter (Manhattan): across to a band's centre line, along
-/// it to the region's first or last row a footprint must reach, and along that edge to the
-/// region's first or last band; the cells the approach's footprints see are left out of the
-/// sweep, so the bands it passes are flown only as far as the rest needs. Without an approach
-/// that helps, the plain sweep from `from`. `scratch` is reused for the owner grid less those
-/// cells (same size as `owner`; only the region's columns are written).
+/// Reused between plans: the owner grid less an approach's cells, and the bands' cells along.
+struct SweepScratch {
+  grid::Grid<std::int16_t> owner;
+  std::vector<int> last_upto;   ///< per band and along: the last cell at or before it (−1)
+  std::vector<int> first_from;  ///< per band and along: the first cell at or after it
+  RegionBands first;
+  RegionBands second;
+};
+
+/// The waypoints of a sweep over `owner`'s cells of `request.uav` from `from`: the shortest
+/// flight (Manhattan) of the plain sweep and the plans below that the request allows.
+/// - `edge_approach`: led by an approach — across to a band's centre line, along it to the
+///   region's first or last row a footprint must reach, and along that edge to the region's
+///   first or last band; the cells the approach's footprints see are left out of the sweep, so
+///   the bands it passes are flown only as far as the rest needs.
+/// - `own_band_first`: in two parts, so that a UAV starting in mid-region does not first cross
+///   bands it will fly again: the bands from the UAV's own to one side of it (all of their
+///   cells, or those on one side of a cut along the bands at, or h before or after, the UAV's
+///   position) swept from `from`, then the rest from where they end.
 SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
-                             grid::Cell from, grid::Grid<std::int16_t>& scratch);
+                             grid::Cell from, SweepScratch& scratch);
 
 /// The plain sweep of `request` from `from` (band_sweep, reversed when its far end is nearer
 /// and `nearer_end`).

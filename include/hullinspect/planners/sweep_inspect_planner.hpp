@@ -20,6 +20,7 @@
 #include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/sweep_approach.hpp"
 #include "hullinspect/planners/waypoint_follower.hpp"
 
 namespace hullinspect::planners {
@@ -120,6 +121,10 @@ struct SweepInspectOptions {
   /// that makes the whole flight shorter: the bands it passes are then flown only as far as the
   /// cells it did not see (false: straight there, x then y).
   bool approach_edge = true;
+  /// Also plan sweeps that begin at the UAV's own band: the bands on one side of it (whole, or
+  /// their cells on one side of a cut along them near the UAV) first, then the rest, when that
+  /// is a shorter flight: a UAV in mid-region otherwise first crosses bands it flies again.
+  bool own_band_first = true;
   /// Without a prior tour, move the band partition's cuts (a few rows at a time, up to
   /// `balance_rounds` passes over them) while the UAVs' latest planned end — the flight from its
   /// start, with the approach, plus expected inspections — gets earlier.
@@ -162,7 +167,8 @@ class SweepInspectPlanner final : public Planner {
   bool detection_abreast(int k, grid::Cell pos, const sim::PlannerView& view) const;
   /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere (or a sweep tail).
   sim::Action help_step(int k, const sim::UavState& u, const sim::PlannerView& view);
-  /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them).
+  /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them),
+  /// but for the detections in columns swept at z = 1, which that sweep is to inspect.
   void drop_observed(int k, const sim::PlannerView& view);
   /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
   /// this one is done; nullopt, the UAV now helping, when its sweep is over.
@@ -287,12 +293,12 @@ class SweepInspectPlanner final : public Planner {
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
-  std::vector<char> handed_over_;            // per UAV: its failure was handled
-  std::vector<char> dense_column_;           // per column: swept at z = 1 (empty: none is)
-  grid::Grid<std::int16_t> part_owner_;      // owner_ restricted to one part of a UAV's cells
-  grid::Grid<std::int16_t> approach_owner_;  // scratch of approach_and_sweep
-  std::vector<int> tour_left_;               // scratch of tour_steps
-  std::vector<grid::Cell> tour_points_;      // scratch of first_of_planned_tour
+  std::vector<char> handed_over_;        // per UAV: its failure was handled
+  std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
+  grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
+  SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
+  std::vector<int> tour_left_;           // scratch of tour_steps
+  std::vector<grid::Cell> tour_points_;  // scratch of first_of_planned_tour
   std::vector<int> split_cells_;
   std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
   /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its
