@@ -86,9 +86,9 @@ void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& r
           } else if (along_side == 0) {
             one = e;
           } else {
-            // The cells on the first part's side of the cut, and the others.
-            const int near_end =
-                along_side < 0 ? cut : cut - 1;  // the last cell before the far side
+            // The cells on the first part's side of the cut, and the others; near_end is the
+            // last along coordinate of the lower side.
+            const int near_end = along_side < 0 ? cut : cut - 1;
             const BandExtent low{e.lo, last_upto(j, near_end)};
             const BandExtent high{first_from(j, near_end + 1), e.hi};
             (along_side < 0 ? one : two) = low.lo <= low.hi ? low : BandExtent{};
