@@ -1,6 +1,9 @@
 // One whole lawnmower mission (default hull, perfect scenario, s2 = 7): the foundation's speed.
-// The partition is computed once and shared, as the experiment runner does.
-//   build/release/bench/mission_bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+// The partition is computed once and shared, as the experiment runner does. Also one whole
+// Sweep-Inspect mission (combined scenario), with own-band-first on and off: what the option's
+// 14 candidate plans cost at every sweep it plans (docs/beyond.md, item 4).
+//   build/release/bench/mission_bench --benchmark_repetitions=10
+//   --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>
 
@@ -12,13 +15,15 @@ namespace {
 
 using namespace hullinspect;
 
-void run_missions(benchmark::State& state, const std::string& algorithm) {
+void run_missions(benchmark::State& state, const std::string& algorithm,
+                  const char* scenario = "perfect", OptionMap planner_options = {}) {
   const auto& hull = world::default_hull();
   planners::MissionSpec spec;
   spec.algorithm = algorithm;
+  spec.planner_options = std::move(planner_options);
   spec.params.uavs = static_cast<int>(state.range(0));
   spec.params.s2 = 7;
-  spec.corrosion = world::scenario("perfect").corrosion(hull.width());
+  spec.corrosion = world::scenario(scenario).corrosion(hull.width());
   planners::PartitionCache partitions;
   planners::MissionOptions options;
   options.partitions = &partitions;
@@ -32,12 +37,24 @@ void run_missions(benchmark::State& state, const std::string& algorithm) {
   }
   state.counters["steps/mission"] =
       benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kAvgIterations);
-  state.counters["missions/s"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                                    benchmark::Counter::kIsRate);
+  state.counters["missions/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-void BM_LawnmowerMission(benchmark::State& state) { run_missions(state, "lawnmower"); }
+void BM_LawnmowerMission(benchmark::State& state) {
+  run_missions(state, "lawnmower");
+}
 BENCHMARK(BM_LawnmowerMission)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
+
+// Args: n, own-band-first (0 or 1), scenario (0 combined: z = 1 sweeps of the dense half;
+// 1 imperfect: balance-flights plans every UAV's sweep for each cut it tries).
+void BM_SweepInspectMission(benchmark::State& state) {
+  run_missions(state, "sweep-inspect", state.range(2) == 0 ? "combined" : "imperfect",
+               {{"own-band-first", state.range(1) != 0 ? "true" : "false"}});
+}
+BENCHMARK(BM_SweepInspectMission)
+    ->ArgsProduct({{4, 8}, {0, 1}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 
 // The simulator alone: instance generation + step loop with a trivial hovering planner is not
 // meaningful (it never completes), so time the instance draw separately.

@@ -16,19 +16,16 @@ void nearer_end_first(std::vector<grid::Cell>& waypoints, grid::Cell from, bool 
     std::reverse(waypoints.begin(), waypoints.end());
 }
 
-/// own-band-first: the plans in two parts (approach_and_sweep's doc), taken into `best` when
-/// shorter than `best_length`.
+/// own-band-first: the plans in two parts (approach_and_sweep's doc) over `region` (the owner's
+/// bands of request.uav), taken into `best` when shorter than `best_length`.
 void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
-                    grid::Cell from, int across_lo, int across_hi, SweepScratch& scratch,
-                    SweepPlan& best, int& best_length) {
+                    const RegionBands& region, grid::Cell from, int across_lo, int across_hi,
+                    SweepScratch& scratch, SweepPlan& best, int& best_length) {
   const bool rows = request.axis == BandAxis::kRows;
   const int s = request.band;
   const int h = (s - 1) / 2;
   const int across_size = rows ? owner.height() : owner.width();
   const int along_size = rows ? owner.width() : owner.height();
-  const RegionBands region = region_bands(owner, request.uav, s, request.axis, request.band_start,
-                                          request.x_lo, request.x_hi);
-  if (region.bands.empty()) return;
   // Each band's cells along it, as the last cell at or before and the first at or after each
   // along coordinate, so that a band cut anywhere is two extents read in O(1).
   const std::size_t count = region.bands.size();
@@ -147,7 +144,13 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
   within.x_hi = x_hi;
   if (scratch.width() != owner.width() || scratch.height() != owner.height())
     scratch = grid::Grid<std::int16_t>(owner.width(), owner.height(), -1);
-  best.waypoints = plain_sweep(owner, within, from);
+  // The region's bands, read once: the plain sweep's, and cut in two by own-band-first.
+  const RegionBands region =
+      region_bands(owner, request.uav, request.band, request.axis, request.band_start, x_lo, x_hi);
+  const int across_size = request.axis == BandAxis::kRows ? owner.height() : owner.width();
+  best.waypoints =
+      sweep_bands(region, request.band, request.axis, request.trim_ends, from, across_size);
+  nearer_end_first(best.waypoints, from, request.nearer_end);
   if (best.waypoints.empty()) return best;
   int best_length = flight_length(from, best.waypoints);
   const grid::Cell plain_first = best.waypoints.front();
@@ -158,7 +161,6 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
   const auto cell = [rows](int along_at, int across_at) {
     return rows ? grid::Cell{along_at, across_at} : grid::Cell{across_at, along_at};
   };
-  const int across_size = rows ? owner.height() : owner.width();
   const int along_lo = rows ? x_lo : y_lo;
   const int along_hi = rows ? x_hi : y_hi;
   const int across_lo = rows ? y_lo : x_lo;
@@ -220,7 +222,8 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
     }
   }
   if (request.own_band_first)
-    own_band_first(owner, within, from, across_lo, across_hi, scratch_space, best, best_length);
+    own_band_first(owner, within, region, from, across_lo, across_hi, scratch_space, best,
+                   best_length);
   return best;
 }
 

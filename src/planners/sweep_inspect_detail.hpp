@@ -29,4 +29,10 @@ inline bool unobserved(const sim::PlannerView& view, int i) {
   return view.map[i] == sim::kUnknown || (view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0);
 }
 
+/// Work left at cell i for a sweep: a cell not yet observed, or, for a sweep at z = 1 (`low`),
+/// also a detected cell, which its footprint inspects on the way.
+inline bool sweep_work(const sim::PlannerView& view, int i, bool low) {
+  return unobserved(view, i) || (low && view.map[i] == sim::kCorrosionSeen);
+}
+
 }  // namespace hullinspect::planners::sweep_inspect_detail

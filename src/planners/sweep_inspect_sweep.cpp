@@ -16,6 +16,7 @@
 namespace hullinspect::planners {
 
 using sweep_inspect_detail::leg_along_x;
+using sweep_inspect_detail::sweep_work;
 using sweep_inspect_detail::unobserved;
 
 std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::int16_t>& owner,
@@ -133,14 +134,12 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
 }
 
 void SweepInspectPlanner::drop_observed(int k, const sim::PlannerView& view) {
+  // A detection in a column swept at z = 1 stays: the sweep planned anew inspects it on its way
+  // (left out, it waited for the helpers: found on the combined scenario, s2 = 11, n = 4).
   for (int i : hull_cells_) {
-    if (owner_[i] != k || unobserved(view, i)) continue;
-    // A detection in a column swept at z = 1 stays: the sweep planned anew inspects it on its
-    // way (left out, it waited for the helpers: found on the combined scenario, s2 = 11, n = 4).
-    if (view.map[i] == sim::kCorrosionSeen && !dense_column_.empty() &&
-        dense_column_[static_cast<std::size_t>(i % width_)] != 0)
-      continue;
-    owner_[i] = -1;
+    const bool low =
+        !dense_column_.empty() && dense_column_[static_cast<std::size_t>(i % width_)] != 0;
+    if (owner_[i] == k && !sweep_work(view, i, low)) owner_[i] = -1;
   }
 }
 
@@ -363,7 +362,7 @@ bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b, bool l
   for (int y = box.y_lo; y <= box.y_hi; ++y) {
     for (int x = box.x_lo; x <= box.x_hi; ++x) {
       const int i = map.index(x, y);
-      if (unobserved(view, i) || (low && map[i] == sim::kCorrosionSeen)) return true;
+      if (sweep_work(view, i, low)) return true;
     }
   }
   return false;
