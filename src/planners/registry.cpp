@@ -134,6 +134,10 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("follow-clusters", &SweepInspectOptions::follow_clusters,
             "at z = 1 also look at the unobserved cells beside inspected ones (within the "
             "inspection radius) before climbing")
+      .flag("inspect-viewpoints", &SweepInspectOptions::inspect_viewpoints,
+            "at z = 1 fly to the position whose footprint takes in the most detections (and "
+            "cells beside inspected ones) per step of flight, held until reached (false: the "
+            "nearest cell's nearest viewpoint, chosen anew each step)")
       .flag("skip-seen-bands", &SweepInspectOptions::skip_seen_bands,
             "skip the rest of a band whose cells have all been observed already")
       .number("low-sweep-above", &SweepInspectOptions::low_sweep_above, 0.0, 1.0,

@@ -29,6 +29,15 @@ inline bool unobserved(const sim::PlannerView& view, int i) {
   return view.map[i] == sim::kUnknown || (view.map[i] == sim::kCorrosionSeen && view.seen[i] == 0);
 }
 
+/// Whether a 4-neighbour of (x, y) is inspected: an unobserved cell there is likely corroded too
+/// (corrosion comes in rectangles).
+inline bool beside_inspected(const grid::Grid<std::int8_t>& map, int x, int y) {
+  return (x > 0 && map(x - 1, y) == sim::kInspected) ||
+         (x + 1 < map.width() && map(x + 1, y) == sim::kInspected) ||
+         (y > 0 && map(x, y - 1) == sim::kInspected) ||
+         (y + 1 < map.height() && map(x, y + 1) == sim::kInspected);
+}
+
 /// Work left at cell i for a sweep: a cell not yet observed, or, for a sweep at z = 1 (`low`),
 /// also a detected cell, which its footprint inspects on the way.
 inline bool sweep_work(const sim::PlannerView& view, int i, bool low) {

@@ -228,9 +228,14 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       p.target_cell = -1;
       return u.pos == p.resume ? decide_uav(k, u, view) : step(k, u.pos, p.resume);
     }
-    int cell = nearest_pending(k, u.pos, p.resume, radius_, view);
-    if (cell < 0 && options_.follow_clusters)
-      cell = nearest_cluster_edge(k, u.pos, p.resume, radius_, view);
+    int cell = -1;
+    if (options_.inspect_viewpoints) {
+      p.viewpoint = inspection_viewpoint(k, u.pos, p.resume, radius_, p.viewpoint, cell, view);
+    } else {
+      cell = nearest_pending(k, u.pos, p.resume, radius_, view);
+      if (cell < 0 && options_.follow_clusters)
+        cell = nearest_cluster_edge(k, u.pos, p.resume, radius_, view);
+    }
     p.target_cell = cell;
     if (cell < 0) {
       if (options_.resume_ahead) p.resume = rejoin_point(k, p, u.pos, view);
@@ -241,7 +246,8 @@ sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
       }
       return sim::Action::kChangePlane;
     }
-    p.target = reach_position(k, u.pos, view.map.cell(cell), h1_);
+    p.target = options_.inspect_viewpoints ? p.viewpoint
+                                           : reach_position(k, u.pos, view.map.cell(cell), h1_);
     return step(k, u.pos, p.target);
   }
 

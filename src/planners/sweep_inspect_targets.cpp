@@ -13,6 +13,7 @@
 
 namespace hullinspect::planners {
 
+using sweep_inspect_detail::beside_inspected;
 using sweep_inspect_detail::chebyshev;
 using sweep_inspect_detail::unobserved;
 
@@ -96,18 +97,110 @@ int SweepInspectPlanner::nearest_cluster_edge(int k, grid::Cell pos, grid::Cell 
   for (int y = y_lo; y <= y_hi; ++y) {
     for (int x = x_lo; x <= x_hi; ++x) {
       const int i = map.index(x, y);
-      if (!unobserved(view, i)) continue;
-      const bool beside = (x > 0 && map(x - 1, y) == sim::kInspected) ||
-                          (x + 1 < map.width() && map(x + 1, y) == sim::kInspected) ||
-                          (y > 0 && map(x, y - 1) == sim::kInspected) ||
-                          (y + 1 < map.height() && map(x, y + 1) == sim::kInspected);
-      if (!beside || !reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+      if (!unobserved(view, i) || !beside_inspected(map, x, y)) continue;
+      if (!reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
       const grid::Cell c{x, y};
       const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
           pos, reach_position(k, pos, c, h1_));
       if (d < best_d) {
         best_d = d;
         best = i;
+      }
+    }
+  }
+  return best;
+}
+
+grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid::Cell around,
+                                                     int radius, grid::Cell held, int& cell,
+                                                     const sim::PlannerView& view) {
+  // The z = 1 footprint takes in every cell within h1 of the UAV, a rectangle's cells several at
+  // a time. Flying to the nearest cell's nearest viewpoint, chosen anew each step, saw them one
+  // edge at a time and turned back and forth (imperfect, s2 = 11, n = 8, tuning seeds: 30 moves
+  // for a cluster of 9 × 8 cells). Work: the detections it may inspect within `radius` of
+  // `around` and, with follow-clusters, the unobserved cells beside inspected ones; every cell
+  // counts one. A position is worth the work its footprint takes in per step of the flight there
+  // (plus one, so that a far position taking in much beats a near one taking in little only by
+  // enough).
+  const auto& map = view.map;
+  const int x0 = std::max(0, around.x - radius - h1_);
+  const int x1 = std::min(map.width() - 1, around.x + radius + h1_);
+  const int y0 = std::max(0, around.y - radius - h1_);
+  const int y1 = std::min(map.height() - 1, around.y + radius + h1_);
+  const int w = x1 - x0 + 1;
+  const int h = y1 - y0 + 1;
+  const auto at = [&](int x, int y) { return static_cast<std::size_t>((y - y0) * w + (x - x0)); };
+  view_work_.assign(static_cast<std::size_t>(w * h), 0);
+  cell = -1;
+  bool any = false;
+  for (int i : pending_) {
+    const grid::Cell c = map.cell(i);
+    if (chebyshev(c, around) > radius || !may_inspect(k, i)) continue;
+    view_work_[at(c.x, c.y)] += 1;
+    any = true;
+  }
+  if (options_.follow_clusters) {
+    for (int y = std::max(0, around.y - radius); y <= std::min(y1, around.y + radius); ++y) {
+      for (int x = std::max(0, around.x - radius); x <= std::min(x1, around.x + radius); ++x) {
+        const int i = map.index(x, y);
+        if (!unobserved(view, i) || !beside_inspected(map, x, y)) continue;
+        if (!reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+        view_work_[at(x, y)] += 1;
+        any = true;
+      }
+    }
+  }
+  if (!any) return grid::kNoCell;
+  // sums(x, y): the work at window positions below and left of (x, y), exclusive.
+  view_work_sums_.assign(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
+  const auto sums = [&](int x, int y) -> int& {
+    return view_work_sums_[static_cast<std::size_t>(y * (w + 1) + x)];
+  };
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      sums(x + 1, y + 1) = view_work_[static_cast<std::size_t>(y * w + x)] + sums(x, y + 1) +
+                           sums(x + 1, y) - sums(x, y);
+    }
+  }
+  const auto taken_in = [&](grid::Cell v) {
+    const int xa = std::max(x0, v.x - h1_) - x0;
+    const int xb = std::min(x1, v.x + h1_) - x0 + 1;
+    const int ya = std::max(y0, v.y - h1_) - y0;
+    const int yb = std::min(y1, v.y + h1_) - y0 + 1;
+    return sums(xb, yb) - sums(xa, yb) - sums(xb, ya) + sums(xa, ya);
+  };
+  const auto inside = [&](grid::Cell v) {
+    return v.x >= x0 && v.x <= x1 && v.y >= y0 && v.y <= y1;
+  };
+  grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
+  grid::Cell best = grid::kNoCell;
+  if (held != pos && inside(held) && taken_in(held) > 0) {
+    best = held;  // held until reached: choosing anew each step turned back and forth
+  } else {
+    double best_worth = 0.0;
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const grid::Cell v{x, y};
+        const int work = taken_in(v);
+        if (work == 0 || v == pos) continue;
+        if (reach_ != nullptr && !distances.allowed(v)) continue;
+        // distance(a, b) searches from b: one search from here for every position.
+        const int d = reach_ == nullptr ? grid::manhattan(pos, v) : distances.distance(v, pos);
+        if (d == grid::kUnreachable) continue;
+        const double worth = static_cast<double>(work) / (d + 1);
+        if (worth > best_worth) {
+          best_worth = worth;
+          best = v;
+        }
+      }
+    }
+  }
+  if (best == grid::kNoCell) return best;
+  for (int y = std::max(y0, best.y - h1_); y <= std::min(y1, best.y + h1_) && cell < 0; ++y) {
+    for (int x = std::max(x0, best.x - h1_); x <= std::min(x1, best.x + h1_); ++x) {
+      if (view_work_[at(x, y)] > 0) {
+        cell = map.index(x, y);
+        break;
       }
     }
   }

@@ -12,6 +12,7 @@
 // failed UAV. Communication: the shared map M and the failed flags (as Coop-Frontier), plus each
 // helper's current target (its claim).
 
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -76,6 +77,11 @@ struct SweepInspectOptions {
   /// (a corrosion rectangle going on beyond what was seen) within the inspection radius, instead
   /// of climbing and descending again for its next rows.
   bool follow_clusters = true;
+  /// At z = 1, fly to the position whose footprint takes in the most of that work (detections
+  /// within the inspection radius and, with follow_clusters, cells beside inspected ones) per step
+  /// of flight, held until reached or empty (false: to the nearest cell's nearest viewpoint,
+  /// chosen anew each step).
+  bool inspect_viewpoints = true;
   /// While sweeping, skip the rest of a band whose cells (within the footprint of what is left of
   /// it) have all been observed already — by a helper, or on the way of an inspection (at z = 1:
   /// observed and, if detected, inspected).
@@ -156,6 +162,7 @@ class SweepInspectPlanner final : public Planner {
     bool low = false;                 // its sweep is flown at z = 1 (low-sweep-above)
     bool other_part = false;          // its cells of the other plane are swept after these
     std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
+    grid::Cell viewpoint{-1, -1};     // where it flies at z = 1 (inspect-viewpoints)
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Mode kPrior: UAV k's next move on its tour of the prior's cells at z = 1; nullopt when the
@@ -182,6 +189,12 @@ class SweepInspectPlanner final : public Planner {
                       const sim::PlannerView& view) const;
   /// follow-clusters: the nearest unobserved cell with an inspected 4-neighbour within Chebyshev
   /// radius `radius` of `around`, seen from z = 1 by UAV k; −1 if none.
+  /// inspect-viewpoints: the position UAV k at z = 1 flies to next, `held` while its footprint
+  /// still takes in work, else the one taking in the most work cells within Chebyshev `radius` of
+  /// `around` per step of flight; kNoCell when no work is left there. `cell` is set to a work
+  /// cell it takes in (the UAV's claim), or −1.
+  grid::Cell inspection_viewpoint(int k, grid::Cell pos, grid::Cell around, int radius,
+                                  grid::Cell held, int& cell, const sim::PlannerView& view);
   int nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
                            const sim::PlannerView& view) const;
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
@@ -301,6 +314,10 @@ class SweepInspectPlanner final : public Planner {
   std::vector<grid::Cell> tour_points_;  // scratch of first_of_planned_tour
   std::vector<int> split_cells_;
   std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
+  // Scratch of inspection_viewpoint: work cells per position of the window around the inspection,
+  // and their 2D prefix sums (one more row and column).
+  std::vector<int> view_work_;
+  std::vector<int> view_work_sums_;
   /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its
   /// remaining waypoint `leg`); the taker flies from `at`, or from that waypoint when the leg runs
   /// between two bands (`skip_leg`), to the end, or the other way round (`backward`).
