@@ -1,7 +1,9 @@
 // One whole lawnmower mission (default hull, perfect scenario, s2 = 7): the foundation's speed.
 // The partition is computed once and shared, as the experiment runner does. Also one whole
 // Sweep-Inspect mission (combined scenario), with own-band-first on and off: what the option's
-// 14 candidate plans cost at every sweep it plans (docs/beyond.md, item 4).
+// 14 candidate plans cost at every sweep it plans (docs/beyond.md, item 4); and with
+// inspect-viewpoints on and off (imperfect scenario): what choosing a viewpoint over the
+// inspection's window costs at every step a UAV spends at z = 1 (item 5).
 //   build/release/bench/mission_bench --benchmark_repetitions=10
 //   --benchmark_report_aggregates_only=true
 
@@ -55,6 +57,14 @@ void BM_SweepInspectMission(benchmark::State& state) {
 BENCHMARK(BM_SweepInspectMission)
     ->ArgsProduct({{4, 8}, {0, 1}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
+
+// Args: n, inspect-viewpoints (0 or 1); imperfect scenario, where most inspections come from
+// detections of the sweep.
+void BM_SweepInspectViewpoints(benchmark::State& state) {
+  run_missions(state, "sweep-inspect", "imperfect",
+               {{"inspect-viewpoints", state.range(1) != 0 ? "true" : "false"}});
+}
+BENCHMARK(BM_SweepInspectViewpoints)->ArgsProduct({{4, 8}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 // The simulator alone: instance generation + step loop with a trivial hovering planner is not
 // meaningful (it never completes), so time the instance draw separately.

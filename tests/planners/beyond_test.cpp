@@ -769,38 +769,46 @@ TEST(SweepInspect, DescendWhenLevelWaitsForTheDetectionToComeLevel) {
 // shorter than flying back to the band. Counted: the moves made in mode "return" (the flight from
 // where it climbed to where it rejoins its sweep), summed with T_c over the imperfect and
 // combined scenarios, s2 = 7 and 11, n = 4 and 8, every mission complete under the checker.
-class ReturnMoveCounter final : public MissionObserver, public AnnotationSink {
+/// Moves made by UAVs whose annotated mode (of the decision that led to the step) is `mode`,
+/// only at z = `z` when z > 0.
+class ModeMoveCounter : public MissionObserver, public AnnotationSink {
  public:
+  explicit ModeMoveCounter(std::string_view mode, int z = 0) : mode_(mode), z_(z) {}
   void on_start(const sim::Simulator& sim, const Planner&) override {
     positions_.clear();
     for (const auto& u : sim.uavs()) positions_.push_back(u.pos);
   }
   void on_step(const sim::Simulator& sim, const Planner& planner) override {
-    // The annotations are those of the decision that led to this step.
-    returning_.assign(positions_.size(), 0);
+    in_mode_.assign(positions_.size(), 0);
     planner.annotate(*this);
     for (std::size_t k = 0; k < positions_.size(); ++k) {
-      const grid::Cell now = sim.uavs()[k].pos;
-      if (returning_[k] != 0 && now != positions_[k]) ++return_moves;
-      positions_[k] = now;
+      const sim::UavState& u = sim.uavs()[k];
+      if (in_mode_[k] != 0 && (z_ == 0 || u.z == z_) && u.pos != positions_[k]) ++moves;
+      positions_[k] = u.pos;
     }
   }
   void uav(int k, std::string_view mode, grid::Cell, std::span<const grid::Cell>) override {
-    returning_[static_cast<std::size_t>(k)] = mode == "return" ? 1 : 0;
+    in_mode_[static_cast<std::size_t>(k)] = mode == mode_ ? 1 : 0;
   }
   void cells(std::string_view, std::span<const int>) override {}
-  int return_moves = 0;
+  int moves = 0;
 
  private:
+  std::string_view mode_;
+  int z_;
   std::vector<grid::Cell> positions_;
-  std::vector<char> returning_;
+  std::vector<char> in_mode_;
+};
+
+struct ReturnMoveCounter final : ModeMoveCounter {
+  ReturnMoveCounter() : ModeMoveCounter("return") {}
 };
 
 /// With replan-rejoin the UAVs fly back fewer moves and T_c (summed) is lower than without it.
 void expect_fewer_moves_back(std::initializer_list<const char*> scenarios,
                              std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly = nullptr) {
   const auto sums = sums_with_and_without<ReturnMoveCounter>(
-      "replan-rejoin", scenarios, [](const ReturnMoveCounter& c) { return c.return_moves; },
+      "replan-rejoin", scenarios, [](const ReturnMoveCounter& c) { return c.moves; },
       std::move(no_fly));
   EXPECT_GT(sums.count[1], 0);  // without the option UAVs do fly back
   EXPECT_LT(sums.count[0], sums.count[1]);
@@ -830,30 +838,8 @@ TEST(SweepInspect, ReplanRejoinShortensTheWayBackAmongNoFlyZones) {
 // per step of flight, held until reached, instead of the nearest cell's nearest viewpoint chosen
 // anew each step (which saw a rectangle one edge at a time and turned back and forth). Counted:
 // the moves made at z = 1 in mode "inspect".
-class InspectMoveCounter final : public MissionObserver, public AnnotationSink {
- public:
-  void on_start(const sim::Simulator& sim, const Planner&) override {
-    positions_.clear();
-    for (const auto& u : sim.uavs()) positions_.push_back(u.pos);
-  }
-  void on_step(const sim::Simulator& sim, const Planner& planner) override {
-    inspecting_.assign(positions_.size(), 0);
-    planner.annotate(*this);
-    for (std::size_t k = 0; k < positions_.size(); ++k) {
-      const sim::UavState& u = sim.uavs()[k];
-      if (inspecting_[k] != 0 && u.z == 1 && u.pos != positions_[k]) ++inspect_moves;
-      positions_[k] = u.pos;
-    }
-  }
-  void uav(int k, std::string_view mode, grid::Cell, std::span<const grid::Cell>) override {
-    inspecting_[static_cast<std::size_t>(k)] = mode == "inspect" ? 1 : 0;
-  }
-  void cells(std::string_view, std::span<const int>) override {}
-  int inspect_moves = 0;
-
- private:
-  std::vector<grid::Cell> positions_;
-  std::vector<char> inspecting_;
+struct InspectMoveCounter final : ModeMoveCounter {
+  InspectMoveCounter() : ModeMoveCounter("inspect", 1) {}
 };
 
 /// Moves at z = 1 in mode "inspect" and T_c of one UAV on a 40 × 20 rectangle from (3, 10),
@@ -884,7 +870,7 @@ std::pair<int, int> one_block(bool viewpoints) {
   const auto r = run_checked(spec, hull, checked, &counter);
   EXPECT_TRUE(r.complete);
   EXPECT_TRUE(checked);
-  return {counter.inspect_moves, r.t_c.value_or(-1)};
+  return {counter.moves, r.t_c.value_or(-1)};
 }
 
 TEST(SweepInspect, InspectViewpointsTakeInABlockInFewerMoves) {
@@ -902,8 +888,7 @@ TEST(SweepInspect, InspectViewpointsTakeInABlockInFewerMoves) {
 // the tuning seeds' paired change).
 TEST(SweepInspect, InspectViewpointsTakeInMoreAStep) {
   const auto sums = sums_with_and_without<InspectMoveCounter>(
-      "inspect-viewpoints", {"imperfect"},
-      [](const InspectMoveCounter& c) { return c.inspect_moves; });
+      "inspect-viewpoints", {"imperfect"}, [](const InspectMoveCounter& c) { return c.moves; });
   EXPECT_GT(sums.count[1], 0);
   EXPECT_LT(sums.count[0], sums.count[1]);
   RecordProperty("inspect_moves_with", sums.count[0]);

@@ -12,7 +12,6 @@
 // failed UAV. Communication: the shared map M and the failed flags (as Coop-Frontier), plus each
 // helper's current target (its claim).
 
-#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -187,14 +186,14 @@ class SweepInspectPlanner final : public Planner {
   /// radius when radius < 0), not claimed by another UAV; −1 if none.
   int nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
                       const sim::PlannerView& view) const;
-  /// follow-clusters: the nearest unobserved cell with an inspected 4-neighbour within Chebyshev
-  /// radius `radius` of `around`, seen from z = 1 by UAV k; −1 if none.
   /// inspect-viewpoints: the position UAV k at z = 1 flies to next, `held` while its footprint
   /// still takes in work, else the one taking in the most work cells within Chebyshev `radius` of
   /// `around` per step of flight; kNoCell when no work is left there. `cell` is set to a work
   /// cell it takes in (the UAV's claim), or −1.
   grid::Cell inspection_viewpoint(int k, grid::Cell pos, grid::Cell around, int radius,
                                   grid::Cell held, int& cell, const sim::PlannerView& view);
+  /// follow-clusters: the nearest unobserved cell with an inspected 4-neighbour within Chebyshev
+  /// radius `radius` of `around`, seen from z = 1 by UAV k; −1 if none.
   int nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
                            const sim::PlannerView& view) const;
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
