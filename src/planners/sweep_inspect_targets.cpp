@@ -82,6 +82,12 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
   return best;
 }
 
+bool SweepInspectPlanner::cluster_edge(int k, int x, int y, const sim::PlannerView& view) const {
+  const int i = view.map.index(x, y);
+  return unobserved(view, i) && beside_inspected(view.map, x, y) &&
+         reachable(k, i, world::kReachZ1) && !claimed_by_other(k, i);
+}
+
 int SweepInspectPlanner::nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
                                               const sim::PlannerView& view) const {
   // Corrosion comes in rectangles: an unobserved cell beside an inspected one is likely corroded
@@ -97,8 +103,7 @@ int SweepInspectPlanner::nearest_cluster_edge(int k, grid::Cell pos, grid::Cell 
   for (int y = y_lo; y <= y_hi; ++y) {
     for (int x = x_lo; x <= x_hi; ++x) {
       const int i = map.index(x, y);
-      if (!unobserved(view, i) || !beside_inspected(map, x, y)) continue;
-      if (!reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+      if (!cluster_edge(k, x, y, view)) continue;
       const grid::Cell c{x, y};
       const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
           pos, reach_position(k, pos, c, h1_));
@@ -142,9 +147,7 @@ grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid
   if (options_.follow_clusters) {
     for (int y = std::max(0, around.y - radius); y <= std::min(y1, around.y + radius); ++y) {
       for (int x = std::max(0, around.x - radius); x <= std::min(x1, around.x + radius); ++x) {
-        const int i = map.index(x, y);
-        if (!unobserved(view, i) || !beside_inspected(map, x, y)) continue;
-        if (!reachable(k, i, world::kReachZ1) || claimed_by_other(k, i)) continue;
+        if (!cluster_edge(k, x, y, view)) continue;
         view_work_[at(x, y)] += 1;
         any = true;
       }

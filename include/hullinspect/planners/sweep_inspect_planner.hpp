@@ -192,6 +192,9 @@ class SweepInspectPlanner final : public Planner {
   /// cell it takes in (the UAV's claim), or −1.
   grid::Cell inspection_viewpoint(int k, grid::Cell pos, grid::Cell around, int radius,
                                   grid::Cell held, int& cell, const sim::PlannerView& view);
+  /// follow-clusters' work: cell (x, y) is unobserved, has an inspected 4-neighbour, and UAV k
+  /// may look at it from z = 1 (reachable, not claimed by another UAV).
+  bool cluster_edge(int k, int x, int y, const sim::PlannerView& view) const;
   /// follow-clusters: the nearest unobserved cell with an inspected 4-neighbour within Chebyshev
   /// radius `radius` of `around`, seen from z = 1 by UAV k; −1 if none.
   int nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
