@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -318,6 +319,20 @@ TEST(ExperimentConfig, EveryBenchConfigLoadsAndExpands) {
     EXPECT_GT(plan.runs().size(), 0u);
     EXPECT_EQ(plan.runs().size() % config.seeds.size(), 0u);
   }
+}
+
+TEST(ExperimentConfig, ThePaperGridConfigHoldsThePaperPresetsMissions) {
+  // docs/beyond.md reports issue 15's targets on bench/configs/beyond_paper_grid.yaml as the
+  // `paper` preset's cells and seeds: every run of the preset (same cell, same seed, hence the
+  // same stable id) must be one of its runs, and its paper-planner runs no more than those.
+  const ExperimentPlan paper(load_preset("paper"));
+  const ExperimentPlan grid(load_config(std::filesystem::path(HULLINSPECT_SOURCE_DIR) / "bench" /
+                                        "configs" / "beyond_paper_grid.yaml"));
+  std::set<std::string> grid_ids;
+  for (const auto& run : grid.runs()) grid_ids.insert(run.id);
+  for (const auto& run : paper.runs()) EXPECT_TRUE(grid_ids.contains(run.id)) << run.id;
+  // The rest: the same four scenarios with one failure, and Sweep-Inspect on all eight.
+  EXPECT_EQ(grid.runs().size(), paper.runs().size() * 2 + paper.runs().size() / 4 * 2);
 }
 
 }  // namespace
