@@ -10,11 +10,13 @@ population or by the draw (docs/beyond.md, "Not done"; bench/configs/failure_pop
     /usr/bin/python3 tools/failure_blocks.py RUNS.csv [BLOCK]
 """
 import sys
+from pathlib import Path
 
 import pandas as pd
 
-OURS = "sweep-inspect"
-TARGET = 1.3
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from beyond_targets import FAILURE_TARGET, OURS  # noqa: E402
+
 SUFFIX = "-fail1"
 
 
@@ -36,7 +38,7 @@ def cells(runs, block=50):
                   for i in range(0, len(seeds) - block + 1, block)]
         out.append({"scenario": base, "s2": int(s2), "uavs": int(uavs), "seeds": len(seeds),
                     "ratio": ratio(cell), "blocks": blocks,
-                    "above": sum(r > TARGET for r in blocks)})
+                    "above": sum(r > FAILURE_TARGET for r in blocks)})
     return out
 
 
@@ -45,7 +47,7 @@ def main(argv):
         sys.exit("usage: failure_blocks.py RUNS.csv [BLOCK]")
     block = int(argv[2]) if len(argv) == 3 else 50
     print(f"| scenario | s2 | n | seeds | T_c one failure / none | blocks of {block} seeds | "
-          f"blocks > {TARGET} |")
+          f"blocks > {FAILURE_TARGET} |")
     print("|---|---:|---:|---:|---:|---|---:|")
     for c in cells(pd.read_csv(argv[1]), block):
         blocks = ", ".join(f"{r:.3f}" for r in c["blocks"])
