@@ -27,7 +27,8 @@ def runs(plain, failing):
                      "algorithm": "lawnmower", "T_c": 10 * f})
         rows.append({"scenario": "perfect", "s2": 7, "uavs": 4, "seed": seed,
                      "algorithm": "sweep-inspect", "T_c": t})
-    return pd.DataFrame(rows)
+    # Rows in reverse seed order, so that blocks in file order would not be blocks in seed order.
+    return pd.DataFrame(rows[::-1])
 
 
 class FailureBlocks(unittest.TestCase):
