@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "experiment_commands.hpp"
 #include "hullinspect/core/errors.hpp"
@@ -31,6 +32,7 @@ struct ExperimentArgs {
   std::string shard;
   std::vector<std::string> algorithms;
   int instances = 0;
+  std::optional<std::uint64_t> first_seed;
   bool dry_run = false;
   bool list_presets = false;
 };
@@ -43,6 +45,7 @@ experiment::ExperimentConfig load(const ExperimentArgs& a) {
       a.preset.empty() ? experiment::load_config(a.config) : experiment::load_preset(a.preset);
   if (!a.algorithms.empty()) experiment::restrict_algorithms(config, a.algorithms);
   if (a.instances != 0) experiment::set_instance_count(config, a.instances);
+  if (a.first_seed) experiment::set_first_seed(config, *a.first_seed);
   return config;
 }
 
@@ -143,6 +146,9 @@ void add_experiment_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--instances", args->instances, "Override the config's instances with seeds 1..N")
       ->check(integer_in(1, 1'000'000))
       ->type_name("N");
+  cmd->add_option("--first-seed", args->first_seed,
+                  "Run consecutive seeds from this one instead (as many as --instances or the "
+                  "config has): seeds held out from tuning");
   cmd->add_flag("--dry-run", args->dry_run, "Validate and count cells and runs; run nothing");
   cmd->add_flag("--list-presets", args->list_presets, "List the built-in presets and exit");
   cmd->callback([args, &action] { action = [args] { return run(*args); }; });

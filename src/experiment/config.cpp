@@ -343,6 +343,16 @@ void set_instance_count(ExperimentConfig& config, int count) {
   for (int i = 1; i <= count; ++i) config.seeds.push_back(static_cast<std::uint64_t>(i));
 }
 
+void set_first_seed(ExperimentConfig& config, std::uint64_t first) {
+  const std::size_t count = config.seeds.size();
+  if (count > 0 && first > UINT64_MAX - (count - 1)) {
+    throw ParameterError(
+        "first-seed",
+        fmt::format("leaves no room for {} instance seeds below 2^64 (got {})", count, first));
+  }
+  for (std::size_t i = 0; i < count; ++i) config.seeds[i] = first + i;
+}
+
 nlohmann::json config_json(const ExperimentConfig& c) {
   using nlohmann::json;
   json j;

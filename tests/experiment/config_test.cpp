@@ -179,6 +179,32 @@ TEST(ExperimentConfig, RestrictAndOverride) {
   EXPECT_EQ(c.seeds, (std::vector<std::uint64_t>{1, 2, 3, 4}));
 }
 
+TEST(ExperimentConfig, FirstSeedShiftsTheSeedsAndKeepsTheirCount) {
+  auto c = parse("instances: 3\nfirst_seed: 10\n");
+  set_first_seed(c, 1'000'000);
+  EXPECT_EQ(c.seeds, (std::vector<std::uint64_t>{1'000'000, 1'000'001, 1'000'002}));
+  // After --instances N: N seeds from the first.
+  set_instance_count(c, 2);
+  set_first_seed(c, 7);
+  EXPECT_EQ(c.seeds, (std::vector<std::uint64_t>{7, 8}));
+  // A listed set of seeds becomes as many consecutive ones.
+  auto listed = parse("instances: [5, 3, 9]\n");
+  set_first_seed(listed, 20);
+  EXPECT_EQ(listed.seeds, (std::vector<std::uint64_t>{20, 21, 22}));
+  // The last seed may be 2^64 - 1, not beyond.
+  set_first_seed(c, UINT64_MAX - 1);
+  EXPECT_EQ(c.seeds, (std::vector<std::uint64_t>{UINT64_MAX - 1, UINT64_MAX}));
+  try {
+    set_first_seed(c, UINT64_MAX);
+    ADD_FAILURE() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.name(), "first-seed");
+    EXPECT_EQ(e.problem(),
+              "leaves no room for 2 instance seeds below 2^64 (got 18446744073709551615)");
+  }
+  EXPECT_EQ(c.seeds, (std::vector<std::uint64_t>{UINT64_MAX - 1, UINT64_MAX}));  // unchanged
+}
+
 TEST(ExperimentConfig, ResolvedJsonRoundTripsWithTheSameFingerprint) {
   const auto c = parse(
       "scenarios: [imperfect]\nsweeps: [{parameter: p_fp, values: [0.001, 0.003]}]\n"

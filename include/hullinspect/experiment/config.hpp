@@ -101,6 +101,11 @@ void restrict_algorithms(ExperimentConfig& config, const std::vector<std::string
 /// Replaces the seeds by 1..count (ParameterError "instances" unless count >= 1).
 void set_instance_count(ExperimentConfig& config, int count);
 
+/// Replaces the seeds by as many consecutive ones from `first` (first, first + 1, ...): seeds
+/// held out from the ones a config was tuned on, with the same count. ParameterError
+/// ("first-seed") when the last would pass 2^64 - 1.
+void set_first_seed(ExperimentConfig& config, std::uint64_t first);
+
 /// The fully resolved config (defaults filled in, scenarios as zones, every seed), as recorded in
 /// manifest.json.
 nlohmann::json config_json(const ExperimentConfig& config);
