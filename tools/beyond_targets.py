@@ -109,7 +109,7 @@ def cells(runs):
 
 
 def main(path):
-    rows = cells(pd.read_csv(path))
+    rows = cells(pd.read_csv(path, low_memory=False))  # columns of mixed types: no chunked guess
     print("| scenario | s2 | n | best paper T_c | sweep-inspect T_c | ratio [95 % CI] "
           "| best − ours [95 % CI] | ours faster | lawnmower T_m | sweep-inspect T_m "
           "| complete (no failure, one failure) | T_c one failure / none [95 % CI] |")

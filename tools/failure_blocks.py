@@ -49,7 +49,7 @@ def main(argv):
     print(f"| scenario | s2 | n | seeds | T_c one failure / none | blocks of {block} seeds | "
           f"blocks > {FAILURE_TARGET} |")
     print("|---|---:|---:|---:|---:|---|---:|")
-    for c in cells(pd.read_csv(argv[1]), block):
+    for c in cells(pd.read_csv(argv[1], low_memory=False), block):
         blocks = ", ".join(f"{r:.3f}" for r in c["blocks"])
         print(f"| {c['scenario']} | {c['s2']} | {c['uavs']} | {c['seeds']} | {c['ratio']:.3f} | "
               f"{blocks} | {c['above']} of {len(c['blocks'])} |")

@@ -178,7 +178,7 @@ def main(argv=None):
     parser.add_argument("--format", default="png,pdf")
     parser.add_argument("--dpi", type=int, default=110)
     args = parser.parse_args(argv)
-    runs = pd.read_csv(args.runs)
+    runs = pd.read_csv(args.runs, low_memory=False)
     os.makedirs(args.out, exist_ok=True)
     figures = {"beyond_targets": targets_figure(beyond_targets.cells(runs)),
                "beyond_failures": failures_figure(runs)}
