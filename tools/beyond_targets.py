@@ -31,6 +31,12 @@ RESAMPLES = 4000
 FAILURE_TARGET = 1.3  # issue 15: T_c with one of n UAVs failing <= 1.3x its failure-free T_c
 
 
+def read_runs(path):
+    """An experiment's runs.csv, read whole: its zone columns (`p_c`, `l_c`) mix numbers and
+    `/`-separated lists, which pandas' chunked type guess warns about on large files."""
+    return pd.read_csv(path, low_memory=False)
+
+
 def ratio_interval(numerator, denominator, stream):
     """95 % percentile bootstrap interval of mean(numerator) / mean(denominator), seeds paired;
     `stream` (a list of ints) seeds the resampling, so that each interval has a stream of its
@@ -109,7 +115,7 @@ def cells(runs):
 
 
 def main(path):
-    rows = cells(pd.read_csv(path, low_memory=False))  # columns of mixed types: no chunked guess
+    rows = cells(read_runs(path))
     print("| scenario | s2 | n | best paper T_c | sweep-inspect T_c | ratio [95 % CI] "
           "| best − ours [95 % CI] | ours faster | lawnmower T_m | sweep-inspect T_m "
           "| complete (no failure, one failure) | T_c one failure / none [95 % CI] |")

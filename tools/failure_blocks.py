@@ -12,10 +12,8 @@ population or by the draw (docs/beyond.md, "Not done"; bench/configs/failure_pop
 import sys
 from pathlib import Path
 
-import pandas as pd
-
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from beyond_targets import FAILURE_TARGET, OURS  # noqa: E402
+from beyond_targets import FAILURE_TARGET, OURS, read_runs  # noqa: E402
 
 SUFFIX = "-fail1"
 
@@ -49,7 +47,7 @@ def main(argv):
     print(f"| scenario | s2 | n | seeds | T_c one failure / none | blocks of {block} seeds | "
           f"blocks > {FAILURE_TARGET} |")
     print("|---|---:|---:|---:|---:|---|---:|")
-    for c in cells(pd.read_csv(argv[1], low_memory=False), block):
+    for c in cells(read_runs(argv[1]), block):
         blocks = ", ".join(f"{r:.3f}" for r in c["blocks"])
         print(f"| {c['scenario']} | {c['s2']} | {c['uavs']} | {c['seeds']} | {c['ratio']:.3f} | "
               f"{blocks} | {c['above']} of {len(c['blocks'])} |")

@@ -24,8 +24,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import beyond_targets  # noqa: E402
@@ -178,7 +176,7 @@ def main(argv=None):
     parser.add_argument("--format", default="png,pdf")
     parser.add_argument("--dpi", type=int, default=110)
     args = parser.parse_args(argv)
-    runs = pd.read_csv(args.runs, low_memory=False)
+    runs = beyond_targets.read_runs(args.runs)
     os.makedirs(args.out, exist_ok=True)
     figures = {"beyond_targets": targets_figure(beyond_targets.cells(runs)),
                "beyond_failures": failures_figure(runs)}
