@@ -218,11 +218,24 @@ void split_in_band_order(std::vector<int>& cells, int width, std::span<const int
   if (cells.empty() || uavs.empty()) return;
   const BandOrder band_order(band_start, width);
   band_order.sort(cells);
-  // The work each cell adds: a row or band begun there.
-  std::vector<double> work(cells.size());
-  for (std::size_t j = 0; j < cells.size(); ++j)
-    work[j] = band_order.begun(cells, j, row_cost, band_cost);
   const auto cell_at = [width](int i) { return grid::Cell{i % width, i / width}; };
+  // The work each cell adds: a row or band begun there, and within a run the flight across a
+  // gap from the cell before it (rows and bands swept already) beyond what a band begun pays.
+  // Counted free, a run took cells at both ends of a long swept stretch: a survivor at the bow
+  // was given its own cells there and the stern's, and flew 60 columns between them.
+  int widest_band = 1;
+  for (std::size_t x = 0; x < band_start.size(); ++x)
+    widest_band = std::max(widest_band, static_cast<int>(x) - band_start[x] + 1);
+  const int free_gap = widest_band + 1;
+  std::vector<double> work(cells.size());
+  std::vector<double> gap(cells.size(), 0.0);
+  for (std::size_t j = 0; j < cells.size(); ++j) {
+    work[j] = band_order.begun(cells, j, row_cost, band_cost);
+    if (j > 0) {
+      const int d = grid::manhattan(cell_at(cells[j - 1]), cell_at(cells[j]));
+      gap[j] = std::max(0, d - free_gap);
+    }
+  }
   const auto split = [&](double t, bool give) {
     std::size_t c = 0;
     for (const auto& [k, pos] : uavs) {
@@ -231,7 +244,7 @@ void split_in_band_order(std::vector<int>& cells, int width, std::span<const int
       double run = 0.0;
       while (c < cells.size()) {
         // A run begun mid-row still pays for its first row.
-        const double step = c == first ? std::max(work[c], row_cost) : work[c];
+        const double step = c == first ? std::max(work[c], row_cost) : work[c] + gap[c];
         const int flight = std::min(to_first, grid::manhattan(pos, cell_at(cells[c])));
         if (load[static_cast<std::size_t>(k)] + flight + run + step > t) break;
         run += step;

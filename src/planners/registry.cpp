@@ -116,6 +116,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "a failed UAV's unswept cells go at once to the working UAVs, split so that they end "
             "together; each sweeps its share after its own strips (false: they wait for the "
             "helpers)")
+      .flag("leave-to-low-sweep", &SweepInspectOptions::leave_to_low_sweep,
+            "after a failure's re-split, a detection in another working UAV's share of the dense "
+            "columns is left to that UAV's z = 1 sweep (false: whoever passes it descends)")
       .flag("share-prior", &SweepInspectOptions::share_prior,
             "neighbours re-split their prior cells so that their tours end together (at the start "
             "and after a failure), and a UAV whose tour is done takes the part of the longest tour "

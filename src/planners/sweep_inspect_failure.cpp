@@ -52,6 +52,7 @@ void split_in_slabs(const std::vector<int>& cells, int width,
 void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
   const std::size_t n = uavs_.size();
   for (int i : hull_cells_) owner_[i] = -1;
+  resplit_ = true;
   // The working UAVs' loads: the prior's cells each still has to visit, in cells (a visit costs
   // about kPriorVisitSteps steps, a step of sweep sees about kSweepRate·s2 new cells); on the
   // band partition's grid in steps.

@@ -113,6 +113,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   pending_.clear();
   pending_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
   handed_over_.assign(static_cast<std::size_t>(n), 0);
+  resplit_ = false;
   split_cells_.clear();
   split_cells_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
 }

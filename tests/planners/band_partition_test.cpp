@@ -351,5 +351,29 @@ TEST(BandPartition, SplitInBandOrderGivesRunsThatEndTogether) {
   EXPECT_EQ(swapped, (std::vector<int>{36, 36}));
 }
 
+// A run pays the flight across a long stretch swept already: with a band of cells left at the
+// stern end (x 0–2) and four at the bow end (x 48–59) of a 60-column grid, the stern UAV takes
+// only the stern band. Counted free, that 45-column gap let it take part of the bow's bands as
+// well (the two runs' work, 7 and 28 steps, then split about evenly), so it flew across the hull.
+TEST(BandPartition, SplitInBandOrderPaysTheFlightAcrossASweptStretch) {
+  const int width = 60;
+  const std::vector<int> band_start = column_band_starts(std::vector<int>(width, 3));
+  std::vector<int> cells;
+  for (int y = 0; y < 6; ++y) {
+    for (int x = 0; x < width; ++x) {
+      if (x <= 2 || x >= 48) cells.push_back(y * width + x);
+    }
+  }
+  const std::vector<std::pair<int, grid::Cell>> uavs = {{0, {1, 0}}, {1, {58, 0}}};
+  std::vector<int> owner(static_cast<std::size_t>(width * 6), -1);
+  split_in_band_order(cells, width, band_start, uavs, std::vector<double>{0.0, 0.0}, 1.0, 1.0,
+                      [&](int k, int i) { owner[static_cast<std::size_t>(i)] = k; });
+  for (int i : cells) {
+    const int x = i % width;
+    EXPECT_EQ(owner[static_cast<std::size_t>(i)], x <= 2 ? 0 : 1)
+        << "cell " << x << "," << i / width;
+  }
+}
+
 }  // namespace
 }  // namespace hullinspect::planners

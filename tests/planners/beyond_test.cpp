@@ -1178,6 +1178,34 @@ TEST(SweepInspect, TakeOverSweepSplitsAFailedUavsStripsAmongTheOthers) {
   EXPECT_LT(t_c_with, t_c_without);
 }
 
+// leave-to-low-sweep: after the stern UAV fails (combined, s2 = 11, at 150 s) the re-split
+// shifts every share towards the stern, and the survivors fly there over each other's dense
+// columns at z = 2. Left to their owners' z = 1 sweeps, the detections they make on the way no
+// longer stop them: every mission completes under the checker, and T_c summed over seeds 1–8
+// is lower than when whoever passes a detection descends for it (2 785 against 2 820 s when
+// measured: seeds 3, 5, 6 sooner, the others equal).
+TEST(SweepInspect, LeaveToLowSweepKeepsSurvivorsFlyingToTheirShares) {
+  const auto& hull = world::default_hull();
+  int t_c_with = 0;
+  int t_c_without = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    auto with = spec_for("sweep-inspect", "combined", 11, 4, seed);
+    with.failures.at = {{0, 150}};
+    auto without = with;
+    without.planner_options = {{"leave-to-low-sweep", "false"}};
+    bool checked = false;
+    const auto a = run_checked(with, hull, checked);
+    const auto b = run_mission(without, hull);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    ASSERT_TRUE(a.complete);
+    ASSERT_TRUE(b.complete);
+    EXPECT_TRUE(checked);
+    t_c_with += *a.t_c;
+    t_c_without += *b.t_c;
+  }
+  EXPECT_LT(t_c_with, t_c_without);
+}
+
 // With a no-fly wall that cuts the flight space (x = 100: UAVs 0 and 1 left, 2 and 3 right) the
 // re-split stays within each flight part: a failure on either side is taken over by the other UAV
 // of that side, which then has its side's two regions to sweep: the mission completes under the

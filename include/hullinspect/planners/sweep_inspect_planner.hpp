@@ -60,6 +60,10 @@ struct SweepInspectOptions {
   /// (each sweeps its share after its own strips; false: they wait for the helpers' nearest-cell
   /// search after their sweeps).
   bool take_over_sweep = true;
+  /// After a failure's re-split, a UAV leaves a detection in another working UAV's share of the
+  /// dense columns (swept at z = 1, which inspects it on its way) to that UAV, instead of
+  /// descending for it on its flight to its own share (false: whoever passes it descends).
+  bool leave_to_low_sweep = true;
   /// Neighbours re-split their prior cells so that their tours (estimated) end together, at the
   /// start and after a failure's prior cells were handed over; a UAV whose tour is done takes the
   /// part of the longest tour left (of a UAV of its flight part) that makes the later of the two
@@ -203,8 +207,11 @@ class SweepInspectPlanner final : public Planner {
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
   /// Whether UAV k may inspect detected cell i: in its region when help is off, seen from z = 1
-  /// by some position it can reach, not claimed by another UAV.
+  /// by some position it can reach, not claimed by another UAV, not left_to_low_sweep.
   bool may_inspect(int k, int i) const;
+  /// leave-to-low-sweep: after a re-split, whether detected cell i is in another UAV's share of
+  /// the dense columns while that UAV is still sweeping them at z = 1.
+  bool left_to_low_sweep(int k, int i) const;
   /// low-sweep-above: marks the columns of the corrosion zones (one zone when the statistics are
   /// unknown) whose cells the sweep expects corroded more often than low-sweep-above.
   void find_dense_columns(const PlannerContext& context);
@@ -309,6 +316,7 @@ class SweepInspectPlanner final : public Planner {
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
   std::vector<char> handed_over_;        // per UAV: its failure was handled
+  bool resplit_ = false;                 // owner_ is a failure's re-split
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
