@@ -1182,8 +1182,8 @@ TEST(SweepInspect, TakeOverSweepSplitsAFailedUavsStripsAmongTheOthers) {
 // shifts every share towards the stern, and the survivors fly there over each other's dense
 // columns at z = 2. Left to their owners' z = 1 sweeps, the detections they make on the way no
 // longer stop them: every mission completes under the checker, and T_c summed over seeds 1–8
-// is lower than when whoever passes a detection descends for it (2 785 against 2 820 s when
-// measured: seeds 3, 5, 6 sooner, the others equal).
+// is lower than when whoever passes a detection descends for it (`hullinspect run` of the same
+// missions: 2 838 against 2 881 s; seeds 3, 5, 6 and 8 sooner, the others equal).
 TEST(SweepInspect, LeaveToLowSweepKeepsSurvivorsFlyingToTheirShares) {
   const auto& hull = world::default_hull();
   int t_c_with = 0;
