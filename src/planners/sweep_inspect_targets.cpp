@@ -38,10 +38,10 @@ bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
 bool SweepInspectPlanner::left_to_low_sweep(int k, int i) const {
   // After a re-split a survivor may fly far across the others' shares to its own (the failed
   // UAV's cells at one end of the hull shift every share along it), and at z = 2 it detects
-  // corrosion in their dense columns on the way; descending for it there cost the survivor
-  // bound for the stern 80 s in a trace (combined, s2 = 11, seed 1 000 021, UAV 0 failing at
-  // 180), while
-  // the owner's z = 1 sweep inspects those cells on its way anyway (drop_observed keeps them).
+  // corrosion in their dense columns on the way. Descending for it there kept the survivor bound
+  // for the stern about 80 s in a trace (combined, s2 = 11, seed 1 000 021, UAV 0 failing at
+  // 180), while the owner's z = 1 sweep inspects those cells on its way anyway (drop_observed
+  // keeps them in its share).
   if (!resplit_ || !options_.leave_to_low_sweep) return false;
   const int j = owner_[i];
   if (j < 0 || j == k || dense_column_.empty() ||

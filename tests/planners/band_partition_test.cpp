@@ -353,8 +353,8 @@ TEST(BandPartition, SplitInBandOrderGivesRunsThatEndTogether) {
 
 // A run pays the flight across a long stretch swept already: with a band of cells left at the
 // stern end (x 0–2) and four at the bow end (x 48–59) of a 60-column grid, the stern UAV takes
-// only the stern band. Counted free, that 45-column gap let it take part of the bow's bands as
-// well (the two runs' work, 7 and 28 steps, then split about evenly), so it flew across the hull.
+// only the stern band. With the gap counted free the stern UAV's run went on into the bow's
+// bands (27 of their 72 cells), which it would have reached by a flight across the hull.
 TEST(BandPartition, SplitInBandOrderPaysTheFlightAcrossASweptStretch) {
   const int width = 60;
   const std::vector<int> band_start = column_band_starts(std::vector<int>(width, 3));
