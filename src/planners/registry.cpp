@@ -119,6 +119,10 @@ Params<SweepInspectOptions> sweep_inspect_params() {
       .flag("leave-to-low-sweep", &SweepInspectOptions::leave_to_low_sweep,
             "after a failure's re-split, a detection in another working UAV's share of the dense "
             "columns is left to that UAV's z = 1 sweep (false: whoever passes it descends)")
+      .flag("pass-left-detections", &SweepInspectOptions::pass_left_detections,
+            "after a failure's re-split, the sweep of the share a detection not yet inspected went "
+            "to passes abreast of it and inspects it, also at z = 2 (false: a failed UAV's "
+            "detections wait for the helpers)")
       .flag("share-prior", &SweepInspectOptions::share_prior,
             "neighbours re-split their prior cells so that their tours end together (at the start "
             "and after a failure), and a UAV whose tour is done takes the part of the longest tour "

@@ -91,6 +91,9 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
           (detected && reachable(static_cast<int>(g), i, world::kReachZ1)))
         split_cells_.push_back(i);
     }
+    for (int i : split_cells_) {
+      if (view.map[i] == sim::kCorrosionSeen && view.seen[i] != 0) resplit_detection_[i] = 1;
+    }
     const auto assign = [&](int k, int i) { owner_[i] = static_cast<std::int16_t>(k); };
     if (on_bands) {
       // On the band partition's grid: runs of its boustrophedon, in steps (a row of a band at

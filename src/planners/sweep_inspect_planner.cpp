@@ -114,6 +114,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   pending_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
   handed_over_.assign(static_cast<std::size_t>(n), 0);
   resplit_ = false;
+  resplit_detection_ = grid::Grid<std::uint8_t>(width_, context.hull.height(), 0);
   split_cells_.clear();
   split_cells_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
 }

@@ -139,8 +139,19 @@ void SweepInspectPlanner::drop_observed(int k, const sim::PlannerView& view) {
   for (int i : hull_cells_) {
     const bool low =
         !dense_column_.empty() && dense_column_[static_cast<std::size_t>(i % width_)] != 0;
-    if (owner_[i] == k && !sweep_work(view, i, low)) owner_[i] = -1;
+    if (owner_[i] == k && !sweep_work_left(view, i, low)) owner_[i] = -1;
   }
+}
+
+bool SweepInspectPlanner::sweep_work_left(const sim::PlannerView& view, int i, bool low) const {
+  // A detection whose finder failed before inspecting it is pending with nobody on the way to
+  // it: dropped from the share at z = 2, the share's bands were trimmed short of it, and it
+  // waited for the helpers at the mission's end (a trace: combined, s2 = 7, tuning seed
+  // 1 000 045, the stern UAV failing at 100 s while inspecting; a survivor flew 68 s from the
+  // middle of the hull for it and T_c went 276 -> 478 s).
+  if (sweep_work(view, i, low)) return true;
+  return resplit_ && options_.pass_left_detections && resplit_detection_[i] != 0 &&
+         view.map[i] == sim::kCorrosionSeen;
 }
 
 std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::UavState& u,
@@ -362,7 +373,7 @@ bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b, bool l
   for (int y = box.y_lo; y <= box.y_hi; ++y) {
     for (int x = box.x_lo; x <= box.x_hi; ++x) {
       const int i = map.index(x, y);
-      if (sweep_work(view, i, low)) return true;
+      if (sweep_work_left(view, i, low)) return true;
     }
   }
   return false;

@@ -64,6 +64,11 @@ struct SweepInspectOptions {
   /// dense columns (swept at z = 1, which inspects it on its way) to that UAV, instead of
   /// descending for it on its flight to its own share (false: whoever passes it descends).
   bool leave_to_low_sweep = true;
+  /// After a failure's re-split, the detections not yet inspected stay in the share they went to
+  /// until inspected, also at z = 2: its bands are planned to pass abreast of them, and it
+  /// descends for them on the way (false: dropped from the share at z = 2; a failed UAV's were
+  /// left to the helpers at the mission's end).
+  bool pass_left_detections = true;
   /// Neighbours re-split their prior cells so that their tours (estimated) end together, at the
   /// start and after a failure's prior cells were handed over; a UAV whose tour is done takes the
   /// part of the longest tour left (of a UAV of its flight part) that makes the later of the two
@@ -178,7 +183,8 @@ class SweepInspectPlanner final : public Planner {
   /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere (or a sweep tail).
   sim::Action help_step(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them),
-  /// but for the detections in columns swept at z = 1, which that sweep is to inspect.
+  /// but for the detections in columns swept at z = 1, which that sweep is to inspect, and those
+  /// a re-split gave it (resplit_detection_), which its sweep is to pass abreast of.
   void drop_observed(int k, const sim::PlannerView& view);
   /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
   /// this one is done; nullopt, the UAV now helping, when its sweep is over.
@@ -285,6 +291,9 @@ class SweepInspectPlanner final : public Planner {
   /// skip-seen-bands: drops the follower's waypoints of UAV k's band legs ahead of `pos` whose
   /// footprints would see no unobserved cell.
   void skip_seen_bands(Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
+  /// Work left at cell i for a sweep at z = 1 (`low`) or z = 2: sweep_work, or a detection a
+  /// re-split gave to a share (resplit_detection_), which a band passing abreast inspects.
+  bool sweep_work_left(const sim::PlannerView& view, int i, bool low) const;
   /// Whether a flight along one band line from `a` to `b` would see an unobserved cell (at z = 1,
   /// `low`: with the s1 footprint, or a detected cell to inspect).
   bool leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
@@ -317,6 +326,9 @@ class SweepInspectPlanner final : public Planner {
   grid::Grid<std::int16_t> owner_;
   std::vector<char> handed_over_;        // per UAV: its failure was handled
   bool resplit_ = false;                 // owner_ is a failure's re-split
+  // Per cell: detected and not yet inspected at a failure's re-split, which gave it to the share
+  // whose sweep is to pass abreast of it (its finder may be the failed UAV).
+  grid::Grid<std::uint8_t> resplit_detection_;
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
