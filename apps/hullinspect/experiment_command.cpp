@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -22,6 +23,20 @@
 namespace hullinspect::cli {
 
 namespace {
+
+/// The instance seeds for --dry-run: "seed 7", "seeds 1–50" when consecutive, else the first
+/// few ("seeds 3, 9, 4, …").
+std::string seeds_text(const std::vector<std::uint64_t>& seeds) {
+  if (seeds.size() == 1) return fmt::format("seed {}", seeds.front());
+  bool consecutive = true;
+  for (std::size_t i = 1; i < seeds.size(); ++i) consecutive &= seeds[i] == seeds[i - 1] + 1;
+  if (consecutive) return fmt::format("seeds {}–{}", seeds.front(), seeds.back());
+  constexpr std::size_t kShown = 3;
+  std::string text = "seeds ";
+  for (std::size_t i = 0; i < std::min(seeds.size(), kShown); ++i)
+    text += fmt::format("{}{}", i > 0 ? ", " : "", seeds[i]);
+  return seeds.size() > kShown ? text + ", …" : text;
+}
 
 struct ExperimentArgs {
   std::string preset;
@@ -84,11 +99,12 @@ int run(const ExperimentArgs& a) {
     const auto count = [](const auto& items, std::string_view noun) {
       return plural(static_cast<long long>(items.size()), noun);
     };
-    std::cout << fmt::format(
-        "{}: {} × {} s2 × {} × {} = {}; × {} = {} ({} in shard {})\n", config.name,
-        count(config.scenarios, "scenario"), config.s2.size(), count(config.uavs, "fleet size"),
-        count(config.algorithms, "algorithm"), count(plan.cells(), "cell"),
-        count(config.seeds, "instance"), count(plan.runs(), "run"), in_shard, options.shard.text());
+    std::cout << fmt::format("{}: {} × {} s2 × {} × {} = {}; × {} ({}) = {} ({} in shard {})\n",
+                             config.name, count(config.scenarios, "scenario"), config.s2.size(),
+                             count(config.uavs, "fleet size"),
+                             count(config.algorithms, "algorithm"), count(plan.cells(), "cell"),
+                             count(config.seeds, "instance"), seeds_text(config.seeds),
+                             count(plan.runs(), "run"), in_shard, options.shard.text());
     return 0;
   }
   if (a.out.empty()) throw ParameterError("out", "name the results directory with --out DIR");
