@@ -23,35 +23,34 @@ TEST(Wording, OneUavIsSingular) {
 TEST(Wording, ExperimentDryRunCountsOneOfEach) {
   const auto dir = make_temp_dir("wording");
   const std::string config = dir + "/one.yaml";
+  std::ofstream(dir + "/hull.txt") << "XXXXXXXXXXXX\nXXXXXXXXXXXX\nXXXXXXXXXXXX\n";
+  // `hullinspect experiment --dry-run --config <config> <extra...>` prints exactly `expected`.
+  const auto expect_dry_run = [&](std::vector<std::string> extra, const std::string& expected) {
+    std::vector<std::string> args = {"experiment", "--dry-run", "--config", config};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_cli(args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, expected);
+  };
   std::ofstream(config) << "name: one\nhull: hull.txt\nscenarios: [perfect]\ns2: 7\nuavs: 1\n"
                            "algorithms: [lawnmower]\ninstances: 1\n";
-  std::ofstream(dir + "/hull.txt") << "XXXXXXXXXXXX\nXXXXXXXXXXXX\nXXXXXXXXXXXX\n";
-  const auto one = run_cli({"experiment", "--dry-run", "--config", config});
-  ASSERT_EQ(one.status, 0) << one.err;
-  EXPECT_EQ(one.out,
-            "one: 1 scenario × 1 s2 × 1 fleet size × 1 algorithm = 1 cell; × 1 instance (seed 1) = "
-            "1 run (1 in shard 1/1)\n");
+  expect_dry_run({},
+                 "one: 1 scenario × 1 s2 × 1 fleet size × 1 algorithm = 1 cell; × 1 instance "
+                 "(seed 1) = 1 run (1 in shard 1/1)\n");
   std::ofstream(config) << "name: two\nhull: hull.txt\nscenarios: [perfect, imperfect]\n"
                            "s2: [7, 9]\nuavs: [1, 2]\nalgorithms: [lawnmower, part-tsp]\n"
                            "instances: 2\n";
-  const auto two = run_cli({"experiment", "--dry-run", "--config", config});
-  ASSERT_EQ(two.status, 0) << two.err;
-  EXPECT_EQ(two.out,
-            "two: 2 scenarios × 2 s2 × 2 fleet sizes × 2 algorithms = 16 cells; × 2 instances "
-            "(seeds 1–2) = 32 runs (32 in shard 1/1)\n");
-  const auto held = run_cli({"experiment", "--dry-run", "--config", config, "--instances", "200",
-                             "--first-seed", "3000000"});
-  ASSERT_EQ(held.status, 0) << held.err;
-  EXPECT_EQ(held.out,
-            "two: 2 scenarios × 2 s2 × 2 fleet sizes × 2 algorithms = 16 cells; × 200 instances "
-            "(seeds 3000000–3000199) = 3200 runs (3200 in shard 1/1)\n");
+  expect_dry_run({},
+                 "two: 2 scenarios × 2 s2 × 2 fleet sizes × 2 algorithms = 16 cells; × 2 "
+                 "instances (seeds 1–2) = 32 runs (32 in shard 1/1)\n");
+  expect_dry_run({"--instances", "200", "--first-seed", "3000000"},
+                 "two: 2 scenarios × 2 s2 × 2 fleet sizes × 2 algorithms = 16 cells; × 200 "
+                 "instances (seeds 3000000–3000199) = 3200 runs (3200 in shard 1/1)\n");
   std::ofstream(config) << "name: listed\nhull: hull.txt\nscenarios: [perfect]\ns2: 7\nuavs: 1\n"
                            "algorithms: [lawnmower]\ninstances: [7, 3, 11, 4]\n";
-  const auto listed = run_cli({"experiment", "--dry-run", "--config", config});
-  ASSERT_EQ(listed.status, 0) << listed.err;
-  EXPECT_EQ(listed.out,
-            "listed: 1 scenario × 1 s2 × 1 fleet size × 1 algorithm = 1 cell; × 4 instances "
-            "(seeds 7, 3, 11, …) = 4 runs (4 in shard 1/1)\n");
+  expect_dry_run({},
+                 "listed: 1 scenario × 1 s2 × 1 fleet size × 1 algorithm = 1 cell; × 4 "
+                 "instances (seeds 7, 3, 11, …) = 4 runs (4 in shard 1/1)\n");
   std::filesystem::remove_all(dir);
 }
 
