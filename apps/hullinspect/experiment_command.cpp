@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -29,7 +30,8 @@ namespace {
 std::string seeds_text(const std::vector<std::uint64_t>& seeds) {
   if (seeds.size() == 1) return fmt::format("seed {}", seeds.front());
   bool consecutive = true;
-  for (std::size_t i = 1; i < seeds.size(); ++i) consecutive &= seeds[i] == seeds[i - 1] + 1;
+  for (std::size_t i = 1; i < seeds.size(); ++i)
+    consecutive &= seeds[i - 1] != UINT64_MAX && seeds[i] == seeds[i - 1] + 1;
   if (consecutive) return fmt::format("seeds {}–{}", seeds.front(), seeds.back());
   constexpr std::size_t kShown = 3;
   std::string text = "seeds ";

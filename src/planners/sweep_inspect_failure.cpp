@@ -85,14 +85,15 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
     split_cells_.clear();
     for (int i : hull_cells_) {
       // Detected cells not yet inspected are work too: a band passing abreast inspects them
-      // (else they would wait, unowned, for the helpers at the end).
+      // (else they would wait, unowned, for the helpers at the end); resplit_detection_ keeps
+      // them in the share's sweep (pass-left-detections).
       const bool detected = view.map[i] == sim::kCorrosionSeen && view.seen[i] != 0;
-      if ((unobserved(view, i) && reachable(static_cast<int>(g), i, world::kReachZ2)) ||
-          (detected && reachable(static_cast<int>(g), i, world::kReachZ1)))
+      if (unobserved(view, i) && reachable(static_cast<int>(g), i, world::kReachZ2)) {
         split_cells_.push_back(i);
-    }
-    for (int i : split_cells_) {
-      if (view.map[i] == sim::kCorrosionSeen && view.seen[i] != 0) resplit_detection_[i] = 1;
+      } else if (detected && reachable(static_cast<int>(g), i, world::kReachZ1)) {
+        split_cells_.push_back(i);
+        resplit_detection_[i] = 1;
+      }
     }
     const auto assign = [&](int k, int i) { owner_[i] = static_cast<std::int16_t>(k); };
     if (on_bands) {

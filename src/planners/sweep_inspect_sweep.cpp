@@ -150,7 +150,8 @@ bool SweepInspectPlanner::sweep_work_left(const sim::PlannerView& view, int i, b
   // 1 000 045, the stern UAV failing at 100 s while inspecting: a survivor flew 68 s from the
   // middle of the hull for it, T_c 478 s against 435 s with this and 276 s with no failure).
   if (sweep_work(view, i, low)) return true;
-  return resplit_ && options_.pass_left_detections && resplit_detection_[i] != 0 &&
+  // Only a re-split marks resplit_detection_.
+  return options_.pass_left_detections && resplit_detection_[i] != 0 &&
          view.map[i] == sim::kCorrosionSeen;
 }
 

@@ -51,6 +51,12 @@ TEST(Wording, ExperimentDryRunCountsOneOfEach) {
   expect_dry_run({},
                  "listed: 1 scenario × 1 s2 × 1 fleet size × 1 algorithm = 1 cell; × 4 "
                  "instances (seeds 7, 3, 11, …) = 4 runs (4 in shard 1/1)\n");
+  // The largest seed and 0 are not a range (seed + 1 wraps round).
+  std::ofstream(config) << "name: edge\nhull: hull.txt\nscenarios: [perfect]\ns2: 7\nuavs: 1\n"
+                           "algorithms: [lawnmower]\ninstances: [18446744073709551615, 0]\n";
+  expect_dry_run({},
+                 "edge: 1 scenario × 1 s2 × 1 fleet size × 1 algorithm = 1 cell; × 2 "
+                 "instances (seeds 18446744073709551615, 0) = 2 runs (2 in shard 1/1)\n");
   std::filesystem::remove_all(dir);
 }
 
