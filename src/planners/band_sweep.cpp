@@ -82,6 +82,78 @@ std::vector<grid::Cell> band_sweep(const grid::Grid<std::int16_t>& owner, int ua
                      from, across_size);
 }
 
+namespace {
+/// band_sweep, flown from whichever end is nearer `from`.
+std::vector<grid::Cell> nearer_end_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
+                                         BandAxis axis, bool trim_ends, grid::Cell from,
+                                         std::span<const int> band_start, int x_lo, int x_hi) {
+  auto waypoints = band_sweep(owner, uav, s, axis, trim_ends, from, band_start, x_lo, x_hi);
+  if (waypoints.size() > 1 &&
+      grid::manhattan(from, waypoints.back()) < grid::manhattan(from, waypoints.front())) {
+    std::reverse(waypoints.begin(), waypoints.end());
+  }
+  return waypoints;
+}
+}  // namespace
+
+std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
+                                        BandAxis axis, bool trim_ends, grid::Cell from,
+                                        std::span<const int> band_start,
+                                        std::vector<grid::Cell> plain, TwoBlockScratch& scratch) {
+  int x_lo = owner.width();
+  int x_hi = -1;
+  for (int y = 0; y < owner.height(); ++y) {
+    for (int x = 0; x < owner.width(); ++x) {
+      if (owner(x, y) != uav) continue;
+      x_lo = std::min(x_lo, x);
+      x_hi = std::max(x_hi, x);
+    }
+  }
+  if (x_hi < 0) return plain;
+  for (auto* block : {&scratch.first, &scratch.second}) {
+    if (block->width() != owner.width() || block->height() != owner.height())
+      *block = grid::Grid<std::int16_t>(owner.width(), owner.height(), -1);
+  }
+  const bool rows = axis == BandAxis::kRows;
+  const auto cut_here = [&](int x) {
+    if (rows || band_start.empty()) return (x - x_lo) % s == 0;
+    return band_start[static_cast<std::size_t>(x)] == x;
+  };
+  std::vector<grid::Cell> best = std::move(plain);
+  int best_length = flight_length(from, best);
+  for (int cut = x_lo + 1; cut <= x_hi; ++cut) {
+    if (!cut_here(cut)) continue;
+    for (int y = 0; y < owner.height(); ++y) {
+      for (int x = x_lo; x <= x_hi; ++x) {
+        const bool mine = owner(x, y) == uav;
+        scratch.first(x, y) = static_cast<std::int16_t>(mine && x < cut ? uav : -1);
+        scratch.second(x, y) = static_cast<std::int16_t>(mine && x >= cut ? uav : -1);
+      }
+    }
+    for (const bool left_first : {true, false}) {
+      const auto& a = left_first ? scratch.first : scratch.second;
+      const auto& b = left_first ? scratch.second : scratch.first;
+      auto waypoints = nearer_end_sweep(a, uav, s, axis, trim_ends, from, band_start, x_lo, x_hi);
+      const grid::Cell end = waypoints.empty() ? from : waypoints.back();
+      const auto rest = nearer_end_sweep(b, uav, s, axis, trim_ends, end, band_start, x_lo, x_hi);
+      waypoints.insert(waypoints.end(), rest.begin(), rest.end());
+      const int length = flight_length(from, waypoints);
+      if (length < best_length) {
+        best_length = length;
+        best = std::move(waypoints);
+      }
+    }
+  }
+  // The scratch is left clean for the next call.
+  for (int y = 0; y < owner.height(); ++y) {
+    for (int x = x_lo; x <= x_hi; ++x) {
+      scratch.first(x, y) = -1;
+      scratch.second(x, y) = -1;
+    }
+  }
+  return best;
+}
+
 LegBox leg_footprints(grid::Cell a, grid::Cell b, int half, int width, int height) {
   return {std::max(0, std::min(a.x, b.x) - half), std::min(width - 1, std::max(a.x, b.x) + half),
           std::max(0, std::min(a.y, b.y) - half), std::min(height - 1, std::max(a.y, b.y) + half)};

@@ -123,6 +123,10 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "after a failure's re-split, the sweep of the share a detection not yet inspected went "
             "to passes abreast of it and inspects it, also at z = 2 (false: a failed UAV's "
             "detections wait for the helpers)")
+      .flag("two-block-sweep", &SweepInspectOptions::two_block_sweep,
+            "after a failure's re-split, a share's dense part is swept at z = 1 as two blocks of "
+            "columns, one after the other, where that is a shorter flight (false: one "
+            "boustrophedon over its bands)")
       .flag("share-prior", &SweepInspectOptions::share_prior,
             "neighbours re-split their prior cells so that their tours end together (at the start "
             "and after a failure), and a UAV whose tour is done takes the part of the longest tour "

@@ -69,6 +69,10 @@ struct SweepInspectOptions {
   /// descends for them on the way (false: dropped from the share at z = 2; a failed UAV's were
   /// left to the helpers at the mission's end).
   bool pass_left_detections = true;
+  /// After a failure's re-split, a share's dense part is swept at z = 1 as two blocks of
+  /// columns, one after the other, where that is a shorter flight than one boustrophedon over
+  /// its bands: swept in part, the share is ragged (false: one boustrophedon).
+  bool two_block_sweep = true;
   /// Neighbours re-split their prior cells so that their tours (estimated) end together, at the
   /// start and after a failure's prior cells were handed over; a UAV whose tour is done takes the
   /// part of the longest tour left (of a UAV of its flight part) that makes the later of the two
@@ -332,6 +336,7 @@ class SweepInspectPlanner final : public Planner {
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
+  TwoBlockScratch two_block_scratch_;    // scratch of two_block_sweep
   std::vector<int> tour_left_;           // scratch of tour_steps
   std::vector<grid::Cell> tour_points_;  // scratch of first_of_planned_tour
   std::vector<int> split_cells_;
