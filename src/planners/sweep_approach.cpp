@@ -123,6 +123,49 @@ std::vector<grid::Cell> plain_sweep(const grid::Grid<std::int16_t>& owner,
   return waypoints;
 }
 
+std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
+                                        const SweepRequest& request, grid::Cell from,
+                                        std::vector<grid::Cell> plain) {
+  int x_lo = owner.width();
+  int x_hi = -1;
+  for (int y = 0; y < owner.height(); ++y) {
+    for (int x = 0; x < owner.width(); ++x) {
+      if (owner(x, y) != request.uav) continue;
+      x_lo = std::min(x_lo, x);
+      x_hi = std::max(x_hi, x);
+    }
+  }
+  const bool rows = request.axis == BandAxis::kRows;
+  const auto cut_here = [&](int x) {
+    if (rows || request.band_start.empty()) return (x - x_lo) % request.band == 0;
+    return request.band_start[static_cast<std::size_t>(x)] == x;
+  };
+  // A block is the request's columns on one side of the cut: band_sweep reads only those.
+  SweepRequest left = request;
+  SweepRequest right = request;
+  left.x_lo = x_lo;
+  right.x_hi = x_hi;
+  std::vector<grid::Cell> best = std::move(plain);
+  int best_length = flight_length(from, best);
+  for (int cut = x_lo + 1; cut <= x_hi; ++cut) {
+    if (!cut_here(cut)) continue;
+    left.x_hi = cut - 1;
+    right.x_lo = cut;
+    for (const bool left_first : {true, false}) {
+      auto waypoints = plain_sweep(owner, left_first ? left : right, from);
+      const grid::Cell end = waypoints.empty() ? from : waypoints.back();
+      const auto rest = plain_sweep(owner, left_first ? right : left, end);
+      waypoints.insert(waypoints.end(), rest.begin(), rest.end());
+      const int length = flight_length(from, waypoints);
+      if (length < best_length) {
+        best_length = length;
+        best = std::move(waypoints);
+      }
+    }
+  }
+  return best;
+}
+
 SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
                              grid::Cell from, SweepScratch& scratch_space) {
   grid::Grid<std::int16_t>& scratch = scratch_space.owner;

@@ -88,8 +88,9 @@ std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::
     // combined, s2 = 7, tuning seed 1 000 024, a survivor flew 50 steps back for a bottom line).
     // On the 300 tuning seeds of failure_population.yaml, s2 = 7: 54 of the 300 missions with a
     // failure changed, T_c -16.7 s on average among them; none without a failure.
-    auto blocks = two_block_sweep(part_owner_, k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends,
-                                  from, band_start_, waypoints, two_block_scratch_);
+    const SweepRequest request{
+        k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
+    auto blocks = two_block_sweep(part_owner_, request, from, waypoints);
     if (blocks != waypoints) {
       waypoints = std::move(blocks);
       p.approach_rest = 0;  // the blocks have no approach

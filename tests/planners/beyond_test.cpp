@@ -1206,6 +1206,32 @@ TEST(SweepInspect, LeaveToLowSweepKeepsSurvivorsFlyingToTheirShares) {
   EXPECT_LT(t_c_with, t_c_without);
 }
 
+// A failure option's on/off check: each mission, with one UAV failing, completes under the
+// checker with the option and is sooner than without it (s2 = 7, n = 4).
+struct FailureCase {
+  const char* scenario;
+  std::uint64_t seed;
+  int failed;
+  int at;
+};
+void expect_sooner_with(const char* option, std::initializer_list<FailureCase> cases) {
+  const auto& hull = world::default_hull();
+  for (const FailureCase& c : cases) {
+    auto with = spec_for("sweep-inspect", c.scenario, 7, 4, c.seed);
+    with.failures.at = {{c.failed, c.at}};
+    auto without = with;
+    without.planner_options = {{option, "false"}};
+    bool checked = false;
+    const auto a = run_checked(with, hull, checked);
+    const auto b = run_mission(without, hull);
+    SCOPED_TRACE(::testing::Message() << option << ", " << c.scenario << " seed " << c.seed);
+    ASSERT_TRUE(a.complete);
+    ASSERT_TRUE(b.complete);
+    EXPECT_TRUE(checked);
+    EXPECT_LT(*a.t_c, *b.t_c);
+  }
+}
+
 // pass-left-detections: a UAV that fails while inspecting leaves detections not yet inspected.
 // The re-split gives them to a share, whose sweep at z = 2 used to drop them and trim its bands
 // short of them, so they waited for the helpers at the mission's end. In the trace that showed
@@ -1214,27 +1240,8 @@ TEST(SweepInspect, LeaveToLowSweepKeepsSurvivorsFlyingToTheirShares) {
 // with the option. Imperfect seed 8, UAV 2 failing at 60 s: 393 against 384 s. Each mission
 // completes under the checker, and each is sooner with the option.
 TEST(SweepInspect, PassLeftDetectionsInspectsAFailedUavsDetectionsOnTheWay) {
-  const auto& hull = world::default_hull();
-  struct Case {
-    const char* scenario;
-    std::uint64_t seed;
-    int failed;
-    int at;
-  };
-  for (const Case& c : {Case{"combined", 1000045, 0, 100}, Case{"imperfect", 8, 2, 60}}) {
-    auto with = spec_for("sweep-inspect", c.scenario, 7, 4, c.seed);
-    with.failures.at = {{c.failed, c.at}};
-    auto without = with;
-    without.planner_options = {{"pass-left-detections", "false"}};
-    bool checked = false;
-    const auto a = run_checked(with, hull, checked);
-    const auto b = run_mission(without, hull);
-    SCOPED_TRACE(::testing::Message() << c.scenario << " seed " << c.seed);
-    ASSERT_TRUE(a.complete);
-    ASSERT_TRUE(b.complete);
-    EXPECT_TRUE(checked);
-    EXPECT_LT(*a.t_c, *b.t_c);
-  }
+  expect_sooner_with("pass-left-detections",
+                     {{"combined", 1000045, 0, 100}, {"imperfect", 8, 2, 60}});
 }
 
 // two-block-sweep: after a failure's re-split a share's dense part, swept in part by others, is
@@ -1242,26 +1249,8 @@ TEST(SweepInspect, PassLeftDetectionsInspectsAFailedUavsDetectionsOnTheWay) {
 // 1 000 148 (UAV 1 failing at 74 s: T_c 337 against 417 s without the option) and 1 000 048
 // (UAV 0 at 90 s: 345 against 411 s); each completes under the checker, and each is sooner.
 TEST(SweepInspect, TwoBlockSweepFliesAPartSweptShareInTwoBlocks) {
-  const auto& hull = world::default_hull();
-  struct Case {
-    std::uint64_t seed;
-    int failed;
-    int at;
-  };
-  for (const Case& c : {Case{1000148, 1, 74}, Case{1000048, 0, 90}}) {
-    auto with = spec_for("sweep-inspect", "combined", 7, 4, c.seed);
-    with.failures.at = {{c.failed, c.at}};
-    auto without = with;
-    without.planner_options = {{"two-block-sweep", "false"}};
-    bool checked = false;
-    const auto a = run_checked(with, hull, checked);
-    const auto b = run_mission(without, hull);
-    SCOPED_TRACE(::testing::Message() << "seed " << c.seed);
-    ASSERT_TRUE(a.complete);
-    ASSERT_TRUE(b.complete);
-    EXPECT_TRUE(checked);
-    EXPECT_LT(*a.t_c, *b.t_c);
-  }
+  expect_sooner_with("two-block-sweep",
+                     {{"combined", 1000148, 1, 74}, {"combined", 1000048, 0, 90}});
 }
 
 // With a no-fly wall that cuts the flight space (x = 100: UAVs 0 and 1 left, 2 and 3 right) the

@@ -2,7 +2,7 @@
 // approach and bands (or its own band first), sees every cell of the region, for pieces of the
 // band partition and irregular regions, both band axes and footprints 3-11; it is never longer
 // than the plain sweep and shorter over a fleet starting in mid-piece; exact waypoints on a
-// rectangle.
+// rectangle; two_block_sweep on a ragged region.
 #include "hullinspect/planners/sweep_approach.hpp"
 
 #include <gtest/gtest.h>
@@ -125,6 +125,53 @@ TEST(SweepApproach, OwnBandFirstOnARectangle) {
                                 {37, 17}, {25, 17}, {37, 22}, {2, 22},  {2, 27}, {37, 27}}));
   EXPECT_EQ(flight_length(from, plan.waypoints), 249);
   EXPECT_EQ(unseen_cells(owner, 0, 2, from, plan.waypoints), 0);
+}
+
+// two_block_sweep on a ragged region in row bands of 5: columns 0-19 hold rows 0-9 only (two
+// bands), columns 20-39 all 30 rows (six), from (10, 7). The plain sweep flies to (2, 2), the two
+// low bands across all 40 columns and the four high ones from (22, 12): 13 + 35 + 5 + 35 + 25 +
+// 4 · 15 + 3 · 5 = 188 steps. Cut at x = 15: the left block's two bands from (12, 7), 2 + 10 + 5
+// + 10 = 27 steps to (12, 2), then the right block's six from (17, 2), 5 + 20 + 5 + 20 + 10 +
+// 4 · 15 + 3 · 5 = 135: 162 in all. Both see every cell. A region one band wide keeps its
+// plain sweep.
+TEST(SweepApproach, TwoBlockSweepOnARaggedRegion) {
+  grid::Grid<std::int16_t> owner(40, 30, -1);
+  for (int y = 0; y < 30; ++y) {
+    for (int x = 0; x < 40; ++x) {
+      if (x >= 20 || y < 10) owner(x, y) = 0;
+    }
+  }
+  const SweepRequest request{0, 5, BandAxis::kRows, true, {}, true};
+  const grid::Cell from{10, 7};
+  const auto plain = plain_sweep(owner, request, from);
+  EXPECT_EQ(flight_length(from, plain), 188);
+  const auto blocks = two_block_sweep(owner, request, from, plain);
+  EXPECT_EQ(blocks, (std::vector<grid::Cell>{{12, 7},
+                                             {2, 7},
+                                             {2, 2},
+                                             {12, 2},
+                                             {17, 2},
+                                             {37, 2},
+                                             {37, 7},
+                                             {17, 7},
+                                             {22, 12},
+                                             {37, 12},
+                                             {37, 17},
+                                             {22, 17},
+                                             {22, 22},
+                                             {37, 22},
+                                             {37, 27},
+                                             {22, 27}}));
+  EXPECT_EQ(flight_length(from, blocks), 162);
+  EXPECT_EQ(unseen_cells(owner, 0, 2, from, plain), 0);
+  EXPECT_EQ(unseen_cells(owner, 0, 2, from, blocks), 0);
+  // A region one band wide has no cut between bands.
+  grid::Grid<std::int16_t> strip(40, 30, -1);
+  for (int y = 0; y < 30; ++y) {
+    for (int x = 20; x < 25; ++x) strip(x, y) = 0;
+  }
+  const auto one = plain_sweep(strip, request, from);
+  EXPECT_EQ(two_block_sweep(strip, request, from, one), one);
 }
 
 }  // namespace

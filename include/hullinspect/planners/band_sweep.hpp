@@ -56,22 +56,6 @@ std::vector<grid::Cell> sweep_bands(const RegionBands& region, int s, BandAxis a
 /// sweeps).
 int flight_length(grid::Cell from, const std::vector<grid::Cell>& waypoints);
 
-/// Scratch grids for two_block_sweep (kept by the caller, so that a re-plan allocates nothing).
-struct TwoBlockScratch {
-  grid::Grid<std::int16_t> first;
-  grid::Grid<std::int16_t> second;
-};
-
-/// `uav`'s cells swept as two blocks of columns, one after the other: cut between two bands
-/// (at x_lo + j·s for row bands, at a start of `band_start`'s bands for column bands), either
-/// block first, each block's bands flown from its nearer end. Returns the shortest such flight
-/// from `from` (flight_length), or `plain` when none is shorter. A region swept in part is
-/// ragged, and one boustrophedon over its bands can leave a band for last on its far side.
-std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner, int uav, int s,
-                                        BandAxis axis, bool trim_ends, grid::Cell from,
-                                        std::span<const int> band_start,
-                                        std::vector<grid::Cell> plain, TwoBlockScratch& scratch);
-
 /// The box of cells that a footprint of half-width `half` sees along the straight leg from `a`
 /// to `b`, clipped to a `width` × `height` grid (corners inclusive).
 struct LegBox {

@@ -63,4 +63,13 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
 std::vector<grid::Cell> plain_sweep(const grid::Grid<std::int16_t>& owner,
                                     const SweepRequest& request, grid::Cell from);
 
+/// `request`'s cells swept as two blocks of columns, one after the other: cut between two bands
+/// (at x_lo + j·band for row bands, at a start of the band grid for column bands), either block
+/// first, each a plain_sweep. Returns the shortest such flight from `from` (flight_length), or
+/// `plain` when none is shorter. A region swept in part is ragged, and one boustrophedon over
+/// its bands can leave a band for last on its far side.
+std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
+                                        const SweepRequest& request, grid::Cell from,
+                                        std::vector<grid::Cell> plain);
+
 }  // namespace hullinspect::planners

@@ -336,7 +336,6 @@ class SweepInspectPlanner final : public Planner {
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
-  TwoBlockScratch two_block_scratch_;    // scratch of two_block_sweep
   std::vector<int> tour_left_;           // scratch of tour_steps
   std::vector<grid::Cell> tour_points_;  // scratch of first_of_planned_tour
   std::vector<int> split_cells_;
