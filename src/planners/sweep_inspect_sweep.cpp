@@ -82,21 +82,29 @@ std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   p.low = low;
   auto waypoints = strips_from(part_owner_, k, from, approach);
-  if (options_.two_block_sweep && low && resplit_ && reach_ == nullptr) {
-    // A share after a failure's re-split holds cells other UAVs left part-swept, and one
-    // boustrophedon over its ragged bands can leave a band for last on its far side (a trace:
-    // combined, s2 = 7, tuning seed 1 000 024, a survivor flew 50 steps back for a bottom line).
-    // On the 300 tuning seeds of failure_population.yaml, s2 = 7: 54 of the 300 missions with a
-    // failure changed, T_c -16.7 s on average among them; none without a failure.
-    const SweepRequest request{
-        k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
-    auto blocks = two_block_sweep(part_owner_, request, from, waypoints);
-    if (blocks != waypoints) {
-      waypoints = std::move(blocks);
-      p.approach_rest = 0;  // the blocks have no approach
-    }
-  }
+  if (low) low_blocks(part_owner_, k, from, waypoints);
   return waypoints;
+}
+
+void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
+                                     std::vector<grid::Cell>& waypoints) {
+  if (!options_.two_block_sweep || !resplit_ || reach_ != nullptr) return;
+  // A share after a failure's re-split holds cells other UAVs left part-swept, and one
+  // boustrophedon over its ragged bands can leave a band for last on its far side (a trace:
+  // combined, s2 = 7, tuning seed 1 000 024, a survivor flew 50 steps back for a bottom line).
+  // On the 300 tuning seeds of failure_population.yaml, s2 = 7: 54 of the 300 missions with a
+  // failure changed, T_c -16.7 s on average among them, for shares with both planes; none
+  // without a failure. Shares wholly in dense columns too: the three s2's ratios 1.2758 /
+  // 1.2485 / 1.2653 -> 1.2725 / 1.2481 / 1.2635. (At z = 2 the same gained less and lost more:
+  // 1.2759 / 1.2468 / 1.2649, up to +82 s in a mission.)
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  const SweepRequest request{
+      k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
+  auto blocks = two_block_sweep(owner, request, from, waypoints);
+  if (blocks != waypoints) {
+    waypoints = std::move(blocks);
+    p.approach_rest = 0;  // the blocks have no approach
+  }
 }
 
 std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
@@ -131,6 +139,7 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
   } else if (sparse == 0) {
     p.low = true;
     waypoints = strips_from(owner_, k, from);
+    low_blocks(owner_, k, from, waypoints);
   } else {
     // Both planes: first the part whose sweep starts nearer, then the other from where it ends.
     grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
@@ -179,8 +188,13 @@ std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::U
     // the flight left the approach's line (a re-plan from elsewhere, an inspection).
     drop_observed(k, view);
     // As sweep_from planned it: one part of two planes, or all its cells.
-    p.sweep.assign(p.other_part ? part_strips(k, p.low, u.pos, false)
-                                : strips_from(owner_, k, u.pos, false));
+    if (p.other_part) {
+      p.sweep.assign(part_strips(k, p.low, u.pos, false));
+    } else {
+      auto waypoints = strips_from(owner_, k, u.pos, false);
+      if (p.low) low_blocks(owner_, k, u.pos, waypoints);
+      p.sweep.assign(waypoints);
+    }
   }
   // An approach's legs are not bands: none is skipped (its line leg may see nothing new).
   if (options_.skip_seen_bands && p.approach_rest == 0) skip_seen_bands(p, u.pos, view);

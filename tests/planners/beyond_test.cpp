@@ -1253,6 +1253,15 @@ TEST(SweepInspect, TwoBlockSweepFliesAPartSweptShareInTwoBlocks) {
                      {{"combined", 1000148, 1, 74}, {"combined", 1000048, 0, 90}});
 }
 
+// The same for a share wholly in the dense columns, swept at z = 1 alone. Combined, s2 = 7,
+// tuning seeds 1 000 070 (UAV 3 failing at 55 s: T_c 351 against 427 s without the option, and
+// 427 s when the option covered only shares with both planes) and 1 000 041 (UAV 3 at 56 s: 380
+// against 422 s, and 422 s).
+TEST(SweepInspect, TwoBlockSweepFliesADenseShareInTwoBlocks) {
+  expect_sooner_with("two-block-sweep",
+                     {{"combined", 1000070, 3, 55}, {"combined", 1000041, 3, 56}});
+}
+
 // With a no-fly wall that cuts the flight space (x = 100: UAVs 0 and 1 left, 2 and 3 right) the
 // re-split stays within each flight part: a failure on either side is taken over by the other UAV
 // of that side, which then has its side's two regions to sweep: the mission completes under the
