@@ -82,22 +82,22 @@ std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   p.low = low;
   auto waypoints = strips_from(part_owner_, k, from, approach);
-  if (low) low_blocks(part_owner_, k, from, waypoints);
+  low_blocks(part_owner_, k, from, waypoints);
   return waypoints;
 }
 
 void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                                      std::vector<grid::Cell>& waypoints) {
-  if (!options_.two_block_sweep || !resplit_ || reach_ != nullptr) return;
-  // A share after a failure's re-split holds cells other UAVs left part-swept, and one
-  // boustrophedon over its ragged bands can leave a band for last on its far side (a trace:
-  // combined, s2 = 7, tuning seed 1 000 024, a survivor flew 50 steps back for a bottom line).
-  // On the 300 tuning seeds of failure_population.yaml, s2 = 7: 54 of the 300 missions with a
-  // failure changed, T_c -16.7 s on average among them, for shares with both planes; none
-  // without a failure. Shares wholly in dense columns too: the three s2's ratios 1.2758 /
-  // 1.2485 / 1.2653 -> 1.2725 / 1.2481 / 1.2635. (At z = 2 the same gained less and lost more:
-  // 1.2759 / 1.2468 / 1.2649, up to +82 s in a mission.)
   Uav& p = uavs_[static_cast<std::size_t>(k)];
+  if (!p.low || !options_.two_block_sweep || !resplit_ || reach_ != nullptr) return;
+  // A share after a failure's re-split holds cells other UAVs left part-swept, and one
+  // boustrophedon over its ragged bands can leave a band for last on its far side (combined,
+  // s2 = 7, tuning seed 1 000 148, UAV 1 failing at 74 s: T_c 417 s, 337 s in two blocks).
+  // On the 300 tuning seeds of failure_population.yaml the three s2's ratios went 1.2861 /
+  // 1.2486 / 1.2660 -> 1.2758 / 1.2485 / 1.2653 for shares with both planes (session 27), and
+  // -> 1.2723 / 1.2476 / 1.2633 with shares wholly in dense columns too; no mission without a
+  // failure changed. (At z = 2 the same gained less and lost more: 1.2759 / 1.2468 / 1.2649,
+  // up to +82 s in a mission.)
   const SweepRequest request{
       k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
   auto blocks = two_block_sweep(owner, request, from, waypoints);
@@ -192,8 +192,8 @@ std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::U
       p.sweep.assign(part_strips(k, p.low, u.pos, false));
     } else {
       auto waypoints = strips_from(owner_, k, u.pos, false);
-      if (p.low) low_blocks(owner_, k, u.pos, waypoints);
-      p.sweep.assign(waypoints);
+      low_blocks(owner_, k, u.pos, waypoints);
+      p.sweep.assign(std::move(waypoints));
     }
   }
   // An approach's legs are not bands: none is skipped (its line leg may see nothing new).

@@ -261,8 +261,9 @@ class SweepInspectPlanner final : public Planner {
   /// unless `approach` is false.
   std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                                       bool approach = true);
-  /// two-block-sweep: after a failure's re-split, `waypoints` (a z = 1 sweep of UAV k's cells
-  /// in `owner` from `from`) become two blocks of columns where that is a shorter flight.
+  /// two-block-sweep: after a failure's re-split, `waypoints` (UAV k's sweep of its cells in
+  /// `owner` from `from`) become two blocks of columns where that is a shorter flight, if the
+  /// sweep is at z = 1 (Uav::low).
   void low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                   std::vector<grid::Cell>& waypoints);
   /// At a failure (take-over-sweep): every cell not yet observed is split anew among the working
