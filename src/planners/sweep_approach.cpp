@@ -16,6 +16,24 @@ void nearer_end_first(std::vector<grid::Cell>& waypoints, grid::Cell from, bool 
     std::reverse(waypoints.begin(), waypoints.end());
 }
 
+/// The bounding box of the cells where `owner` is `uav`, in one scan (x_hi < 0: none).
+struct OwnedBox {
+  int x_lo, x_hi, y_lo, y_hi;
+};
+OwnedBox owned_box(const grid::Grid<std::int16_t>& owner, int uav) {
+  OwnedBox box{owner.width(), -1, owner.height(), -1};
+  for (int y = 0; y < owner.height(); ++y) {
+    for (int x = 0; x < owner.width(); ++x) {
+      if (owner(x, y) != uav) continue;
+      box.x_lo = std::min(box.x_lo, x);
+      box.x_hi = std::max(box.x_hi, x);
+      box.y_lo = std::min(box.y_lo, y);
+      box.y_hi = std::max(box.y_hi, y);
+    }
+  }
+  return box;
+}
+
 /// own-band-first: the plans in two parts (approach_and_sweep's doc) over `region` (the owner's
 /// bands of request.uav), taken into `best` when shorter than `best_length`.
 void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
@@ -126,15 +144,9 @@ std::vector<grid::Cell> plain_sweep(const grid::Grid<std::int16_t>& owner,
 std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
                                         const SweepRequest& request, grid::Cell from,
                                         std::vector<grid::Cell> plain) {
-  int x_lo = owner.width();
-  int x_hi = -1;
-  for (int y = 0; y < owner.height(); ++y) {
-    for (int x = 0; x < owner.width(); ++x) {
-      if (owner(x, y) != request.uav) continue;
-      x_lo = std::min(x_lo, x);
-      x_hi = std::max(x_hi, x);
-    }
-  }
+  const OwnedBox box = owned_box(owner, request.uav);
+  const int x_lo = box.x_lo;
+  const int x_hi = box.x_hi;
   const bool rows = request.axis == BandAxis::kRows;
   const auto cut_here = [&](int x) {
     if (rows || request.band_start.empty()) return (x - x_lo) % request.band == 0;
@@ -169,17 +181,10 @@ std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
 SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
                              grid::Cell from, SweepScratch& scratch_space) {
   grid::Grid<std::int16_t>& scratch = scratch_space.owner;
-  // The region's extent, in one scan; the plans below read only its columns.
-  int x_lo = owner.width(), x_hi = -1, y_lo = owner.height(), y_hi = -1;
-  for (int y = 0; y < owner.height(); ++y) {
-    for (int x = 0; x < owner.width(); ++x) {
-      if (owner(x, y) != request.uav) continue;
-      x_lo = std::min(x_lo, x);
-      x_hi = std::max(x_hi, x);
-      y_lo = std::min(y_lo, y);
-      y_hi = std::max(y_hi, y);
-    }
-  }
+  // The region's extent; the plans below read only its columns.
+  const OwnedBox region_box = owned_box(owner, request.uav);
+  const int x_lo = region_box.x_lo, x_hi = region_box.x_hi;
+  const int y_lo = region_box.y_lo, y_hi = region_box.y_hi;
   SweepPlan best;
   if (x_hi < 0) return best;
   SweepRequest within = request;

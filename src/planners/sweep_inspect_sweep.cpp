@@ -21,6 +21,13 @@ using sweep_inspect_detail::unobserved;
 
 std::vector<grid::Cell> SweepInspectPlanner::strips_from(const grid::Grid<std::int16_t>& owner,
                                                          int k, grid::Cell from, bool approach) {
+  auto waypoints = boustrophedon_from(owner, k, from, approach);
+  low_blocks(owner, k, from, waypoints);
+  return waypoints;
+}
+
+std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
+    const grid::Grid<std::int16_t>& owner, int k, grid::Cell from, bool approach) {
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
   BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
   const bool low = uavs_[static_cast<std::size_t>(k)].low;
@@ -79,11 +86,8 @@ std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::
     if (part_owner_[i] == k && (dense_column_[static_cast<std::size_t>(i % width_)] != 0) != low)
       part_owner_[i] = -1;
   }
-  Uav& p = uavs_[static_cast<std::size_t>(k)];
-  p.low = low;
-  auto waypoints = strips_from(part_owner_, k, from, approach);
-  low_blocks(part_owner_, k, from, waypoints);
-  return waypoints;
+  uavs_[static_cast<std::size_t>(k)].low = low;
+  return strips_from(part_owner_, k, from, approach);
 }
 
 void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
@@ -139,7 +143,6 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
   } else if (sparse == 0) {
     p.low = true;
     waypoints = strips_from(owner_, k, from);
-    low_blocks(owner_, k, from, waypoints);
   } else {
     // Both planes: first the part whose sweep starts nearer, then the other from where it ends.
     grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
@@ -188,13 +191,8 @@ std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::U
     // the flight left the approach's line (a re-plan from elsewhere, an inspection).
     drop_observed(k, view);
     // As sweep_from planned it: one part of two planes, or all its cells.
-    if (p.other_part) {
-      p.sweep.assign(part_strips(k, p.low, u.pos, false));
-    } else {
-      auto waypoints = strips_from(owner_, k, u.pos, false);
-      low_blocks(owner_, k, u.pos, waypoints);
-      p.sweep.assign(std::move(waypoints));
-    }
+    p.sweep.assign(p.other_part ? part_strips(k, p.low, u.pos, false)
+                                : strips_from(owner_, k, u.pos, false));
   }
   // An approach's legs are not bands: none is skipped (its line leg may see nothing new).
   if (options_.skip_seen_bands && p.approach_rest == 0) skip_seen_bands(p, u.pos, view);

@@ -256,11 +256,15 @@ class SweepInspectPlanner final : public Planner {
   /// The strips over UAV k's cells in dense (`low`) or other columns, flown from `from`; sets
   /// Uav::low to `low`. `approach` as strips_from's.
   std::vector<grid::Cell> part_strips(int k, bool low, grid::Cell from, bool approach = true);
-  /// The strips over the cells where `owner` is k (bands of s2, or of s1 when Uav::low) flown from
-  /// `from`, from the nearer end (nearer-sweep-end); led by an edge approach (approach-edge)
-  /// unless `approach` is false.
+  /// The strips over the cells where `owner` is k flown from `from`: boustrophedon_from's, as
+  /// two blocks of columns where low_blocks finds that shorter.
   std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                                       bool approach = true);
+  /// One boustrophedon over the cells where `owner` is k (bands of s2, or of s1 when Uav::low)
+  /// flown from `from`, from the nearer end (nearer-sweep-end); led by an edge approach
+  /// (approach-edge) unless `approach` is false.
+  std::vector<grid::Cell> boustrophedon_from(const grid::Grid<std::int16_t>& owner, int k,
+                                             grid::Cell from, bool approach);
   /// two-block-sweep: after a failure's re-split, `waypoints` (UAV k's sweep of its cells in
   /// `owner` from `from`) become two blocks of columns where that is a shorter flight, if the
   /// sweep is at z = 1 (Uav::low).
