@@ -6,6 +6,7 @@
 //   --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>
+#include "source_dir.hpp"
 
 #include <cstdlib>
 #include <filesystem>

@@ -14,6 +14,7 @@
 //                             60).
 
 #include <benchmark/benchmark.h>
+#include "source_dir.hpp"
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -12,6 +12,7 @@
 // prints now (then review the diff: every change must be intended).
 
 #include <gtest/gtest.h>
+#include "source_dir.hpp"
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>

@@ -2,6 +2,7 @@
 // a hull imported without options records them, an export without --format is written in it.
 
 #include <gtest/gtest.h>
+#include "source_dir.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>

@@ -2,6 +2,7 @@
 // fleet sizes whose default starts used to collide, rows edited by hand before a merge.
 
 #include <gtest/gtest.h>
+#include "source_dir.hpp"
 
 #include <sys/wait.h>
 

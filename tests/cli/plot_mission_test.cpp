@@ -1,6 +1,7 @@
 // tools/plot_mission.py on a real trace: a PNG and a PDF, or one line and exit 2 for a bad trace.
 
 #include <gtest/gtest.h>
+#include "source_dir.hpp"
 #include <sys/wait.h>
 
 #include <cstdlib>

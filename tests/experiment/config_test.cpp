@@ -2,6 +2,7 @@
 // configs with their exact messages (file:line: key: problem).
 
 #include <gtest/gtest.h>
+#include "source_dir.hpp"
 
 #include <algorithm>
 #include <filesystem>

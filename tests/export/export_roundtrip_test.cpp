@@ -4,6 +4,7 @@
 // hull imported from a mesh (whose waypoints stand off from the surface at each cell).
 
 #include <gtest/gtest.h>
+#include "source_dir.hpp"
 
 #include <cmath>
 #include <cstdlib>

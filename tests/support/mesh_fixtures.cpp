@@ -1,4 +1,5 @@
 #include "support/mesh_fixtures.hpp"
+#include "source_dir.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 // the size cap of "exact" and the time limits of the solvers.
 
 #include <gtest/gtest.h>
+#include "source_dir.hpp"
 
 #include <algorithm>
 #include <chrono>
