@@ -12,6 +12,7 @@
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
 
@@ -104,6 +105,28 @@ void read_user_maps(const YamlFields& f, const YAML::Node& root,
   } catch (const InputError& e) {
     f.fail(root["truth"], "truth", e.what());
   }
+  c.prior_defects_path = path("prior-defects");
+  c.truth_defects_path = path("truth-defects");
+  if (root["frame-spacing"]) {
+    c.frame_spacing = f.as_number(root["frame-spacing"], "frame-spacing", 1e-3, 1e3);
+  }
+  world::FrameSpacing frames;
+  frames.frame_spacing_m = c.frame_spacing;
+  const auto defects = [&](const char* key, const char* mask_key, const std::string& file,
+                           std::shared_ptr<const world::CorrosionMap>& map) {
+    if (file.empty()) return;
+    if (root[mask_key]) {
+      f.fail(root[key], key, fmt::format("give either {} or {}, not both", mask_key, key));
+    }
+    try {
+      map = std::make_shared<const world::CorrosionMap>(
+          world::load_defect_map(file, *c.hull, frames));
+    } catch (const InputError& e) {
+      f.fail(root[key], key, e.what());
+    }
+  };
+  defects("prior-defects", "prior", c.prior_defects_path, c.maps.prior);
+  defects("truth-defects", "truth", c.truth_defects_path, c.maps.truth);
 }
 
 void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
@@ -271,9 +294,11 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   c.name = std::filesystem::path(source).stem().string();
   if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   f.expect_map(root, "",
-               {"name", "description", "hull", "grid", "scenarios", "sweeps", "s1", "s2", "theta",
-                "uavs", "start_z", "algorithms", "instances", "first_seed", "time_limit", "curve",
-                "prior", "truth", "no-fly"});
+               {"name",          "description", "hull",      "grid",          "scenarios",
+                "sweeps",        "s1",          "s2",        "theta",         "uavs",
+                "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
+                "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
+                "frame-spacing", "no-fly"});
   for (const char* key : {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull"}) {
     remember_line(c, root, key);
   }
@@ -368,22 +393,22 @@ nlohmann::json config_json(const ExperimentConfig& c) {
   // Only when given, so configs without user maps keep their fingerprints.
   if (!c.prior_path.empty()) j["prior"] = c.prior_path;
   if (!c.truth_path.empty()) j["truth"] = c.truth_path;
+  if (!c.prior_defects_path.empty()) j["prior_defects"] = c.prior_defects_path;
+  if (!c.truth_defects_path.empty()) j["truth_defects"] = c.truth_defects_path;
+  if (c.frame_spacing) j["frame_spacing"] = *c.frame_spacing;
   json scenarios = json::array();
   for (const auto& s : c.scenarios) {
     json zones = json::array();
     for (const auto& z : s.corrosion.zones) {
       zones.push_back({{"x_begin", z.x_begin}, {"x_end", z.x_end}, {"p_c", z.p_c}, {"l_c", z.l_c}});
     }
-    json scenario = {{"name", s.name},
-                     {"sweep", s.sweep},
-                     {"sweep_value", s.sweep_value},
-                     {"zones", zones},
-                     {"p_tp", s.corrosion.p_tp},
-                     {"p_fp", s.corrosion.p_fp}};
+    json scenario = {{"name", s.name}, {"sweep", s.sweep},         {"sweep_value", s.sweep_value},
+                     {"zones", zones}, {"p_tp", s.corrosion.p_tp}, {"p_fp", s.corrosion.p_fp}};
     if (!s.failures.empty()) {
       json at = json::array();
       for (const auto& f : s.failures.at) at.push_back({f.uav, f.time});
-      scenario["failures"] = {{"at", at}, {"rate", s.failures.rate}, {"one_within", s.failures.one_within}};
+      scenario["failures"] = {
+          {"at", at}, {"rate", s.failures.rate}, {"one_within", s.failures.one_within}};
     }
     if (!s.no_fly_spec.is_null()) scenario["no_fly"] = s.no_fly_spec;  // only when given
     scenarios.push_back(std::move(scenario));
@@ -421,6 +446,11 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     if (j.contains("no_fly")) c.no_fly_spec = j.at("no_fly");
     if (j.contains("prior")) c.prior_path = j.at("prior").get<std::string>();
     if (j.contains("truth")) c.truth_path = j.at("truth").get<std::string>();
+    if (j.contains("prior_defects"))
+      c.prior_defects_path = j.at("prior_defects").get<std::string>();
+    if (j.contains("truth_defects"))
+      c.truth_defects_path = j.at("truth_defects").get<std::string>();
+    if (j.contains("frame_spacing")) c.frame_spacing = j.at("frame_spacing").get<double>();
     for (const auto& s : j.at("scenarios")) {
       ScenarioSpec spec;
       spec.name = s.at("name").get<std::string>();
@@ -434,7 +464,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       spec.corrosion.p_fp = s.at("p_fp").get<double>();
       if (s.contains("failures")) {
         const auto& f = s.at("failures");
-        for (const auto& a : f.at("at")) spec.failures.at.push_back({a.at(0).get<int>(), a.at(1).get<int>()});
+        for (const auto& a : f.at("at"))
+          spec.failures.at.push_back({a.at(0).get<int>(), a.at(1).get<int>()});
         spec.failures.rate = f.at("rate").get<double>();
         spec.failures.one_within = f.at("one_within").get<int>();
       }

@@ -2,10 +2,13 @@
 // configs with their exact messages (file:line: key: problem).
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
 #include "source_dir.hpp"
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -233,7 +236,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, "
        "s1, "
        "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, "
-       "truth, no-fly)"},
+       "truth, prior-defects, truth-defects, frame-spacing, no-fly)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
@@ -315,6 +318,32 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       EXPECT_EQ(got, c.message) << "config:\n" << c.yaml;
     }
   }
+}
+
+TEST(ExperimentConfig, DefectListsBecomeThePriorAndTruth) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("hullinspect_config_defects_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "plate.txt") << "XXXXXXXX\nXXXXXXXX\nXXXXXXXX\nXXXXXXXX\n";
+  std::ofstream(dir / "survey.csv") << "frame,z_m,side,w_m,h_m\n2,0.5,starboard,1,0.5\n";
+  const ExperimentConfig c = parse_config(
+      "hull: plate.txt\nprior-defects: survey.csv\ntruth-defects: survey.csv\nframe-spacing: 0.5\n",
+      "c.yaml", dir);
+  ASSERT_TRUE(c.maps.prior && c.maps.truth);
+  int corroded = 0;
+  for (int i = 0; i < c.maps.prior->cells.size(); ++i) corroded += c.maps.prior->cells[i] == 1;
+  EXPECT_EQ(corroded, 2);  // x ∈ [0.5, 1.5) at row 0: columns 1 and 2
+  EXPECT_EQ(config_json(c)["prior_defects"], (dir / "survey.csv").string());
+  EXPECT_EQ(config_json(c)["frame_spacing"], 0.5);
+
+  try {
+    parse_config("hull: plate.txt\nprior: plate.txt\nprior-defects: survey.csv\n", "c.yaml", dir);
+    ADD_FAILURE() << "a prior given twice was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "c.yaml:3: prior-defects: give either prior or prior-defects, not both");
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ExperimentConfig, UnknownPresetListsTheKnownOnes) {
