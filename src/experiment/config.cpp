@@ -10,8 +10,8 @@
 #include "config_scenarios.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
 
