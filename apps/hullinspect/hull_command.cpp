@@ -8,7 +8,7 @@
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "mesh_options.hpp"
 

@@ -19,9 +19,9 @@
 #include "hullinspect/experiment/paired.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
 #include "hullinspect/experiment/summary.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "subprocess.hpp"
 
 namespace hullinspect::cli {

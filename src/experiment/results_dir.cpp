@@ -8,7 +8,7 @@
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/journal.hpp"
 #include "hullinspect/experiment/run_row_check.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 
 namespace hullinspect::experiment {
 

@@ -10,8 +10,8 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
-#include "hullinspect/io/bounded_read.hpp"
-#include "hullinspect/io/json_document.hpp"
+#include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/files/json_document.hpp"
 
 namespace hullinspect::world {
 

@@ -1,4 +1,4 @@
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
