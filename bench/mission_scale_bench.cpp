@@ -1,4 +1,4 @@
-// Whole missions at scale (issue 16 §3): every paper planner (lawnmower, part-tsp, part-tsp0,
+// Whole missions at scale (docs/results.md, "Missions at scale"): every paper planner (lawnmower, part-tsp, part-tsp0,
 // coop-frontier) on the default hull profile at 1×, 2×, 4× and 8× its area and on the 700 × 70
 // hull, for n = 4 … 32. The partitioned planners use the `transfer` partitioner (DARP does not
 // converge at these sizes; docs/results.md), so every mission is one partition plus one simulated
