@@ -1,5 +1,6 @@
-// Beyond the paper (docs/sweep-inspect.md, docs/failures.md, docs/model.md §11): failures seen by whole missions, the oracle against the
-// analytic lower bound, and Sweep-Inspect's completion, truth-blindness and work sharing.
+// Beyond the paper (docs/sweep-inspect.md, docs/failures.md, docs/model.md §11): failures seen by
+// whole missions, the oracle against the analytic lower bound, and Sweep-Inspect's completion,
+// truth-blindness and work sharing.
 
 #include <gtest/gtest.h>
 
