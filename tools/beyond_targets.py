@@ -12,7 +12,7 @@ itself, not its interval) and the counts.
 The intervals resample the seeds (each seed keeps its missions together, so the pairing of the
 planners, and of a seed's mission with and without a failure, is kept) 4 000 times from a fixed
 stream: the same runs.csv always prints the same table. With the `beyond` preset's 10 seeds a
-cell they are wide; bench/configs/beyond_tuning_seeds.yaml gives the issue's own cells (the
+cell they are wide; bench/configs/beyond_tuning_seeds.yaml gives the targets' own cells (the
 `paper` preset's, n = 4..8) on 100 tuning seeds, and with `--instances 50` on the preset's seeds.
 
     /usr/bin/python3 tools/beyond_targets.py results/beyond/runs.csv

@@ -100,7 +100,7 @@ TEST(FlightSplit, WallWithUavsOnBothSidesInUnequalNumbers) {
   }
 }
 
-TEST(FlightSplit, TheIssueReproGivesNoRegionAcrossTheWall) {
+TEST(FlightSplit, AFullHeightWallGivesNoRegionAcrossIt) {
   const auto& hull = world::default_hull();
   world::MissionParams params;
   params.uavs = 4;
