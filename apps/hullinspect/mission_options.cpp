@@ -102,7 +102,7 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
       ->type_name("KEY=VALUE");
   cmd.add_option("--fail", a.fail,
                  "UAV k fails at the start of step T: it stops, senses nothing (repeatable; "
-                 "docs/beyond.md)")
+                 "docs/failures.md)")
       ->type_name("UAV@T");
   cmd.add_option("--fail-rate", a.fail_rate,
                  "Probability that a working UAV fails at a step, drawn from the instance seed")

@@ -358,8 +358,8 @@ TEST(ExperimentConfig, UnknownPresetListsTheKnownOnes) {
 }
 
 TEST(ExperimentConfig, EveryBenchConfigLoadsAndExpands) {
-  // docs/beyond.md and docs/results.md quote commands on these configs; an option renamed or
-  // removed must fail here, not when a user runs them.
+  // docs/sweep-inspect.md, part-tsp.md and results.md quote commands on these configs; an option
+  // renamed or removed must fail here, not when a user runs them.
   const std::filesystem::path dir =
       std::filesystem::path(HULLINSPECT_SOURCE_DIR) / "bench" / "configs";
   std::vector<std::filesystem::path> files;
@@ -378,8 +378,8 @@ TEST(ExperimentConfig, EveryBenchConfigLoadsAndExpands) {
 }
 
 TEST(ExperimentConfig, TheTuningConfigOnFiftySeedsHoldsThePaperPresetsMissions) {
-  // docs/beyond.md reports issue 15's targets on the `paper` preset's cells and seeds as
-  // bench/configs/beyond_tuning_seeds.yaml run with `--instances 50`: every run of the preset
+  // docs/sweep-inspect.md reports Sweep-Inspect's targets on the `paper` preset's cells and seeds
+  // as bench/configs/beyond_tuning_seeds.yaml run with `--instances 50`: every run of the preset
   // (same cell, same seed, hence the same stable id) must be one of its runs.
   const ExperimentPlan paper(load_preset("paper"));
   ExperimentConfig config = load_config(std::filesystem::path(HULLINSPECT_SOURCE_DIR) / "bench" /
