@@ -30,14 +30,7 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
                                    fingerprint));
     }
   }
-  const auto first_manifest = (inputs[0] / kManifestFile).string();
-  if (!manifests[0].contains("config")) throw InputError(first_manifest, 0, "has no 'config'");
-  const ExperimentPlan plan(config_from_json(manifests[0]["config"], first_manifest));
-  if (config_fingerprint(plan.config()) != fingerprint) {
-    throw InputError(first_manifest, 0,
-                     "its config does not reproduce its fingerprint (edited by hand, or written by "
-                     "another version of hullinspect?)");
-  }
+  const ExperimentPlan plan = results_plan(inputs[0], manifests[0]);
 
   MergeSummary summary;
   summary.inputs = static_cast<int>(inputs.size());
