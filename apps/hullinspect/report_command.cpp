@@ -220,13 +220,6 @@ ReportInput read_results(const ReportArgs& a) {
   // Every row is checked against the experiment's plan, as --resume and merge check them.
   const auto plan = experiment::results_plan(results, in.manifest);
   const auto stored = experiment::read_stored_runs(results, plan, true);
-  const auto curves_path = (results / experiment::kCurvesFile).string();
-  if (io::read_file(curves_path, std::size_t{16} << 30) !=
-      experiment::curves_csv(plan, experiment::canonical_lines(plan, stored))) {
-    throw InputError(curves_path, 0,
-                     "does not match runs.csv and samples.csv (truncated or edited? merge the "
-                     "directory into a new one to rebuild it)");
-  }
   in.runs_total = static_cast<int>(plan.runs().size());
   for (const auto& run : plan.runs()) {
     if (!stored.records.contains(run.id)) in.missing.push_back(run.id);
@@ -237,6 +230,13 @@ ReportInput read_results(const ReportArgs& a) {
                                  "--resume or merge the shards, or pass --partial",
                                  in.missing.size(), plural(in.runs_total, "run"),
                                  missing_list(in.missing)));
+  }
+  const auto curves_path = (results / experiment::kCurvesFile).string();
+  if (io::read_file(curves_path, std::size_t{16} << 30) !=
+      experiment::curves_csv(plan, experiment::canonical_lines(plan, stored))) {
+    throw InputError(curves_path, 0,
+                     "does not match runs.csv and samples.csv (truncated or edited? merge the "
+                     "directory into a new one to rebuild it)");
   }
   const auto runs_path = (results / experiment::kRunsFile).string();
   in.runs = experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);

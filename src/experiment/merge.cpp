@@ -8,6 +8,7 @@
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/plan.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
+#include "hullinspect/experiment/staged_dir.hpp"
 
 namespace hullinspect::experiment {
 
@@ -51,10 +52,10 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
   summary.runs = static_cast<int>(merged.records.size());
   summary.missing = static_cast<int>(plan.runs().size()) - summary.runs;
 
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw InputError(out.string(), 0, fmt::format("cannot create: {}", ec.message()));
-  write_final_tables(out, plan, merged);
+  // Written whole into a staging directory and renamed into place: a full disk leaves no output
+  // directory behind.
+  StagedDir staged(out);
+  write_final_tables(staged.path(), plan, merged);
 
   nlohmann::json manifest = base_manifest(plan);
   manifest["config_source"] = manifests[0].value("config_source", "");
@@ -84,7 +85,8 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
   manifest["finished"] = finished;
   manifest["merged_at"] = utc_now();
   manifest["merged_from"] = parts;
-  write_manifest(out, manifest);
+  write_manifest(staged.path(), manifest);
+  staged.commit();
   return summary;
 }
 
