@@ -15,15 +15,16 @@
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/experiment/build_data.hpp"
+#include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/paired.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
 #include "hullinspect/experiment/staged_dir.hpp"
-#include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/summary.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/bounded_read.hpp"
 #include "hullinspect/io/output_set.hpp"
+#include "number_options.hpp"
 #include "subprocess.hpp"
 
 namespace hullinspect::cli {
@@ -111,9 +112,10 @@ void draw_figures(const ReportArgs& a, const fs::path& staging) {
   std::error_code ec;
   fs::remove(log, ec);
   if (r.timed_out) {
-    throw Error(fmt::format("--python: plotting did not finish within {} s: {} was stopped (raise "
-                            "--python-timeout, or pass --no-figures)",
-                            a.python_seconds, escape_for_message(a.python, 200)));
+    throw Error(
+        fmt::format("--python: plotting did not finish within {} s: {} was stopped (raise "
+                    "--python-timeout, or pass --no-figures)",
+                    a.python_seconds, escape_for_message(a.python, 200)));
   }
   if (r.status != 0) {
     throw Error(fmt::format(
@@ -138,9 +140,10 @@ std::string report_markdown(const ReportInput& in, const ReportArgs& a, const st
                     m.value("version", "?"), m.value("git_revision", "unknown"));
   md += fmt::format("- Ran from {} to {}\n", m.value("started", "?"), m.value("finished", "?"));
   if (!in.missing.empty()) {
-    md += fmt::format("- **Partial**: {} of the experiment's {} missing ({}); every table and "
-                      "figure covers only the runs found\n",
-                      in.missing.size(), plural(in.runs_total, "run"), missing_list(in.missing));
+    md += fmt::format(
+        "- **Partial**: {} of the experiment's {} missing ({}); every table and "
+        "figure covers only the runs found\n",
+        in.missing.size(), plural(in.runs_total, "run"), missing_list(in.missing));
   }
   md +=
       "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
@@ -226,10 +229,10 @@ ReportInput read_results(const ReportArgs& a) {
   }
   if (!in.missing.empty() && !a.partial) {
     throw InputError((results / experiment::kRunsFile).string(), 0,
-                     fmt::format("{} of the experiment's {} are missing ({}): finish them with "
+                     fmt::format("{} of the experiment's {} {} missing ({}): finish them with "
                                  "--resume or merge the shards, or pass --partial",
                                  in.missing.size(), plural(in.runs_total, "run"),
-                                 missing_list(in.missing)));
+                                 in.missing.size() == 1 ? "is" : "are", missing_list(in.missing)));
   }
   const auto curves_path = (results / experiment::kCurvesFile).string();
   if (io::read_file(curves_path, std::size_t{16} << 30) !=
@@ -255,8 +258,8 @@ int run_report(const ReportArgs& a) {
   const auto rows = experiment::summarize_runs(in.runs, (results / experiment::kRunsFile).string());
   experiment::PairedOptions paired_options;
   paired_options.algorithms = a.planners;
-  const auto analysis =
-      experiment::analyse_pairs(in.runs, (results / experiment::kRunsFile).string(), paired_options);
+  const auto analysis = experiment::analyse_pairs(
+      in.runs, (results / experiment::kRunsFile).string(), paired_options);
   for (const auto& l : a.labels) {
     const auto eq = l.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == l.size()) {
@@ -282,11 +285,11 @@ int run_report(const ReportArgs& a) {
   io::write_file_atomic(stage / "paired.csv", experiment::paired_csv(analysis));
   InterruptGuard::check();
   if (!a.no_figures) draw_figures(a, stage);
-  const auto figures =
-      !a.no_figures ? figure_stems(stage / "figures", a.formats.front()) : std::vector<std::string>{};
-  io::write_file_atomic(stage / "report.md",
-                        report_markdown(in, a, tables, experiment::paired_markdown(analysis, claims),
-                                        figures));
+  const auto figures = !a.no_figures ? figure_stems(stage / "figures", a.formats.front())
+                                     : std::vector<std::string>{};
+  io::write_file_atomic(
+      stage / "report.md",
+      report_markdown(in, a, tables, experiment::paired_markdown(analysis, claims), figures));
   InterruptGuard::check();
   staged.commit();
   std::cout << tables;
@@ -349,7 +352,7 @@ void add_report_command(CLI::App& app, CommandAction& action) {
                 "report.md); without it such results are refused");
   cmd->add_option("--python-timeout", args->python_seconds,
                   "Seconds the plotting may take before it is stopped")
-      ->check(CLI::Range(1.0, 86400.0))
+      ->check(real_in(1, 86400))
       ->capture_default_str()
       ->type_name("SECONDS");
   cmd->callback([args, &action] { action = [args] { return run(*args); }; });

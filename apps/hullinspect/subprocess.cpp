@@ -22,7 +22,9 @@ std::atomic<int> g_signal{0};
 struct sigaction g_old_int {};
 struct sigaction g_old_term {};
 
-void remember_signal(int signal) { g_signal.store(signal); }
+void remember_signal(int signal) {
+  g_signal.store(signal);
+}
 
 using Clock = std::chrono::steady_clock;
 

@@ -107,7 +107,8 @@ void read_user_maps(const YamlFields& f, const YAML::Node& root,
 }
 
 /// `prior:` replaces the generated C′ and `truth:` the generated C (docs/model.md): a scenario or
-/// sweep parameter that only shapes a replaced map would label runs with a value that had no effect.
+/// sweep parameter that only shapes a replaced map would label runs with a value that had no
+/// effect.
 void refuse_replaced_parameters(const YamlFields& f, const YAML::Node& root) {
   const bool prior = static_cast<bool>(root["prior"]);
   const bool truth = static_cast<bool>(root["truth"]);

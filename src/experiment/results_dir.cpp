@@ -23,9 +23,8 @@ struct Row {
 /// The rows of one journal by run id: every id a run of `plan`, none twice, and (for runs.csv)
 /// every row a possible record of its run.
 std::unordered_map<std::string, Row> by_id(const std::filesystem::path& file,
-                                                   const JournalRows& rows,
-                                                   const ExperimentPlan& plan,
-                                                   bool check_runs_rows = false) {
+                                           const JournalRows& rows, const ExperimentPlan& plan,
+                                           bool check_runs_rows = false) {
   std::unordered_map<std::string, Row> out;
   int line = 1;
   for (const auto& l : rows.lines) {

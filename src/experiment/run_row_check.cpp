@@ -73,9 +73,10 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
     return fmt::format("steps is {} but a complete mission stops at T_m = {}", steps, *t_m);
   }
   if (t_c && t_m && *t_c > *t_m) {
-    return fmt::format("T_c is {} but T_m is {} (every corroded cell is inspected once the hull is "
-                       "known)",
-                       *t_c, *t_m);
+    return fmt::format(
+        "T_c is {} but T_m is {} (every corroded cell is inspected once the hull is "
+        "known)",
+        *t_c, *t_m);
   }
   if (complete && !t_c) return "complete is 1 but T_c is empty (a complete mission has a T_c)";
   if (t_c && *t_c > steps) {
@@ -148,7 +149,8 @@ std::string samples_row_problem(const ExperimentPlan& plan, const RunKey& run,
   const auto fields = split_csv_line(samples_line);
   const auto header = samples_header(plan.config().curve);
   if (!fields || fields->size() != header.size()) return "malformed row";
-  if ((*fields)[0] != run.id) return fmt::format("run_id is '{}', expected '{}'", (*fields)[0], run.id);
+  if ((*fields)[0] != run.id)
+    return fmt::format("run_id is '{}', expected '{}'", (*fields)[0], run.id);
   const Outcome o(*split_csv_line(runs_line));
   const auto t_c = o.parse("T_c", kMaxStoredCount);
   const auto t_m = o.parse("T_m", kMaxStoredCount);
@@ -163,8 +165,8 @@ std::string samples_row_problem(const ExperimentPlan& plan, const RunKey& run,
     std::optional<long long> reached;
     const char* first_time;
   };
-  for (const Series s : {Series{1, corroded, t_c, "T_c"},
-                         Series{1 + times.size(), hull_cells, t_m, "T_m"}}) {
+  for (const Series s :
+       {Series{1, corroded, t_c, "T_c"}, Series{1 + times.size(), hull_cells, t_m, "T_m"}}) {
     long long previous = 0;
     for (std::size_t i = 0; i < times.size(); ++i) {
       const std::string& name = header[s.first + i];

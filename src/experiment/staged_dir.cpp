@@ -13,20 +13,25 @@ namespace {
 
 fs::path beside(const fs::path& target, const char* what) {
   const fs::path absolute = fs::absolute(target).lexically_normal();
-  const fs::path name = absolute.has_filename() ? absolute.filename() : absolute.parent_path().filename();
-  const fs::path parent = absolute.has_filename() ? absolute.parent_path() : absolute.parent_path().parent_path();
+  const fs::path name =
+      absolute.has_filename() ? absolute.filename() : absolute.parent_path().filename();
+  const fs::path parent =
+      absolute.has_filename() ? absolute.parent_path() : absolute.parent_path().parent_path();
   return parent / fmt::format(".{}.{}-{}", name.string(), what, ::getpid());
 }
 
 void rename_or_throw(const fs::path& from, const fs::path& to) {
   std::error_code ec;
   fs::rename(from, to, ec);
-  if (ec) throw Error(fmt::format("{}: cannot move the new file into place: {}", to.string(), ec.message()));
+  if (ec)
+    throw Error(
+        fmt::format("{}: cannot move the new file into place: {}", to.string(), ec.message()));
 }
 
 }  // namespace
 
-StagedDir::StagedDir(fs::path target) : target_(std::move(target)), staging_(beside(target_, "staging")) {
+StagedDir::StagedDir(fs::path target)
+    : target_(std::move(target)), staging_(beside(target_, "staging")) {
   std::error_code ec;
   fs::create_directories(staging_.parent_path(), ec);
   if (!ec) fs::create_directory(staging_, ec);
@@ -42,8 +47,8 @@ StagedDir::~StagedDir() {
 void StagedDir::commit() {
   std::error_code ec;
   const bool empty_or_missing =
-      !fs::exists(target_, ec) ||
-      (fs::is_directory(target_, ec) && fs::directory_iterator(target_, ec) == fs::directory_iterator());
+      !fs::exists(target_, ec) || (fs::is_directory(target_, ec) &&
+                                   fs::directory_iterator(target_, ec) == fs::directory_iterator());
   if (empty_or_missing) {
     rename_or_throw(staging_, target_);
     committed_ = true;

@@ -283,7 +283,6 @@ TEST(ExperimentCli, ShardsFromSlurmAndAPartialMerge) {
   EXPECT_EQ(single.out, "merged 1 directory into " + (dir / "one").string() + ": 18 runs\n");
 }
 
-
 namespace report_checks {
 
 /// Every entry under `dir` with its bytes (files) or kind.
@@ -318,9 +317,12 @@ TEST(ExperimentCli, ReportRefusesRowsThatLieAndNamesMissingRuns) {
   const auto config = dir / "small.yaml";
   io::write_file_atomic(config, kReportConfig);
   const auto results = dir / "results";
-  ASSERT_EQ(run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status, 0);
+  ASSERT_EQ(
+      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status,
+      0);
   const std::string runs = read(results / kRunsFile);
-  const std::string first = runs.substr(runs.find('\n') + 1, runs.find('\n', runs.find('\n') + 1) - runs.find('\n'));
+  const std::string first =
+      runs.substr(runs.find('\n') + 1, runs.find('\n', runs.find('\n') + 1) - runs.find('\n'));
   const std::string id = first.substr(0, first.find(','));
 
   // A duplicated row (the report would count 4 runs of 3).
@@ -356,11 +358,13 @@ TEST(ExperimentCli, ReportRefusesRowsThatLieAndNamesMissingRuns) {
   EXPECT_TRUE(o.err.starts_with("hullinspect: " + (shard / kRunsFile).string() +
                                 ": 9 of the experiment's 18 runs are missing (run "))
       << o.err;
-  EXPECT_TRUE(o.err.ends_with(" and 6 more): finish them with --resume or merge the shards, or "
-                              "pass --partial\n"))
+  EXPECT_TRUE(
+      o.err.ends_with(" and 6 more): finish them with --resume or merge the shards, or "
+                      "pass --partial\n"))
       << o.err;
   EXPECT_FALSE(std::filesystem::exists(report));
-  o = run_cli({"report", shard.string(), "--out", report.string(), "--no-figures", "--partial"}, dir);
+  o = run_cli({"report", shard.string(), "--out", report.string(), "--no-figures", "--partial"},
+              dir);
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.err, "hullinspect: " + shard.string() +
                        ": partial report: 9 of the experiment's 18 runs missing\n");
@@ -376,21 +380,28 @@ TEST(ExperimentCli, ReportIsAllOrNothing) {
   const auto config = dir / "small.yaml";
   io::write_file_atomic(config, kReportConfig);
   const auto results = dir / "results";
-  ASSERT_EQ(run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status, 0);
+  ASSERT_EQ(
+      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status,
+      0);
 
   // A Python that fails: nothing is written, and an earlier report is left as it was.
   const auto report = dir / "report";
-  Outcome o = run_cli({"report", results.string(), "--out", report.string(), "--python", "/bin/false"}, dir);
+  Outcome o = run_cli(
+      {"report", results.string(), "--out", report.string(), "--python", "/bin/false"}, dir);
   EXPECT_EQ(o.status, 1);
-  EXPECT_TRUE(o.err.starts_with("hullinspect: --python: plotting failed: /bin/false exited with "
-                                "status 1 (is Debian's python3-matplotlib installed?"))
+  EXPECT_TRUE(
+      o.err.starts_with("hullinspect: --python: plotting failed: /bin/false exited with "
+                        "status 1 (is Debian's python3-matplotlib installed?"))
       << o.err;
   EXPECT_EQ(count_lines(o.err), 1);
   EXPECT_FALSE(std::filesystem::exists(report));
-  ASSERT_EQ(run_cli({"report", results.string(), "--out", report.string(), "--no-figures"}, dir).status, 0);
+  ASSERT_EQ(
+      run_cli({"report", results.string(), "--out", report.string(), "--no-figures"}, dir).status,
+      0);
   const auto before = contents(report);
-  write_script(dir / "fail.sh", "echo 'Traceback (most recent call last):' >&2\n"
-                                "echo 'ValueError: no curves' >&2\nexit 3\n");
+  write_script(dir / "fail.sh",
+               "echo 'Traceback (most recent call last):' >&2\n"
+               "echo 'ValueError: no curves' >&2\nexit 3\n");
   o = run_cli({"report", results.string(), "--out", report.string(), "--python",
                (dir / "fail.sh").string()},
               dir);
@@ -413,7 +424,8 @@ TEST(ExperimentCli, ReportIsAllOrNothing) {
 
   // SIGTERM while the Python runs: the child is stopped, nothing is written, and hullinspect ends
   // by the signal.
-  write_script(dir / "wait.sh", "echo $$ > '" + (dir / "child.pid").string() + "'\nexec sleep 600\n");
+  write_script(dir / "wait.sh",
+               "echo $$ > '" + (dir / "child.pid").string() + "'\nexec sleep 600\n");
   const pid_t pid = start_cli({"report", results.string(), "--out", (dir / "fresh").string(),
                                "--python", (dir / "wait.sh").string()},
                               dir);
@@ -436,7 +448,8 @@ TEST(ExperimentCli, ReportIsAllOrNothing) {
     largest_other = std::max(largest_other, read(report / f).size());
   }
   const std::size_t blocks = largest_other / 512 + 1;
-  ASSERT_GT(read(report / "report.md").size(), blocks * 512) << "report.md must be the largest file";
+  ASSERT_GT(read(report / "report.md").size(), blocks * 512)
+      << "report.md must be the largest file";
   const std::string command = "trap '' XFSZ; ulimit -f " + std::to_string(blocks) + "; exec '" +
                               cli_path() + "' report '" + results.string() + "' --out '" +
                               sized.string() + "' --no-figures > /dev/null 2> '" +
@@ -453,7 +466,9 @@ TEST(ExperimentCli, AMergeThatHitsAFullDiskLeavesNoDirectory) {
   const auto config = dir / "small.yaml";
   io::write_file_atomic(config, kReportConfig);
   const auto results = dir / "results";
-  ASSERT_EQ(run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status, 0);
+  ASSERT_EQ(
+      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status,
+      0);
   const auto merged = dir / "merged";
   const std::string command = "trap '' XFSZ; ulimit -f 1; exec '" + cli_path() + "' merge '" +
                               results.string() + "' --out '" + merged.string() +

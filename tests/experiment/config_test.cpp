@@ -309,7 +309,8 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "bad.yaml:2: sweeps[0].parameter: has no effect with 'prior:' (the prior file replaces the "
        "map it would shape); remove one of them"},
       {"prior: p.txt\nscenarios: [{name: a, p_c: 0.1, p_fp: 0.2}]\n",
-       "bad.yaml:2: scenarios[0].p_fp: has no effect with 'prior:' (the prior file replaces the map "
+       "bad.yaml:2: scenarios[0].p_fp: has no effect with 'prior:' (the prior file replaces the "
+       "map "
        "it would shape); remove one of them"},
       {"truth: t.txt\nscenarios:\n  - {name: a, p_tp: 0.5}\n  - {name: b, p_c: 0.1}\n",
        "bad.yaml:4: scenarios[1].p_c: has no effect with 'truth:' (the truth file replaces the map "

@@ -22,7 +22,9 @@ using testing::kSmallConfig;
 using testing::read;
 using testing::ScratchDir;
 
-ExperimentPlan small_plan() { return ExperimentPlan(parse_config(kSmallConfig, "small.yaml", ".")); }
+ExperimentPlan small_plan() {
+  return ExperimentPlan(parse_config(kSmallConfig, "small.yaml", "."));
+}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;
@@ -121,9 +123,9 @@ TEST_F(RowCheck, ARowThatLiesIsRefusedWithItsReason) {
   ASSERT_EQ(hull, 300);
   ASSERT_EQ(field(row, h, "complete"), "1");
 
-  EXPECT_EQ(run_problem(with(row, h, "p_tp", "9")),
-            fmt::format("p_tp is '9' but run {} of this experiment has '{}'", id,
-                        field(row, h, "p_tp")));
+  EXPECT_EQ(
+      run_problem(with(row, h, "p_tp", "9")),
+      fmt::format("p_tp is '9' but run {} of this experiment has '{}'", id, field(row, h, "p_tp")));
   EXPECT_EQ(run_problem(with(row, h, "T_c", "1000000000")),
             fmt::format("T_c must be an integer in [0, {}] (got '1000000000')", limit));
   EXPECT_EQ(run_problem(with(row, h, "hull_cells", "301")),
@@ -152,12 +154,13 @@ TEST_F(RowCheck, ARowThatLiesIsRefusedWithItsReason) {
   EXPECT_EQ(run_problem(with(row, h, "failed_uavs", "3")).substr(0, 37),
             "failed_uavs must be an integer in [0,");
   const std::string many = std::to_string(10 * steps);
-  EXPECT_TRUE(run_problem(with(row, h, "hovers", many))
-                  .starts_with("moves + hovers + steps_transit is "))
+  EXPECT_TRUE(
+      run_problem(with(row, h, "hovers", many)).starts_with("moves + hovers + steps_transit is "))
       << run_problem(with(row, h, "hovers", many));
   EXPECT_TRUE(run_problem(with(row, h, "steps_z1", many)).starts_with("steps_z1 + steps_z2 is "));
-  EXPECT_EQ(run_problem(with(row, h, "bound_T_c", "100000")),
-            fmt::format("bound_T_c is 100000 but bound_T_m is only {}", field(row, h, "bound_T_m")));
+  EXPECT_EQ(
+      run_problem(with(row, h, "bound_T_c", "100000")),
+      fmt::format("bound_T_c is 100000 but bound_T_m is only {}", field(row, h, "bound_T_m")));
   EXPECT_EQ(run_problem(with(row, h, "failures", "at=3")),
             fmt::format("failures is 'at=3' but run {} of this experiment has '{}'", id,
                         field(row, h, "failures")));
@@ -189,8 +192,9 @@ TEST_F(RowCheck, SamplesThatCannotBeCountsAreRefused) {
 
 TEST_F(RowCheck, ARunTwiceInAFileIsRefusedAndAMergeOfBadRowsWritesNothing) {
   ScratchDir copy("copy"), out("out");
-  std::filesystem::copy(*dir_, copy.path(), std::filesystem::copy_options::overwrite_existing |
-                                                       std::filesystem::copy_options::recursive);
+  std::filesystem::copy(
+      *dir_, copy.path(),
+      std::filesystem::copy_options::overwrite_existing | std::filesystem::copy_options::recursive);
   const std::string runs = read(copy / kRunsFile);
   const auto rows = lines_of(runs);
   io::write_file_atomic(copy / kRunsFile, runs + rows[0] + "\n");
@@ -200,8 +204,8 @@ TEST_F(RowCheck, ARunTwiceInAFileIsRefusedAndAMergeOfBadRowsWritesNothing) {
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              fmt::format("{}:98: run {} appears twice (also on line 2)", (copy / kRunsFile).string(),
-                          rows[0].substr(0, rows[0].find(','))));
+              fmt::format("{}:98: run {} appears twice (also on line 2)",
+                          (copy / kRunsFile).string(), rows[0].substr(0, rows[0].find(','))));
   }
   EXPECT_FALSE(std::filesystem::exists(out.path()));
   // A sample of -3 (curves.csv would then show a spread at t = 0).
@@ -210,7 +214,8 @@ TEST_F(RowCheck, ARunTwiceInAFileIsRefusedAndAMergeOfBadRowsWritesNothing) {
   const auto sample_rows = lines_of(samples);
   const auto h = samples_header(plan_->config().curve);
   std::string bad = samples;
-  bad.replace(bad.find(sample_rows[0]), sample_rows[0].size(), with(sample_rows[0], h, "known_0", "-3"));
+  bad.replace(bad.find(sample_rows[0]), sample_rows[0].size(),
+              with(sample_rows[0], h, "known_0", "-3"));
   io::write_file_atomic(copy / kSamplesFile, bad);
   try {
     merge_results({copy.path()}, out.path());
@@ -223,8 +228,7 @@ TEST_F(RowCheck, ARunTwiceInAFileIsRefusedAndAMergeOfBadRowsWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(out.path()));
   // Nothing is left beside the output either (the staging directory is removed).
   for (const auto& e : std::filesystem::directory_iterator(out.path().parent_path())) {
-    EXPECT_EQ(e.path().filename().string().find(".staging-"), std::string::npos)
-        << e.path();
+    EXPECT_EQ(e.path().filename().string().find(".staging-"), std::string::npos) << e.path();
   }
 }
 
