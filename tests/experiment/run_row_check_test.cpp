@@ -232,5 +232,31 @@ TEST_F(RowCheck, ARunTwiceInAFileIsRefusedAndAMergeOfBadRowsWritesNothing) {
   }
 }
 
+TEST_F(RowCheck, ResumeRefusesARowThatContradictsItself) {
+  ScratchDir copy("resume");
+  std::filesystem::copy(
+      *dir_, copy.path(),
+      std::filesystem::copy_options::overwrite_existing | std::filesystem::copy_options::recursive);
+  const std::string runs = read(copy / kRunsFile);
+  const auto [row, samples] = busy_row();
+  const auto h = runs_header();
+  const std::string steps = field(row, h, "steps");
+  std::string bad = runs;
+  bad.replace(bad.find(row), row.size(), with(row, h, "steps", "0"));
+  io::write_file_atomic(copy / kRunsFile, bad);
+  RunnerOptions options;
+  options.jobs = 1;
+  options.resume = true;
+  try {
+    run_experiment(*plan_, copy.path(), options);
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(std::string(e.what()).ends_with(
+        fmt::format("steps is 0 but a complete mission stops at T_m = {}", field(row, h, "T_m"))))
+        << e.what();
+  }
+  EXPECT_EQ(read(copy / kRunsFile), bad) << "the refused results were changed";
+}
+
 }  // namespace
 }  // namespace hullinspect::experiment
