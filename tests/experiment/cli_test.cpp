@@ -304,6 +304,16 @@ bool staging_left(const std::filesystem::path& dir) {
   return false;
 }
 
+/// Runs the experiment of kReportConfig (18 runs) from `config` into `results`.
+bool run_small_experiment(const ScratchDir& dir, const std::filesystem::path& config,
+                          const std::filesystem::path& results) {
+  io::write_file_atomic(config, kReportConfig);
+  const Outcome o =
+      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir);
+  EXPECT_EQ(o.status, 0) << o.err;
+  return o.status == 0;
+}
+
 void write_script(const std::filesystem::path& path, const std::string& body) {
   io::write_file_atomic(path, "#!/bin/sh\n" + body);
   std::filesystem::permissions(path, std::filesystem::perms::owner_all);
@@ -315,11 +325,8 @@ TEST(ExperimentCli, ReportRefusesRowsThatLieAndNamesMissingRuns) {
   using report_checks::contents;
   ScratchDir dir("report-rows");
   const auto config = dir / "small.yaml";
-  io::write_file_atomic(config, kReportConfig);
   const auto results = dir / "results";
-  ASSERT_EQ(
-      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status,
-      0);
+  ASSERT_TRUE(report_checks::run_small_experiment(dir, config, results));
   const std::string runs = read(results / kRunsFile);
   const std::string first =
       runs.substr(runs.find('\n') + 1, runs.find('\n', runs.find('\n') + 1) - runs.find('\n'));
@@ -378,11 +385,8 @@ TEST(ExperimentCli, ReportIsAllOrNothing) {
   using report_checks::write_script;
   ScratchDir dir("report-staging");
   const auto config = dir / "small.yaml";
-  io::write_file_atomic(config, kReportConfig);
   const auto results = dir / "results";
-  ASSERT_EQ(
-      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status,
-      0);
+  ASSERT_TRUE(report_checks::run_small_experiment(dir, config, results));
 
   // A Python that fails: nothing is written, and an earlier report is left as it was.
   const auto report = dir / "report";
@@ -464,11 +468,8 @@ TEST(ExperimentCli, ReportIsAllOrNothing) {
 TEST(ExperimentCli, AMergeThatHitsAFullDiskLeavesNoDirectory) {
   ScratchDir dir("merge-full");
   const auto config = dir / "small.yaml";
-  io::write_file_atomic(config, kReportConfig);
   const auto results = dir / "results";
-  ASSERT_EQ(
-      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir).status,
-      0);
+  ASSERT_TRUE(report_checks::run_small_experiment(dir, config, results));
   const auto merged = dir / "merged";
   const std::string command = "trap '' XFSZ; ulimit -f 1; exec '" + cli_path() + "' merge '" +
                               results.string() + "' --out '" + merged.string() +
