@@ -14,14 +14,24 @@ namespace hullinspect::experiment {
 
 namespace {
 
+/// The position of each runs.csv column (built once: every stored row is looked up through it).
+const std::unordered_map<std::string, std::size_t>& runs_columns() {
+  static const auto columns = [] {
+    std::unordered_map<std::string, std::size_t> out;
+    const auto header = runs_header();
+    for (std::size_t k = 0; k < header.size(); ++k) out.emplace(header[k], k);
+    return out;
+  }();
+  return columns;
+}
+
 /// A runs.csv row's outcome fields by column name, once each is known to be an integer in range.
 class Outcome {
  public:
-  explicit Outcome(const std::vector<std::string>& fields) {
-    const auto header = runs_header();
-    for (std::size_t k = 0; k < header.size(); ++k) text_.emplace(header[k], fields[k]);
+  explicit Outcome(const std::vector<std::string>& fields) : fields_(fields) {}
+  const std::string& text(const std::string& name) const {
+    return fields_[runs_columns().at(name)];
   }
-  const std::string& text(const std::string& name) const { return text_.at(name); }
   /// The field parsed in [0, max]; an empty optional field (T_c, T_m) gives nothing.
   std::optional<long long> parse(const std::string& name, long long max) const {
     const std::string& v = text(name);
@@ -37,7 +47,7 @@ class Outcome {
   }
 
  private:
-  std::unordered_map<std::string, std::string> text_;
+  const std::vector<std::string>& fields_;
 };
 
 /// The outcome checks: ranges first, then the relations the simulator guarantees (SPEC §4: the
@@ -121,7 +131,7 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
 
 std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::string_view line) {
   const auto fields = split_csv_line(line);
-  const auto header = runs_header();
+  static const auto header = runs_header();
   if (!fields || fields->size() != header.size()) return "malformed row";
   const auto expected = run_parameter_fields(plan, run);
   for (std::size_t k = 0; k < expected.size(); ++k) {
@@ -147,16 +157,17 @@ std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::
 std::string samples_row_problem(const ExperimentPlan& plan, const RunKey& run,
                                 std::string_view runs_line, std::string_view samples_line) {
   const auto fields = split_csv_line(samples_line);
-  const auto header = samples_header(plan.config().curve);
-  if (!fields || fields->size() != header.size()) return "malformed row";
-  if ((*fields)[0] != run.id)
+  const auto times = plan.config().curve.times();
+  if (!fields || fields->size() != 1 + 2 * times.size()) return "malformed row";
+  if ((*fields)[0] != run.id) {
     return fmt::format("run_id is '{}', expected '{}'", (*fields)[0], run.id);
-  const Outcome o(*split_csv_line(runs_line));
+  }
+  const auto run_fields = *split_csv_line(runs_line);
+  const Outcome o(run_fields);
   const auto t_c = o.parse("T_c", kMaxStoredCount);
   const auto t_m = o.parse("T_m", kMaxStoredCount);
   const long long hull_cells = o.get("hull_cells");
   const long long corroded = o.get("corroded_cells");
-  const auto times = plan.config().curve.times();
   // One series per half of the row: inspected corroded cells, then known hull cells. Each only
   // grows, stays below its total before its first time (T_c, T_m) and equals it from then on.
   struct Series {
@@ -164,28 +175,30 @@ std::string samples_row_problem(const ExperimentPlan& plan, const RunKey& run,
     long long total;
     std::optional<long long> reached;
     const char* first_time;
+    const char* column;
   };
-  for (const Series s :
-       {Series{1, corroded, t_c, "T_c"}, Series{1 + times.size(), hull_cells, t_m, "T_m"}}) {
+  for (const Series s : {Series{1, corroded, t_c, "T_c", "inspected"},
+                         Series{1 + times.size(), hull_cells, t_m, "T_m", "known"}}) {
     long long previous = 0;
     for (std::size_t i = 0; i < times.size(); ++i) {
-      const std::string& name = header[s.first + i];
+      // The column's name (samples_header's), made only for a message.
+      const auto name = [&] { return fmt::format("{}_{}", s.column, times[i]); };
       long long v = 0;
       try {
         v = parse_integer<long long>((*fields)[s.first + i], 0, s.total);
       } catch (const NumberError& e) {
-        return fmt::format("{} {}", name, e.what());
+        return fmt::format("{} {}", name(), e.what());
       }
       if (v < previous) {
-        return fmt::format("{} is {} but the count was already {} (it never decreases)", name, v,
+        return fmt::format("{} is {} but the count was already {} (it never decreases)", name(), v,
                            previous);
       }
       previous = v;
       const bool after = s.reached && times[i] >= *s.reached;
       if (after != (v == s.total)) {
-        return after ? fmt::format("{} is {} but from {} = {} on it is {}", name, v, s.first_time,
+        return after ? fmt::format("{} is {} but from {} = {} on it is {}", name(), v, s.first_time,
                                    *s.reached, s.total)
-                     : fmt::format("{} is {}, the total, but {} is {}", name, v, s.first_time,
+                     : fmt::format("{} is {}, the total, but {} is {}", name(), v, s.first_time,
                                    s.reached ? std::to_string(*s.reached) : "empty");
       }
     }
