@@ -221,6 +221,15 @@ TEST(ExperimentCli, ReportWritesEveryTableAndFigure) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(bad.err, "hullinspect: --labels: 'zz' is not an algorithm of the report\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+
+  // A new report into the same directory replaces the earlier figures whole: SVG only now.
+  const Outcome again =
+      run_cli({"report", results.string(), "--out", report.string(), "--format", "svg"}, dir);
+  ASSERT_EQ(again.status, 0) << again.err;
+  for (const auto& f : std::filesystem::directory_iterator(report / "figures")) {
+    EXPECT_EQ(f.path().extension(), ".svg") << f.path();
+  }
+  EXPECT_TRUE(std::filesystem::exists(report / "figures" / "fig6_dense.svg"));
 }
 
 TEST(ExperimentCli, ErrorsAreOneLineWithExitStatus2) {
