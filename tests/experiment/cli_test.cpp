@@ -435,24 +435,27 @@ TEST(ExperimentCli, ReportIsAllOrNothing) {
                        " was stopped (raise --python-timeout, or pass --no-figures)\n");
   EXPECT_EQ(contents(report), before);
 
-  // SIGTERM while the Python runs: the child is stopped, nothing is written, and hullinspect ends
-  // by the signal.
-  write_script(dir / "wait.sh",
-               "echo $$ > '" + (dir / "child.pid").string() + "'\nexec sleep 600\n");
-  const pid_t pid = start_cli({"report", results.string(), "--out", (dir / "fresh").string(),
-                               "--python", (dir / "wait.sh").string()},
-                              dir);
-  for (int i = 0; i < 1000 && read_if_exists(dir / "child.pid").empty(); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  // SIGINT or SIGTERM while the Python runs: the child is stopped, nothing is written, and
+  // hullinspect ends by the signal.
+  for (const int signal : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(signal);
+    const auto pid_file = dir / ("child-" + std::to_string(signal) + ".pid");
+    write_script(dir / "wait.sh", "echo $$ > '" + pid_file.string() + "'\nexec sleep 600\n");
+    const pid_t pid = start_cli({"report", results.string(), "--out", (dir / "fresh").string(),
+                                 "--python", (dir / "wait.sh").string()},
+                                dir);
+    for (int i = 0; i < 1000 && read_if_exists(pid_file).empty(); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    const std::string child = read_if_exists(pid_file);
+    ASSERT_FALSE(child.empty()) << "the plotting child never started";
+    kill(pid, signal);
+    o = wait_cli(pid, dir);
+    EXPECT_EQ(o.status, -signal);
+    EXPECT_NE(kill(std::stoi(child), 0), 0) << "the child outlived hullinspect";
+    EXPECT_FALSE(std::filesystem::exists(dir / "fresh"));
+    EXPECT_FALSE(staging_left(dir.path()));
   }
-  const std::string child = read_if_exists(dir / "child.pid");
-  ASSERT_FALSE(child.empty()) << "the plotting child never started";
-  kill(pid, SIGTERM);
-  o = wait_cli(pid, dir);
-  EXPECT_EQ(o.status, -SIGTERM);
-  EXPECT_NE(kill(std::stoi(child), 0), 0) << "the child outlived hullinspect";
-  EXPECT_FALSE(std::filesystem::exists(dir / "fresh"));
-  EXPECT_FALSE(staging_left(dir.path()));
 
   // A full disk (a file size limit) while writing: nothing of the new report is left.
   const auto sized = dir / "sized";
