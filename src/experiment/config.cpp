@@ -129,6 +129,47 @@ void read_user_maps(const YamlFields& f, const YAML::Node& root,
   defects("truth-defects", "truth", c.truth_defects_path, c.maps.truth);
 }
 
+/// `prior:` replaces the generated C′ and `truth:` the generated C (docs/model.md): a scenario or
+/// sweep parameter that only shapes a replaced map would label runs with a value that had no
+/// effect.
+void refuse_replaced_parameters(const YamlFields& f, const YAML::Node& root) {
+  const bool prior = static_cast<bool>(root["prior"]);
+  const bool truth = static_cast<bool>(root["truth"]);
+  const auto replaced_by = [&](std::string_view key) -> std::string_view {
+    if (prior && (key == "p_tp" || key == "p_fp")) return "prior";
+    const bool corrosion = key == "zones" || key.ends_with("p_c") || key.ends_with("l_c");
+    if (truth && corrosion) return "truth";
+    return {};
+  };
+  const auto fail = [&](const YAML::Node& node, const std::string& key, std::string_view map) {
+    f.fail(node, key,
+           fmt::format("has no effect with '{}:' (the {} file replaces the map it would shape); "
+                       "remove one of them",
+                       map, map));
+  };
+  if (!prior && !truth) return;
+  if (const auto scenarios = root["scenarios"]; scenarios && scenarios.IsSequence()) {
+    for (std::size_t i = 0; i < scenarios.size(); ++i) {
+      if (!scenarios[i].IsMap()) continue;
+      for (const auto& entry : scenarios[i]) {
+        const auto key = entry.first.as<std::string>();
+        if (const auto map = replaced_by(key); !map.empty()) {
+          fail(entry.second, fmt::format("scenarios[{}].{}", i, key), map);
+        }
+      }
+    }
+  }
+  if (const auto sweeps = root["sweeps"]; sweeps && sweeps.IsSequence()) {
+    for (std::size_t i = 0; i < sweeps.size(); ++i) {
+      const auto parameter = sweeps[i].IsMap() ? sweeps[i]["parameter"] : YAML::Node();
+      if (!parameter || !parameter.IsScalar()) continue;
+      if (const auto map = replaced_by(parameter.Scalar()); !map.empty()) {
+        fail(parameter, fmt::format("sweeps[{}].parameter", i), map);
+      }
+    }
+  }
+}
+
 void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
                ExperimentConfig& c) {
   int width = 0;
@@ -144,6 +185,14 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   const YAML::Node h = root["hull"];
   const int hull_line = h ? YamlFields::line(h) : 0;
   if (h && h.IsMap()) {
+    // A mesh hull's grid and cell size come from the mesh: a grid: key would be ignored.
+    for (const char* key : {"width", "height", "cell_size"}) {
+      if (const auto g = root["grid"]; g && g[key]) {
+        f.fail(g[key], std::string("grid.") + key,
+               "cannot be set for a mesh hull (its grid comes from the mesh; set hull.cell-size "
+               "instead)");
+      }
+    }
     read_mesh_hull(f, h, base_dir, c);
   } else if (h) {
     c.hull_spec = f.as_string(h, "hull");
@@ -179,6 +228,12 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
   c.hull_hash =
       stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
+  if (const auto g = root["grid"]; c.hull->geometry() && g && g["cell_size"] &&
+                                   c.cell_size != c.hull->geometry()->cell_size) {
+    f.fail(g["cell_size"], "grid.cell_size",
+           fmt::format("is {} but the hull's geometry has cells of {} m", c.cell_size,
+                       c.hull->geometry()->cell_size));
+  }
   if (c.hull->geometry()) c.cell_size = c.hull->geometry()->cell_size;
   c.hull_width = c.hull->width();
   c.hull_height = c.hull->height();
@@ -304,6 +359,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   }
   if (root["name"]) c.name = f.as_label(root["name"], "name");
   if (root["description"]) c.description = f.as_string(root["description"], "description");
+  refuse_replaced_parameters(f, root);
   read_hull(f, root, base_dir, c);
   detail::read_no_fly(f, root, base_dir, c);
   read_user_maps(f, root, base_dir, c);

@@ -307,6 +307,23 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       {"algorithms:\n  - name: lawnmower\n    options: {partition-seed: [1]}\n",
        "bad.yaml:3: algorithms[0].options.partition-seed: must be a single value"},
       {"s2: [7, 9\n", "bad.yaml:2: invalid YAML: …"},
+      // Values that a replaced map would ignore (the files need not exist: refused first).
+      {"prior: p.txt\nsweeps: [{parameter: p_tp, values: [0.5, 1]}]\n",
+       "bad.yaml:2: sweeps[0].parameter: has no effect with 'prior:' (the prior file replaces the "
+       "map it would shape); remove one of them"},
+      {"prior: p.txt\nscenarios: [{name: a, p_c: 0.1, p_fp: 0.2}]\n",
+       "bad.yaml:2: scenarios[0].p_fp: has no effect with 'prior:' (the prior file replaces the "
+       "map "
+       "it would shape); remove one of them"},
+      {"truth: t.txt\nscenarios:\n  - {name: a, p_tp: 0.5}\n  - {name: b, p_c: 0.1}\n",
+       "bad.yaml:4: scenarios[1].p_c: has no effect with 'truth:' (the truth file replaces the map "
+       "it would shape); remove one of them"},
+      {"truth: t.txt\nsweeps: [{parameter: front_back_p_c, values: [[0.1, 0.2]]}]\n",
+       "bad.yaml:2: sweeps[0].parameter: has no effect with 'truth:' (the truth file replaces the "
+       "map it would shape); remove one of them"},
+      {"hull: {mesh: hull.stl}\ngrid: {width: 7}\n",
+       "bad.yaml:2: grid.width: cannot be set for a mesh hull (its grid comes from the mesh; set "
+       "hull.cell-size instead)"},
   };
   for (const auto& c : cases) {
     const std::string got = error_of(c.yaml);
