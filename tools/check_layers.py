@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Refuses an #include of a module that is not below the including module.
 
 The modules and what each uses are declared once, in CMakeLists.txt (hullinspect_module(NAME USES
