@@ -161,7 +161,8 @@ grid::Grid<std::int8_t> session_prior(const py::object& prior, const world::Hull
 }
 
 std::unique_ptr<python::Session> make_session(const std::vector<std::string>& words,
-                                              const HullPtr& hull_arg, const py::object& prior) {
+                                              const HullPtr& hull_arg, const py::object& prior,
+                                              bool keep_trace) {
   const cli::MissionArgs args = python::parse_mission_words(words);
   if (!args.truth.empty() || !args.fail.empty() || args.fail_rate != 0 ||
       args.fail_one_within != 0 || !args.prior.empty()) {
@@ -173,7 +174,8 @@ std::unique_ptr<python::Session> make_session(const std::vector<std::string>& wo
   planners::MissionSpec spec = cli::build_spec(args, *hull);
   auto prior_grid = session_prior(prior, *hull);
   py::gil_scoped_release release;
-  return std::make_unique<python::Session>(hull, std::move(spec), std::move(prior_grid));
+  return std::make_unique<python::Session>(hull, std::move(spec), std::move(prior_grid),
+                                           keep_trace);
 }
 
 std::vector<python::CellReading> readings_from(const py::iterable& items) {
@@ -360,7 +362,9 @@ PYBIND11_MODULE(_core, m) {
         py::arg("description"));
 
   py::class_<python::Session>(m, "Session")
-      .def(py::init(&make_session), py::arg("words"), py::arg("hull"), py::arg("prior"))
+      .def(py::init(&make_session), py::arg("words"), py::arg("hull"), py::arg("prior"),
+           py::arg("keep_trace"))
+      .def("trace", [](const python::Session& s) { return s.trace().dump(); })
       .def(
           "step",
           [](python::Session& s, const py::iterable& readings, const std::vector<int>& failed) {

@@ -189,11 +189,12 @@ class Session:
     every UAV on a plane, exactly the cells expected_readings(failed) lists — and returns the next
     action per UAV ("N", "S", "E", "W", "hover", "change"), or [] once the mission has finished.
     `failed` lists UAVs that failed before carrying out the previous actions (they sense nothing
-    from then on). Bad readings raise ValueError and change nothing.
+    from then on). Bad readings raise ValueError and change nothing. With keep_trace=True,
+    trace() gives the mission so far as a Trace, as run_mission records one.
     """
 
     def __init__(self, algorithm, hull=None, prior=None, uavs=_DEFAULTS["uavs"], s2=_DEFAULTS["s2"],
-                 options=None, **params):
+                 options=None, keep_trace=False, **params):
         for key in ("scenario", "seed"):
             if key in params:
                 raise ValueError(f"Session: {key} does not apply to a live session (the readings "
@@ -201,7 +202,7 @@ class Session:
         hull_object, hull_path = _hull_arguments(hull)
         words = _words(algorithm, uavs, s2, _DEFAULTS["seed"], _DEFAULTS["scenario"], hull_path,
                        options, params)
-        self._session = _core.Session(words, hull_object, prior)
+        self._session = _core.Session(words, hull_object, prior, bool(keep_trace))
 
     def step(self, readings, failed=()):
         return self._session.step(readings, [int(k) for k in failed])
@@ -224,3 +225,7 @@ class Session:
     def result(self):
         """The mission so far as a MissionResult (T_c and c count the corrosion reported)."""
         return MissionResult(self._session.result())
+
+    def trace(self):
+        """The mission so far as a Trace (needs keep_trace=True; its truth is the readings)."""
+        return trace_from_text(self._session.trace())

@@ -97,6 +97,20 @@ class Traces(unittest.TestCase):
                          int(self.trace.series.inspected.iloc[-1]))
         self.assertEqual(len(self.trace.series), len(self.result.m))
 
+    def test_session_records_the_same_trace(self):
+        inst = hullinspect.make_instance(None, 3, scenario="imperfect")
+        session = hullinspect.Session("part-tsp", prior=inst.prior, uavs=3, keep_trace=True)
+        actions = None
+        while actions is None or actions:
+            actions = session.step([(x, y, z, inst.truth[y][x] == 1)
+                                    for (x, y, z) in session.expected_readings()])
+        live = session.trace()
+        columns = ["t", "k", "x", "y", "z", "transit_left", "active", "mode"]
+        pd.testing.assert_frame_equal(live.uavs[columns], self.trace.uavs[columns])
+        pd.testing.assert_frame_equal(live.map_changes, self.trace.map_changes)
+        with self.assertRaisesRegex(ValueError, r"^trace: this Session records no trace"):
+            hullinspect.Session("part-tsp").trace()
+
     def test_trace_cannot_replace_an_input(self):
         hull = os.path.join(self.tmp.name, "hull.txt")
         with open(hull, "w") as f:
