@@ -3,8 +3,8 @@ the `hullinspect` CLI with the project's CMakeLists.txt and puts them into the p
 
 The version is CMakeLists.txt's `project(... VERSION x.y.z)`, the one place it is written. The CMake
 build directory is HULLINSPECT_BUILD_DIR, default build/python-package in the checkout, and is kept
-between builds, so a rebuild compiles only what changed (and ccache, when CMAKE_CXX_COMPILER_LAUNCHER
-names it, serves the rest).
+between builds, so a rebuild compiles only what changed (and ccache, when
+CMAKE_CXX_COMPILER_LAUNCHER names it, serves the rest).
 """
 
 import os

@@ -14,8 +14,9 @@ text at least 7 pt at that size; no titles: the report's captions say what each 
   fig8_s2-<s2>_n<n>          mean c(t) per sweep (line style: swept value) and per plain scenario
                              (Fig. 8); only when the experiment has sweeps
 Every planner has one colour in every figure (PLANNER_COLOURS, the Okabe–Ito palette, which
-readers with colour-vision deficiencies tell apart); another algorithm takes a palette colour by a hash of its
-name, the next one along when a planner of the same figure has that one. Uses only Debian's python3-matplotlib and python3-numpy.
+readers with colour-vision deficiencies tell apart); another algorithm takes a palette colour by a
+hash of its name, the next one along when a planner of the same figure has that one. Uses only
+Debian's python3-matplotlib and python3-numpy.
 """
 
 import argparse

@@ -126,7 +126,12 @@ def run_experiment(config, jobs=_DEFAULTS["jobs"], out=None, resume=False):
     else:
         kind, value = "preset", str(config)
     if out is not None:
-        _core.run_experiment(kind, value, jobs, os.fspath(out), bool(resume))
+        out = os.fspath(out)
+        # The runner's own refusal names the CLI's --resume and --out.
+        if not resume and os.path.isdir(out) and os.listdir(out):
+            raise ValueError(f"out: {out}: is not empty: pass resume=True to continue the "
+                             "experiment in it, or choose another out")
+        _core.run_experiment(kind, value, jobs, out, bool(resume))
         return _read_runs(os.path.join(os.fspath(out), "runs.csv"))
     tmp = tempfile.mkdtemp(prefix="hullinspect-")
     try:

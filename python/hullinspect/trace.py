@@ -123,7 +123,8 @@ class Trace:
 
         frames = self.data["frames"]
         n, fields = self.uav_count, len(self.uav_fields)
-        values = np.asarray([f["u"] for f in frames], dtype=np.int64).reshape(len(frames), n, fields)
+        values = np.asarray([f["u"] for f in frames], dtype=np.int64)
+        values = values.reshape(len(frames), n, fields)
         t = np.repeat(np.asarray([f["t"] for f in frames], dtype=np.int64), n)
         out = pd.DataFrame({"t": t, "k": np.tile(np.arange(n, dtype=np.int64), len(frames))})
         for i, name in enumerate(self.uav_fields):

@@ -1,6 +1,6 @@
 """The Python module against the CLI: same inputs, same results; errors as ValueError with the
-CLI's message (naming the Python keyword); Python planners registered and run like built-in ones; a live Session fed with
-readings of a known truth replays the simulated mission step for step."""
+CLI's message (naming the Python keyword); Python planners registered and run like built-in ones;
+a live Session fed with readings of a known truth replays the simulated mission step for step."""
 
 import csv
 import json
@@ -211,7 +211,9 @@ class Experiments(unittest.TestCase):
         self.assertEqual(set(frame["algorithm"]), {"lawnmower", "part-tsp"})
 
     def test_preset_name(self):
-        message = cli_error("experiment", "--preset", "no-such-preset", "--out", "/tmp/x")
+        with tempfile.TemporaryDirectory() as tmp:
+            message = cli_error("experiment", "--preset", "no-such-preset", "--out",
+                                os.path.join(tmp, "out"))
         with self.assertRaises(ValueError) as caught:
             hullinspect.run_experiment("no-such-preset")
         self.assertEqual(str(caught.exception), python_message(message, keyword="config"))

@@ -22,8 +22,8 @@ from cli_messages import python_message
 
 CLI = os.environ.get("HULLINSPECT_CLI", "hullinspect")
 SMALL = {"hull": "rectangle", "grid": {"width": 30, "height": 10}, "scenarios": ["perfect"],
-         "uavs": [2], "algorithms": ["lawnmower", {"name": "part-tsp", "options": {"r1": 3}}], "instances": 2,
-         "time_limit": 60, "curve": {"step": 10, "end": 50}}
+         "uavs": [2], "algorithms": ["lawnmower", {"name": "part-tsp", "options": {"r1": 3}}],
+         "instances": 2, "time_limit": 60, "curve": {"step": 10, "end": 50}}
 
 
 def cli(*args):
@@ -176,7 +176,7 @@ class ResultFrames(unittest.TestCase):
     def test_resume_runs_the_same_experiment_again(self):
         again = hullinspect.run_experiment(SMALL, jobs=1, out=self.out, resume=True)
         self.assertEqual([r["run_id"] for r in again], [r["run_id"] for r in self.rows])
-        with self.assertRaisesRegex(ValueError, "is not empty"):
+        with self.assertRaisesRegex(ValueError, "^out: .*: is not empty: pass resume=True"):
             hullinspect.run_experiment(SMALL, jobs=1, out=self.out)
 
 
@@ -256,7 +256,8 @@ class InputChecks(unittest.TestCase):
     def test_run_experiment_jobs_in_the_cli_range(self):
         for jobs in (-1, 100000, 2.0, "2"):
             with self.subTest(jobs=jobs):
-                with self.assertRaisesRegex(ValueError, r"^jobs: must be an integer in \[0, 4096\]"):
+                with self.assertRaisesRegex(ValueError,
+                                            r"^jobs: must be an integer in \[0, 4096\]"):
                     hullinspect.run_experiment(SMALL, jobs=jobs)
         done = cli("experiment", "--config", "/nonexistent.yaml", "--jobs", "4097", "--out", "x")
         self.assertIn("--jobs: ", done.stderr)
