@@ -180,6 +180,9 @@ std::unique_ptr<python::Session> make_session(const std::vector<std::string>& wo
 
 std::vector<python::CellReading> readings_from(const py::iterable& items) {
   std::vector<python::CellReading> out;
+  const py::module_ numpy = py::module_::import("numpy");
+  const py::object numpy_bool = numpy.attr("bool_");
+  const py::object numpy_integer = numpy.attr("integer");
   std::size_t j = 0;
   for (const auto& item : items) {
     const auto seq = py::reinterpret_borrow<py::sequence>(item);
@@ -190,11 +193,13 @@ std::vector<python::CellReading> readings_from(const py::iterable& items) {
     // True/False (Python or numpy bools) or the integers 0/1: text such as 'no' is refused
     // rather than read as corroded.
     const py::handle corroded = seq[3];
-    const bool is_bool = py::isinstance<py::bool_>(corroded) ||
-                         py::isinstance(corroded, py::module_::import("numpy").attr("bool_"));
+    const bool is_bool =
+        py::isinstance<py::bool_>(corroded) || py::isinstance(corroded, numpy_bool);
+    const bool is_integer =
+        py::isinstance<py::int_>(corroded) || py::isinstance(corroded, numpy_integer);
     const bool is_01 =
-        py::isinstance<py::int_>(corroded) && (corroded.cast<py::int_>().equal(py::int_(0)) ||
-                                               corroded.cast<py::int_>().equal(py::int_(1)));
+        is_integer && (py::int_(py::reinterpret_borrow<py::object>(corroded)).equal(py::int_(0)) ||
+                       py::int_(py::reinterpret_borrow<py::object>(corroded)).equal(py::int_(1)));
     if (!is_bool && !is_01) {
       throw Error(fmt::format("readings[{}]: corroded must be True or False, got {}", j,
                               py::repr(corroded).cast<std::string>()));

@@ -220,7 +220,7 @@ class InputChecks(unittest.TestCase):
     def test_session_refuses_readings_that_are_not_true_or_false(self):
         session = hullinspect.Session("part-tsp", uavs=2)
         expected = session.expected_readings()
-        for value in ("no", "yes", 2, 0.5, None):
+        for value in ("no", "yes", 2, 0.5, None, np.int8(7)):
             with self.subTest(value=value):
                 bad = [(x, y, z, False) for (x, y, z) in expected]
                 bad[0] = (*expected[0], value)
@@ -228,7 +228,7 @@ class InputChecks(unittest.TestCase):
                                             r"^readings\[0\]: corroded must be True or False"):
                     session.step(bad)
                 self.assertEqual(session.state.t, 0)
-        for value in (False, 0, np.bool_(False)):
+        for value in (False, 0, np.bool_(False), np.int8(0)):
             ok = [(x, y, z, value) for (x, y, z) in expected]
             self.assertEqual(len(hullinspect.Session("part-tsp", uavs=2).step(ok)), 2)
 
