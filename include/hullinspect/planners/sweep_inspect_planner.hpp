@@ -293,9 +293,12 @@ class SweepInspectPlanner final : public Planner {
   static constexpr int kBalancePasses = 3;
   /// plan-prior-tour: the next cell of UAV k's planned z = 1 tour over its prior cells `cells`
   /// that is still to be inspected; the tour is planned from `from` when it has none left or is
-  /// short (at most kExhaustiveTourPoints cells).
+  /// short (at most kReplannedTourCells cells).
   int next_of_tour(int k, grid::Cell from, std::span<const int> cells,
                    const sim::PlannerView& view);
+  /// A tour of more cells is repaired as its cells are seen, not planned anew: re-planning on
+  /// every cell seen costs the cube of the tour's cells.
+  static constexpr std::size_t kReplannedTourCells = 100;
   /// UAV k's prior cells were re-assigned: its next tour is planned anew.
   void forget_tour(int k) {
     uavs_[static_cast<std::size_t>(k)].tour.clear();
