@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -55,6 +56,7 @@ struct Options {
   int repeats = 1;
   bool growth = true;
   bool dtc = false;
+  std::string csv;
 };
 
 std::vector<int> numbers(const std::string& text, const char* option) {
@@ -89,6 +91,8 @@ Options parse(int argc, char** argv) {
       o.repeats = std::max(1, numbers(value(), "--repeats").front());
     } else if (arg == "--dtc") {
       o.dtc = true;
+    } else if (arg == "--csv") {
+      o.csv = value();
     } else if (arg == "--no-growth") {
       o.growth = false;
     } else {
@@ -167,6 +171,23 @@ std::string cell(const Timing& t) {
   return fmt::format("{:.3f}{}", t.seconds, t.complete ? " " : "!");
 }
 
+/// Writes `text` to `path` through a temporary file renamed over it, so that a reader never sees
+/// half of it.
+void write_whole(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  std::FILE* f = std::fopen(temporary.c_str(), "wb");
+  if (f == nullptr) throw std::runtime_error(fmt::format("{}: cannot create", temporary));
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !written) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(fmt::format("{}: cannot write", temporary));
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(fmt::format("{}: cannot rename to {}", temporary, path));
+  }
+}
+
 void growth(const Options& o) {
   const std::vector<world::HullMask> hulls = {
       world::default_hull(), world::load_hull(HULLINSPECT_HULL_325X42),
@@ -178,6 +199,7 @@ void growth(const Options& o) {
              fmt::join(std::vector<int>{hulls[0].cell_count(), hulls[1].cell_count(),
                                         hulls[2].cell_count(), hulls[3].cell_count()},
                        ", "));
+  std::string csv = "planner,scenario,n,area,hull_cells,planner_seconds,complete\n";
   fmt::print("{:<16} {:<10} {:>3} {:>9} {:>9} {:>9} {:>9} {:>7}\n", "planner", "scenario", "n",
              "x1", "x2", "x4", "x8", "slope");
   for (const std::string& algorithm : o.algorithms) {
@@ -189,6 +211,9 @@ void growth(const Options& o) {
           times.push_back(
               median_planner_seconds(spec_for(algorithm, scenario, n, hull), hull, o.repeats));
           seconds.push_back(times.back().seconds);
+          csv += fmt::format("{},{},{},{:.4f},{},{:.6f},{}\n", algorithm, scenario, n,
+                             area[seconds.size() - 1], hull.cell_count(), times.back().seconds,
+                             times.back().complete ? 1 : 0);
         }
         fmt::print("{:<16} {:<10} {:>3} {:>9} {:>9} {:>9} {:>9} {:>7.2f}\n", algorithm, scenario, n,
                    cell(times[0]), cell(times[1]), cell(times[2]), cell(times[3]),
@@ -197,6 +222,7 @@ void growth(const Options& o) {
       }
     }
   }
+  if (!o.csv.empty()) write_whole(o.csv, csv);
 }
 
 void dtc(const Options& o) {
