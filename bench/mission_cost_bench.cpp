@@ -8,8 +8,8 @@
 //   build/release/bench/mission_cost_bench --seeds 10 --uavs 4,8
 //   build/release/bench/mission_cost_bench --algorithms lawnmower,part-tsp,sweep-inspect
 //
-// Columns: missions, CPU ms per mission (mean, median), ratio of the mean to the lawnmower's,
-// the TSP solves' share of it (Part-TSP), and the missions that did not complete.
+// Columns: missions, CPU ms per mission (mean, median), ratio of the mean to the lawnmower's, and
+// the missions that did not complete.
 
 #include <fmt/format.h>
 
@@ -85,7 +85,6 @@ Options parse(int argc, char** argv) {
 
 struct Cost {
   std::vector<double> seconds;
-  double tsp_seconds = 0;
   int incomplete = 0;
 };
 
@@ -109,7 +108,6 @@ Cost measure(const std::string& algorithm, const Options& o, const world::HullMa
           const double start = thread_cpu_seconds();
           const sim::MissionResult r = planners::run_mission(spec, hull, options);
           cost.seconds.push_back(thread_cpu_seconds() - start);
-          cost.tsp_seconds += r.planner.tsp_seconds;
           cost.incomplete += r.complete ? 0 : 1;
         }
       }
@@ -140,15 +138,14 @@ int main(int argc, char** argv) {
       const Cost base = measure("lawnmower", o, hull);
       lawnmower = mean(base.seconds);
     }
-    fmt::print("{:<16} {:>8} {:>9} {:>9} {:>12} {:>6} {:>10}\n", "planner", "missions", "mean ms",
-               "median ms", "x lawnmower", "tsp %", "incomplete");
+    fmt::print("{:<16} {:>8} {:>9} {:>9} {:>12} {:>10}\n", "planner", "missions", "mean ms",
+               "median ms", "x lawnmower", "incomplete");
     for (const std::string& algorithm : o.algorithms) {
       const Cost cost = measure(algorithm, o, hull);
       const double m = mean(cost.seconds);
-      const double total = m * static_cast<double>(cost.seconds.size());
-      fmt::print("{:<16} {:>8} {:>9.3f} {:>9.3f} {:>12.2f} {:>6.1f} {:>10}\n", algorithm,
+      fmt::print("{:<16} {:>8} {:>9.3f} {:>9.3f} {:>12.2f} {:>10}\n", algorithm,
                  cost.seconds.size(), 1e3 * m, 1e3 * median(cost.seconds), m / lawnmower,
-                 total > 0 ? 100.0 * cost.tsp_seconds / total : 0.0, cost.incomplete);
+                 cost.incomplete);
       std::fflush(stdout);
     }
     return 0;
