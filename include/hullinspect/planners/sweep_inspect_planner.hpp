@@ -132,8 +132,9 @@ struct SweepInspectOptions {
   /// as it is within h1 ahead).
   bool descend_when_level = true;
   /// Visit the prior's cells in the order of a planned open tour (open_tour.hpp: nearest
-  /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen (false:
-  /// the nearest cell at every step).
+  /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen while
+  /// it has at most kReplannedTourCells cells, repaired (seen cells dropped) above (false: the
+  /// nearest cell at every step).
   bool plan_prior_tour = true;
   /// Fly to the sweep's first band along the region's edge row (and a band's centre line) when
   /// that makes the whole flight shorter: the bands it passes are then flown only as far as the
