@@ -14,7 +14,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <ctime>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,28 +23,16 @@
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/scenario.hpp"
 
+#include "bench_support.hpp"
+
 namespace {
 
 using namespace hullinspect;
 
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
-}
+using bench::thread_cpu_seconds;
 
 std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::string item;
-  for (const char c : text + ",") {
-    if (c == ',') {
-      if (!item.empty()) out.push_back(item);
-      item.clear();
-    } else {
-      item += c;
-    }
-  }
-  return out;
+  return bench::split(text, ',');
 }
 
 struct Options {

@@ -30,22 +30,14 @@
 #include "hullinspect/world/mesh_hull.hpp"
 #include "hullinspect/world/scenario.hpp"
 
+#include "bench_support.hpp"
+
 namespace {
 
 using namespace hullinspect;
 
 std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::string item;
-  for (const char c : text + ",") {
-    if (c == ',') {
-      if (!item.empty()) out.push_back(item);
-      item.clear();
-    } else {
-      item += c;
-    }
-  }
-  return out;
+  return bench::split(text, ',');
 }
 
 struct Options {
