@@ -34,10 +34,10 @@ void plan_open_tour(grid::Cell from, std::span<grid::Cell> points, const OpenTou
 void plan_open_tour_exhaustive(grid::Cell from, std::span<grid::Cell> points,
                                const OpenTourCost& cost);
 
-/// The same construction and moves restricted to each point's 8 nearest points (found through a
-/// grid of buckets), each point looked at again only when an edge at it changed (don't-look
-/// bits): about linear work in the points for points spread over a hull. Ties go to the
-/// earlier point.
+/// The same construction and moves restricted to each point's 16 nearest points and its 4
+/// nearest in each quadrant around it (found through a grid of buckets), each point looked at
+/// again only when an edge at it changed (don't-look bits): about linear work in the points for
+/// points spread over a hull. Ties go to the earlier point.
 void plan_open_tour_neighbours(grid::Cell from, std::span<grid::Cell> points,
                                const OpenTourCost& cost);
 
