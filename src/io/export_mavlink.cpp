@@ -55,7 +55,9 @@ MissionItem gimbal_item(Firmware firmware, double pitch_deg) {
 std::vector<MissionItem> mission_items(const ExportPlan& plan, const MissionPart& part,
                                        const GeoReference& geo, const ExportSettings& settings) {
   const auto points = geo_waypoints(plan, part, geo);
-  const GeoPoint home = home_point(part, geo);
+  GeoPoint home = home_point(part, geo);
+  home.lat = round_to(home.lat, 1e10);  // as the waypoints' positions
+  home.lon = round_to(home.lon, 1e10);
   const auto& sortie = *part.sortie;
   const std::size_t plan_begin = static_cast<std::size_t>(sortie.transit_in);
   const std::size_t plan_end =
