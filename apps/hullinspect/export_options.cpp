@@ -199,10 +199,18 @@ ExportWritten write_export(const nlohmann::json& trace, const ExportRequest& req
   const auto declared = declared_names(request, static_cast<int>(plan.uavs.size()));
   ExportWritten written;
   std::vector<io::ExportFile> files;
+  std::vector<std::string> dropped;
   for (const auto f : request.formats) {
-    for (auto& file : io::export_files(plan, f, request.geo, request.settings, &written.notes)) {
+    for (auto& file : io::export_files(plan, f, request.geo, request.settings)) {
       files.push_back(std::move(file));
     }
+    if (!plan.no_fly.empty() && io::drops_no_fly(f)) dropped.emplace_back(io::to_string(f));
+  }
+  if (!dropped.empty()) {
+    written.notes.push_back(fmt::format(
+        "the no-fly positions are not in the {} files: {} no vertical obstacle, and a horizontal "
+        "fence would also forbid the legal flight past them (the kml preview draws them)",
+        fmt::join(dropped, ", "), dropped.size() == 1 ? "the format has" : "these formats have"));
   }
   // Part files of split sorties are known only now: declare and check them before writing.
   bool added = false;

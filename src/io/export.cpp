@@ -65,6 +65,11 @@ std::vector<ExportFormat> parse_export_formats(const std::vector<std::string>& n
   return formats;
 }
 
+bool drops_no_fly(ExportFormat format) {
+  return format == ExportFormat::kQgc || format == ExportFormat::kWpl ||
+         format == ExportFormat::kLitchi || format == ExportFormat::kDjiKmz;
+}
+
 bool needs_geo_reference(ExportFormat format) {
   return format != ExportFormat::kCsv && format != ExportFormat::kPath;
 }
@@ -195,8 +200,7 @@ std::vector<std::string> export_file_names(ExportFormat format, int uavs, bool g
 
 std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format,
                                      const std::optional<GeoReference>& geo,
-                                     const ExportSettings& settings,
-                                     std::vector<std::string>* notes) {
+                                     const ExportSettings& settings) {
   if (needs_geo_reference(format) && !geo) {
     throw ParameterError("origin", fmt::format("the {} format needs a geo-reference: give --origin "
                                                "LAT,LON,ALT and --heading DEG (or --geo FILE)",
@@ -239,13 +243,6 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
   }
   if (format == ExportFormat::kPath && geo) {
     files.push_back({kHullToMap, detail::write_hull_to_map_yaml(*geo)});
-  }
-  if (notes && !plan.no_fly.empty() && format != ExportFormat::kCsv &&
-      format != ExportFormat::kPath) {
-    notes->push_back(fmt::format(
-        "{}: the no-fly positions are not in the files (the format has no vertical obstacle; a "
-        "horizontal fence would also forbid the legal flight above or below them)",
-        to_string(format)));
   }
   return files;
 }

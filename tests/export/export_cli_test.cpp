@@ -183,7 +183,7 @@ TEST_F(ExportCli, NoFlyPositionsAreNeverAFenceAndTheKmlDrawsThemAsBoxes) {
   // and the command says so.
   const auto plan = nlohmann::json::parse(io::read_file(dir_ + "/fence/uav0.plan"));
   EXPECT_TRUE(plan["geoFence"]["polygons"].empty());
-  EXPECT_NE(r.out.find("note: qgc: the no-fly positions are not in the files"), std::string::npos)
+  EXPECT_NE(r.out.find("note: the no-fly positions are not in the qgc files"), std::string::npos)
       << r.out;
   // The KML preview draws each as a box: back in the ship frame, the cell's extent along the hull
   // and in height, the band from half a cell inside the close-up plane to half a cell beyond the

@@ -27,6 +27,10 @@ std::string_view to_string(ExportFormat format);
 /// The formats named by the (repeatable) --format values; "all" names every format. Duplicates
 /// are dropped, the order kept.
 std::vector<ExportFormat> parse_export_formats(const std::vector<std::string>& names);
+/// True for the flight formats that cannot carry no-fly positions truthfully (qgc, wpl, litchi,
+/// dji-kmz: none has a vertical obstacle, and a horizontal fence would also forbid the legal
+/// flight past it); kml draws them, csv and path list positions only.
+bool drops_no_fly(ExportFormat format);
 /// True for the formats that place waypoints on the Earth (they need a geo-reference).
 bool needs_geo_reference(ExportFormat format);
 
@@ -82,12 +86,10 @@ std::string mission_file_name(ExportFormat format, const MissionPart& part);
 std::vector<std::string> export_file_names(ExportFormat format, int uavs, bool geo_referenced);
 
 /// The files of one format. Every format but csv and path needs a geo-reference: without one
-/// this throws ParameterError("origin"). `notes` receives what the format could not carry (e.g.
-/// no-fly zones), one sentence each.
+/// this throws ParameterError("origin").
 std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format,
                                      const std::optional<GeoReference>& geo,
-                                     const ExportSettings& settings,
-                                     std::vector<std::string>* notes = nullptr);
+                                     const ExportSettings& settings);
 
 /// The hold time (s) a flight controller waits at waypoint `w` so that a vehicle flying at
 /// `speed_mps` between waypoints arrives at the trace's times: the hold's duration, or the part of
