@@ -46,6 +46,11 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
                  "Split a sortie into mission files of at most N waypoints (default: litchi 99, "
                  "dji-kmz 200, others no cap)")
       ->type_name("N");
+  cmd.add_option("--simplify", a.simplify,
+                 "Merge legs whose waypoints lie within TOL metres of a straight line, keeping "
+                 "coverage (refused, naming the first cell lost, if it would not)")
+      ->check(real_in(0.0, 1e3))
+      ->type_name("TOL_M");
   cmd.add_option("--firmware", a.firmware, "Flight controller of qgc/wpl missions: px4, ardupilot")
       ->capture_default_str();
   cmd.add_option("--finish", a.finish,
@@ -111,6 +116,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
           std::pair{a.heading.has_value(), "heading"}, std::pair{!a.geo_file.empty(), "geo"},
           std::pair{!a.launch.empty(), "launch"},
           std::pair{a.max_waypoints.has_value(), "max-waypoints"},
+          std::pair{a.simplify.has_value(), "simplify"},
           std::pair{a.firmware != defaults.firmware, "firmware"},
           std::pair{a.finish != defaults.finish, "finish"},
           std::pair{a.drone != defaults.drone, "drone"}}) {
@@ -146,6 +152,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
     }
     r.settings.max_waypoints = *a.max_waypoints;
   }
+  if (a.simplify) r.settings.simplify_m = *a.simplify;
   if (!a.geo_file.empty()) {
     if (!a.origin.empty() || a.heading) {
       throw ParameterError("geo", "give either --geo FILE or --origin and --heading, not both");

@@ -27,6 +27,7 @@ struct ExportArgs {
   std::string geo_file;
   std::vector<std::string> launch;  ///< X,Y grid positions
   std::optional<int> max_waypoints;
+  std::optional<double> simplify;  ///< metres
   std::string firmware = "px4";
   std::string finish = "land";
   std::string drone = "m350";

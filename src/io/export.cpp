@@ -8,6 +8,7 @@
 
 #include "export_writers.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/simplify.hpp"
 
 namespace hullinspect::io {
 
@@ -206,7 +207,10 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
                                                "LAT,LON,ALT and --heading DEG (or --geo FILE)",
                                                to_string(format)));
   }
-  const auto sorties = plan_sorties(plan, settings.launch_sites);
+  auto sorties = plan_sorties(plan, settings.launch_sites);
+  if (settings.simplify_m > 0) {
+    for (auto& s : sorties) simplify_sortie(plan, s, settings.simplify_m);
+  }
   std::vector<ExportFile> files;
   if (format == ExportFormat::kKml) {
     files.push_back({kKmlPreview, detail::write_kml(plan, sorties, *geo)});

@@ -51,6 +51,7 @@ struct ExportSettings {
   DjiDrone drone = DjiDrone::kM350;
   std::vector<grid::Cell> launch_sites;  ///< empty: each UAV takes off below its start position
   int max_waypoints = 0;                 ///< 0: each format's default cap
+  double simplify_m = 0;                 ///< 0: no simplification (io/simplify.hpp)
 };
 
 /// The default waypoint cap of a format (0 = none): Litchi 99 (its mission limit), DJI 200 (a
