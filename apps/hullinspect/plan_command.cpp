@@ -8,14 +8,17 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 
 #include "commands.hpp"
 #include "export_options.hpp"
+#include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/atomic_file.hpp"
 #include "hullinspect/io/output_set.hpp"
+#include "hullinspect/io/preflight_report.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
@@ -30,6 +33,7 @@ struct PlanArgs {
   bool json = false;
   std::string trace_path;
   ExportArgs output;
+  std::string report_dir;  // --report DIR: the pre-flight report of the export
   bool synthetic = false;  // --scenario or a scenario parameter was given
 };
 
@@ -50,6 +54,15 @@ int plan(const PlanArgs& args) {
   outputs.add_output(args.trace_path, "trace");
   const auto export_request = resolve_export(args.output, "--export");
   if (export_request) declare_export_dir(outputs, *export_request);
+  const std::filesystem::path report_dir = args.report_dir;
+  if (!args.report_dir.empty()) {
+    if (!export_request)
+      throw ParameterError("report", "needs --export DIR (it reports the export)");
+    outputs.add_output_dir(report_dir, "report");
+    for (const char* name : {"preflight.md", "preflight.json", "preflight.svg"}) {
+      outputs.add_output(report_dir / name, "report");
+    }
+  }
   outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
@@ -82,6 +95,15 @@ int plan(const PlanArgs& args) {
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   ExportWritten written;
   if (export_request) written = write_export(trace, *export_request, outputs);
+  if (!args.report_dir.empty()) {
+    const auto plan_data = io::export_plan(trace);
+    const auto report = io::preflight_report(trace, plan_data, export_request->formats,
+                                             export_request->settings, export_request->geo);
+    outputs.write(report_dir / "preflight.json", report.dump(1) + "\n");
+    outputs.write(report_dir / "preflight.md", io::preflight_markdown(report));
+    outputs.write(report_dir / "preflight.svg",
+                  io::preflight_svg(trace, plan_data, export_request->settings));
+  }
   outputs.commit();
   if (args.json) {
     auto j = io::result_json(spec, result);
@@ -109,6 +131,9 @@ int plan(const PlanArgs& args) {
                              export_request->dir.string());
     for (const auto& note : written.notes) std::cout << "  note: " << note << "\n";
   }
+  if (!args.report_dir.empty()) {
+    std::cout << fmt::format("  wrote the pre-flight report to {}\n", args.report_dir);
+  }
   return result.complete ? 0 : 3;
 }
 
@@ -129,6 +154,10 @@ void add_plan_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--trace", args->trace_path, "Write the planned mission's trace (JSON) to FILE")
       ->type_name("FILE");
   add_export_options(*cmd, args->output, "--export");
+  cmd->add_option("--report", args->report_dir,
+                  "Write the export's pre-flight report into DIR: preflight.md, .json and .svg "
+                  "(sorties, waypoints, flight times, unreachable and unseen cells, warnings)")
+      ->type_name("DIR");
   cmd->callback([args, cmd, &action] {
     args->synthetic = std::any_of(kScenarioOptions.begin(), kScenarioOptions.end(),
                                   [cmd](const char* o) { return cmd->count(o) > 0; });

@@ -367,6 +367,57 @@ TEST_F(FlightFiles, AllFormatsInOneCommandStayUnderTheirCaps) {
   }
 }
 
+TEST(PreflightReport, SortiesCellsAndWarningsMatchTheFiles) {
+  const auto dir = make_temp_dir("preflight");
+  std::vector<std::string> args = {"plan",   "-a",           "part-tsp",     "-n",
+                                   "2",      "--no-fly-box", "60,3,64,9",    "--launch",
+                                   "0,0",    "--export",     dir + "/files", "--format",
+                                   "litchi", "--format",     "qgc",          "--max-waypoints",
+                                   "9",      "--report",     dir + "/report"};
+  args.insert(args.end(), kGeo.begin(), kGeo.end());
+  const auto r = run_cli(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto report = nlohmann::json::parse(io::read_file(dir + "/report/preflight.json"));
+  ASSERT_EQ(report["sorties"].size(), 2u);
+  for (const auto& s : report["sorties"]) {
+    const int k = s["uav"].get<int>();
+    EXPECT_EQ(s["launch_site"], nlohmann::json::array({0, 0}));
+    // The capped files hold the sortie's waypoints, each later part repeating the last waypoint
+    // of the one before.
+    const auto prefix = dir + "/files/uav" + std::to_string(k);
+    const int litchi_parts = s["files"]["litchi"].get<int>();
+    const int qgc_parts = s["files"]["qgc"].get<int>();
+    EXPECT_EQ(litchi_parts, qgc_parts);
+    ASSERT_GT(litchi_parts, 1);
+    std::size_t rows = 0, items = 0;
+    for (int p = 1; p <= litchi_parts; ++p) {
+      const auto part = prefix + "-part" + std::to_string(p);
+      rows += lines_of(io::read_file(part + ".litchi.csv")).size() - 1;
+      items += io::read_qgc_plan(io::read_file(part + ".plan"), part).waypoints.size();
+    }
+    const auto repeated = static_cast<std::size_t>(litchi_parts - 1);
+    EXPECT_EQ(rows - repeated, s["waypoints"].get<std::size_t>());
+    EXPECT_EQ(items - repeated, s["waypoints"].get<std::size_t>());
+    // At one cell per second a sortie takes at least its distance over the cruise speed.
+    EXPECT_GE(s["flight_time_s"].get<double>(), s["distance_m"].get<double>() / 0.5 - 0.1);
+  }
+  EXPECT_EQ(report["cells"]["hull"], 6361);
+  EXPECT_EQ(report["cells"]["unseen"], 0);
+  const auto warnings = report["warnings"].dump();
+  EXPECT_NE(warnings.find("exceed the litchi cap of 9"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("35 no-fly positions are not in the litchi, qgc files"),
+            std::string::npos)
+      << warnings;
+  const auto md = io::read_file(dir + "/report/preflight.md");
+  EXPECT_NE(md.find("| UAV | sortie | launch site |"), std::string::npos);
+  pugi::xml_document svg;
+  EXPECT_TRUE(svg.load_file((dir + "/report/preflight.svg").c_str()));
+  int lines = 0;
+  for (auto l = svg.child("svg").child("polyline"); l; l = l.next_sibling("polyline")) ++lines;
+  EXPECT_EQ(lines, 2);
+  fs::remove_all(dir);
+}
+
 TEST(PlanPrior, WithoutPriorThePlanIsPureCoverageWhateverTheSeed) {
   const auto one = nlohmann::json::parse(run_cli({"plan", "--json", "-n", "2", "--seed", "1"}).out);
   const auto two = nlohmann::json::parse(run_cli({"plan", "--json", "-n", "2", "--seed", "2"}).out);
