@@ -118,15 +118,11 @@ pugi::xml_node action_group(pugi::xml_node placemark, int id, std::size_t begin,
 // The placemarks of one file: `execute` = waylines.wpml (executeHeight) or template.kml (height).
 void placemarks(pugi::xml_node folder, const ExportPlan& plan, const MissionPart& part,
                 const std::vector<GeoWaypoint>& points, bool execute) {
-  const auto& sortie = *part.sortie;
-  const auto offset = static_cast<std::size_t>(part.waypoints.data() - sortie.waypoints.data());
-  const std::size_t plan_begin = static_cast<std::size_t>(sortie.transit_in);
-  const std::size_t plan_end =
-      sortie.waypoints.size() - static_cast<std::size_t>(sortie.transit_out);
   // The part's waypoints that lie on the plan: photos every cell along their legs.
   std::size_t photo_begin = points.size(), photo_end = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (offset + i >= plan_begin && offset + i < plan_end) {
+    const std::size_t s = part.offset() + i;
+    if (s >= part.sortie->plan_begin() && s < part.sortie->plan_end()) {
       photo_begin = std::min(photo_begin, i);
       photo_end = i;
     }

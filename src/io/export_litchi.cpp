@@ -27,11 +27,6 @@ std::string write_litchi(const ExportPlan& plan, const MissionPart& part, const 
       ",altitudemode,speed(m/s),poi_latitude,poi_longitude,poi_altitude(m),poi_altitudemode,"
       "photo_timeinterval,photo_distinterval\n";
   const auto points = geo_waypoints(plan, part, geo);
-  const auto& sortie = *part.sortie;
-  const auto offset = static_cast<std::size_t>(part.waypoints.data() - sortie.waypoints.data());
-  const std::size_t plan_begin = static_cast<std::size_t>(sortie.transit_in);
-  const std::size_t plan_end =
-      sortie.waypoints.size() - static_cast<std::size_t>(sortie.transit_out);
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
     out += fmt::format("{:.10f},{:.10f},{:.4f},{:.3f},0,0,{},{:.3f}", p.lat, p.lon, p.rel_alt,
@@ -47,8 +42,8 @@ std::string write_litchi(const ExportPlan& plan, const MissionPart& part, const 
       }
     }
     // The leg leaving waypoint s photographs when it is a leg of the plan.
-    const std::size_t s = offset + i;
-    const bool photo = s >= plan_begin && s + 1 < plan_end;
+    const std::size_t s = part.offset() + i;
+    const bool photo = s >= part.sortie->plan_begin() && s + 1 < part.sortie->plan_end();
     out += fmt::format(",0,{:.4f},0,0,0,0,-1,{}\n", cruise_speed_mps(plan),
                        photo ? fmt::format("{:.4f}", photo_distance_m(plan)) : std::string("-1"));
   }

@@ -40,11 +40,6 @@ struct MissionItem {
   std::array<double, 7> params{};
 };
 
-// The sortie's index of the part's i-th waypoint.
-std::size_t sortie_index(const MissionPart& part, std::size_t i) {
-  return static_cast<std::size_t>(part.waypoints.data() - part.sortie->waypoints.data()) + i;
-}
-
 MissionItem gimbal_item(Firmware firmware, double pitch_deg) {
   if (firmware == Firmware::kArduPilot) {
     return {kDoMountControl, kFrameMission, {pitch_deg, 0, 0, 0, 0, 0, kMountModeTargeting}};
@@ -59,10 +54,9 @@ std::vector<MissionItem> mission_items(const ExportPlan& plan, const MissionPart
   home.lat = round_to(home.lat, 1e10);  // as the waypoints' positions
   home.lon = round_to(home.lon, 1e10);
   const auto& sortie = *part.sortie;
-  const std::size_t plan_begin = static_cast<std::size_t>(sortie.transit_in);
-  const std::size_t plan_end =
-      sortie.waypoints.size() - static_cast<std::size_t>(sortie.transit_out);
-  const auto photographing = [&](std::size_t s) { return s >= plan_begin && s < plan_end; };
+  const auto photographing = [&](std::size_t s) {
+    return s >= sortie.plan_begin() && s < sortie.plan_end();
+  };
   const bool ardupilot = settings.firmware == Firmware::kArduPilot;
 
   std::vector<MissionItem> items;
@@ -79,7 +73,7 @@ std::vector<MissionItem> mission_items(const ExportPlan& plan, const MissionPart
   bool triggering = false;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
-    const std::size_t s = sortie_index(part, i);
+    const std::size_t s = part.offset() + i;
     if (!(std::abs(p.gimbal_pitch_deg - pitch) < 0.5)) {  // also when pitch is still NaN
       items.push_back(gimbal_item(settings.firmware, p.gimbal_pitch_deg));
       pitch = p.gimbal_pitch_deg;

@@ -33,6 +33,9 @@ struct Sortie {
   std::vector<ExportWaypoint> waypoints;  ///< from the site's plane-2 position back to it
   int transit_in = 0;   ///< waypoints[0, transit_in) fly from the site to the plan's start
   int transit_out = 0;  ///< the last transit_out waypoints fly back to the site
+  /// waypoints[plan_begin(), plan_end()) are the plan's own: the camera photographs there.
+  std::size_t plan_begin() const { return static_cast<std::size_t>(transit_in); }
+  std::size_t plan_end() const { return waypoints.size() - static_cast<std::size_t>(transit_out); }
 };
 
 /// The sorties of a plan: one per UAV, launched from the nearest of `sites` (Euclidean distance
@@ -52,6 +55,10 @@ struct MissionPart {
   int parts = 1;
   std::span<const ExportWaypoint> waypoints;
   bool takes_off() const { return part == 1; }
+  /// The sortie's index of the part's first waypoint.
+  std::size_t offset() const {
+    return static_cast<std::size_t>(waypoints.data() - sortie->waypoints.data());
+  }
   bool lands() const { return part == parts; }
 };
 
