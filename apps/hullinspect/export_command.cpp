@@ -28,11 +28,12 @@ int export_trace(const ExportCommandArgs& args) {
   const auto uavs = trace.at("frames").at(0).at("u").size() / 5;  // 5 fields per UAV (checked)
   declare_export_files(outputs, *request, static_cast<int>(uavs));
   outputs.check();
-  const auto names = write_export(trace, *request, outputs);
-  outputs.commit();
+  const auto names = write_export(trace, args.trace_path, *request, outputs);
   std::cout << fmt::format("wrote {} {} file{} to {}: {}\n", names.size(), args.output.format,
                            names.size() == 1 ? "" : "s", request->dir.string(),
                            fmt::join(names, ", "));
+  check_stdout();
+  outputs.commit();
   return 0;
 }
 

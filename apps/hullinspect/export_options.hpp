@@ -55,7 +55,8 @@ void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, 
 
 /// Writes the export of `trace` into the declared outputs (committed by the command). Returns the
 /// file names.
-std::vector<std::string> write_export(const nlohmann::json& trace, const ExportRequest& request,
-                                      io::OutputSet& outputs);
+/// `source` names the file the trace's geometry came from (the trace, or the mission's hull).
+std::vector<std::string> write_export(const nlohmann::json& trace, const std::string& source,
+                                      const ExportRequest& request, io::OutputSet& outputs);
 
 }  // namespace hullinspect::cli

@@ -31,9 +31,9 @@ std::string_view to_string(ExportFormat format) {
   return "?";
 }
 
-ExportPlan export_plan(const nlohmann::json& trace) {
+ExportPlan export_plan(const nlohmann::json& trace, const std::string& source) {
   ExportPlan plan{
-      ShipFrame(ship_frame_spec(trace)), trace.at("plane_change_steps").get<int>(), {}, {}};
+      ShipFrame(ship_frame_spec(trace, source)), trace.at("plane_change_steps").get<int>(), {}, {}};
   const auto states = trace_states(trace);
   const auto same = [&plan](grid::Cell a, grid::Cell b) { return plan.frame.same_surface(a, b); };
   for (std::size_t k = 0; k < states.size(); ++k) {

@@ -41,8 +41,9 @@ struct ExportPlan {
   std::vector<grid::Cell> no_fly;
 };
 
-/// Builds the plan of a validated trace.
-ExportPlan export_plan(const nlohmann::json& trace);
+/// Builds the plan of a validated trace; `source` (the trace or hull file the geometry came from)
+/// is named when a waypoint's coordinates cannot be represented.
+ExportPlan export_plan(const nlohmann::json& trace, const std::string& source = "trace");
 
 struct ExportFile {
   std::string name;  ///< file name inside the output directory
