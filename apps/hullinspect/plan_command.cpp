@@ -55,12 +55,13 @@ int plan(const PlanArgs& args) {
   const auto trace = recorder.finish(result);
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   std::vector<std::string> written;
-  if (export_request) written = write_export(trace, *export_request, outputs);
-  outputs.commit();
+  if (export_request) written = write_export(trace, hull.source(), *export_request, outputs);
   if (args.json) {
     auto j = io::result_json(spec, result);
     j["planned_on"] = "prior";
     std::cout << j.dump() << "\n";
+    check_stdout();
+    outputs.commit();
     return result.complete ? 0 : 3;
   }
   auto time = [](const std::optional<int>& t) {
@@ -80,6 +81,8 @@ int plan(const PlanArgs& args) {
     std::cout << fmt::format("  wrote {} {} file{} to {}\n", written.size(), args.output.format,
                              written.size() == 1 ? "" : "s", export_request->dir.string());
   }
+  check_stdout();
+  outputs.commit();
   return result.complete ? 0 : 3;
 }
 
