@@ -52,8 +52,7 @@ TEST(PlannerNames, NamesThatNeedQuotingAreRefused) {
 TEST(PlannerNames, OrdinaryNamesAreAccepted) {
   EXPECT_NO_THROW(check_registry_name("planner", "algorithm", "my-planner_2.v1"));
   EXPECT_NO_THROW(check_registry_name("planner", "algorithm", std::string(64, 'a')));
-  EXPECT_EQ(registration_error("test-name-rule-ok"), "registered");
-  EXPECT_TRUE(planners().contains("test-name-rule-ok"));
+  // (No planner is registered here: the tests that iterate the registry would fly it.)
   // Every built-in name follows the rule.
   for (const auto& info : planner_registry()) {
     EXPECT_NO_THROW(check_registry_name("planner", "algorithm", info.name)) << info.name;
