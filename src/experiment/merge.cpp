@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/output_error.hpp"
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/plan.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
@@ -60,7 +61,7 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
 
   std::error_code ec;
   fs::create_directories(out, ec);
-  if (ec) throw InputError(out.string(), 0, fmt::format("cannot create: {}", ec.message()));
+  if (ec) throw OutputError(out.string(), fmt::format("cannot create: {}", ec.message()));
   write_final_tables(out, plan, merged);
 
   nlohmann::json manifest = base_manifest(plan);
