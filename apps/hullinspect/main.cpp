@@ -11,7 +11,7 @@
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/pending_temporaries.hpp"
+#include "hullinspect/files/pending_temporaries.hpp"
 #include "number_options.hpp"
 
 namespace hullinspect::cli {

@@ -12,7 +12,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/output_error.hpp"
-#include "hullinspect/io/pending_temporaries.hpp"
+#include "hullinspect/files/pending_temporaries.hpp"
 
 namespace hullinspect::io {
 

@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "hullinspect/io/pending_temporaries.hpp"
+#include "hullinspect/files/pending_temporaries.hpp"
 
 namespace hullinspect::io {
 

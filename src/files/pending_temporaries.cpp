@@ -1,4 +1,4 @@
-#include "hullinspect/io/pending_temporaries.hpp"
+#include "hullinspect/files/pending_temporaries.hpp"
 
 #include <unistd.h>
 
