@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/registry_name.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "python_calls.hpp"
 
@@ -108,6 +109,7 @@ struct NoOptions {};
 
 void register_python_planner(const std::string& name, py::object cls,
                              const std::string& description) {
+  check_registry_name("planner", "algorithm", name);
   if (planners::planners().contains(name)) {
     throw ParameterError("algorithm", fmt::format("planner '{}' is already registered", name));
   }

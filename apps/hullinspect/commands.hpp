@@ -26,6 +26,11 @@ inline constexpr int kExitBadInput = 2;
 /// Exit status for a failure that is not the user's input (a planner bug, a full disk).
 inline constexpr int kExitFailure = 1;
 
+/// Flushes standard output and throws when a write to it failed (a full disk, `> /dev/full`, a
+/// closed pipe). Commands call it after printing their result and before committing their files, so
+/// a command whose printed result was lost leaves no files behind (exit 1).
+void check_stdout();
+
 /// "--p-tp" for the parameter "p_tp"; "--algorithm" for "algorithm"; "--r1" for "part-tsp.r1".
 std::string option_name(const std::string& parameter);
 

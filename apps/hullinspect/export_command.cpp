@@ -28,13 +28,14 @@ int export_trace(const ExportCommandArgs& args) {
   const auto uavs = trace.at("frames").at(0).at("u").size() / 5;  // 5 fields per UAV (checked)
   declare_export_files(outputs, *request, static_cast<int>(uavs));
   outputs.check();
-  const auto written = write_export(trace, *request, outputs);
-  outputs.commit();
+  const auto written = write_export(trace, args.trace_path, *request, outputs);
   const auto& names = written.names;
   std::cout << fmt::format("wrote {} {} file{} to {}: {}\n", names.size(), format_list(*request),
                            names.size() == 1 ? "" : "s", request->dir.string(),
                            fmt::join(names, ", "));
   for (const auto& note : written.notes) std::cout << "note: " << note << "\n";
+  check_stdout();
+  outputs.commit();
   return 0;
 }
 

@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -33,7 +34,9 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
       ->type_name("LAT,LON,ALT");
   cmd.add_option("--heading", a.heading,
                  "Geo-reference: ship heading, degrees clockwise from north")
-      ->check(real_in(-360.0, 360.0))  // a custom type name hides it from require_exact_numbers()
+      ->check(
+          real_in(-io::kMaxHeadingDeg,
+                  io::kMaxHeadingDeg))  // a custom type name hides it from require_exact_numbers()
       ->type_name("DEG");
   cmd.add_option("--geo", a.geo_file,
                  "Geo-reference from a YAML file: origin: [LAT, LON, ALT], heading: DEG")
@@ -79,15 +82,23 @@ io::GeoReference geo_from_yaml(const std::string& path) {
   if (!heading || !heading.IsScalar()) {
     throw InputError(path, 0, "heading: expected degrees clockwise from north");
   }
-  try {
-    return io::GeoReference(
-        {origin[0].as<double>(), origin[1].as<double>(), origin[2].as<double>()},
-        heading.as<double>());
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, e.mark.line + 1, "origin and heading must be numbers");
-  } catch (const ParameterError& e) {
-    throw InputError(path, 0, e.name() + ": " + e.problem());
-  }
+  // The same number rules and ranges as --origin and --heading (core/numbers.hpp).
+  const auto number = [&path](const YAML::Node& node, const std::string& field, double min,
+                              double max) {
+    const int line = node.Mark().line + 1;
+    if (!node.IsScalar()) throw InputError(path, line, field + ": expected a number");
+    try {
+      return parse_real(node.Scalar(), min, max);
+    } catch (const NumberError& e) {
+      throw InputError(path, line, field + ": " + e.what());
+    }
+  };
+  const io::GeoPoint point{
+      number(origin[0], "origin[0] (latitude)", -io::kMaxLatitudeDeg, io::kMaxLatitudeDeg),
+      number(origin[1], "origin[1] (longitude)", -io::kMaxLongitudeDeg, io::kMaxLongitudeDeg),
+      number(origin[2], "origin[2] (height)", io::kMinOriginAltM, io::kMaxOriginAltM)};
+  return io::GeoReference(point,
+                          number(heading, "heading", -io::kMaxHeadingDeg, io::kMaxHeadingDeg));
 }
 
 }  // namespace
@@ -200,9 +211,9 @@ void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, 
   }
 }
 
-ExportWritten write_export(const nlohmann::json& trace, const ExportRequest& request,
-                           io::OutputSet& outputs) {
-  const auto plan = io::export_plan(trace);
+ExportWritten write_export(const nlohmann::json& trace, const std::string& source,
+                           const ExportRequest& request, io::OutputSet& outputs) {
+  const auto plan = io::export_plan(trace, source);
   const auto declared = declared_names(request, static_cast<int>(plan.uavs.size()));
   ExportWritten written;
   std::vector<io::ExportFile> files;

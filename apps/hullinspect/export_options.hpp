@@ -70,8 +70,9 @@ struct ExportWritten {
 
 /// Writes the export of `trace` into the declared outputs (committed by the command); a sortie
 /// split into parts declares its part files here.
-ExportWritten write_export(const nlohmann::json& trace, const ExportRequest& request,
-                           io::OutputSet& outputs);
+/// `source` names the file the trace's geometry came from (the trace, or the mission's hull).
+ExportWritten write_export(const nlohmann::json& trace, const std::string& source,
+                           const ExportRequest& request, io::OutputSet& outputs);
 
 /// "csv", "qgc and wpl": the formats of a request, for the commands' summary lines.
 std::string format_list(const ExportRequest& request);

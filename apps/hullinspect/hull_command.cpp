@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "mesh_options.hpp"
 
@@ -32,7 +33,10 @@ int import(const HullImportArgs& args) {
   const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
-  io::write_file_atomic(out, world::to_hull_json(hull));
+  io::OutputSet outputs;
+  outputs.add_output(out, "out");
+  outputs.check();
+  outputs.write(out, world::to_hull_json(hull));
   std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
                            imported.facing_facets, world::to_string(g.side));
   std::cout << fmt::format("  grid {} × {} cells of {} m, {} hull cells ({:.1f} m²)\n",
@@ -46,6 +50,8 @@ int import(const HullImportArgs& args) {
       "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
       metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));
   std::cout << fmt::format("  wrote {}\n", out);
+  check_stdout();  // a command whose printed result is lost leaves no file
+  outputs.commit();
   return 0;
 }
 

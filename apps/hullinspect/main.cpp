@@ -4,18 +4,27 @@
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/files/pending_temporaries.hpp"
 #include "number_options.hpp"
 
 namespace hullinspect::cli {
 
 std::string option_name(const std::string& parameter) {
   return hullinspect::option_name(parameter);
+}
+
+void check_stdout() {
+  std::cout.flush();
+  const bool ok = std::cout.good() && std::fflush(stdout) == 0 && std::ferror(stdout) == 0;
+  const int err = errno;
+  if (!ok) throw Error(std::string("cannot write to standard output: ") + std::strerror(err));
 }
 
 namespace {
@@ -52,12 +61,33 @@ int finish_stdout(int status) {
   return status;
 }
 
+// SIGINT, SIGTERM, SIGHUP: remove the temporaries of outputs not yet committed, then die of the
+// signal as before (the shell sees the same status; an experiment's journal stays resumable).
+void remove_temporaries_and_die(int signal) {
+  io::remove_pending_temporaries();
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+// A signal the caller ignores (nohup, a background job) stays ignored.
+void remove_temporaries_on_signals() {
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction old {};
+    if (::sigaction(s, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_die;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(s, &action, nullptr);
+  }
+}
+
 }  // namespace
 
 }  // namespace hullinspect::cli
 
 int main(int argc, char** argv) {
   using namespace hullinspect;
+  cli::remove_temporaries_on_signals();
   CLI::App app{"hullinspect: multi-UAV two-resolution hull inspection planner and simulator"};
   app.set_version_flag("--version", std::string("hullinspect ") + HULLINSPECT_VERSION);
   app.require_subcommand(1);
@@ -75,11 +105,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return cli::finish_stdout(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return cli::finish_stdout(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return cli::finish_stdout(app.exit(e));
   } catch (const CLI::ParseError& e) {
     std::cerr << "hullinspect: " << cli::one_line(cli::parse_error_message(e)) << "\n";
     return cli::kExitBadInput;
@@ -92,7 +122,7 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::cerr << "hullinspect: " << cli::one_line(e.what()) << "\n";
     return cli::kExitBadInput;
-  } catch (const std::exception& e) {
+  } catch (const std::exception& e) {  // a bug, or the environment (OutputError: a full disk)
     std::cerr << "hullinspect: " << cli::one_line(e.what()) << "\n";
     return cli::kExitFailure;
   }

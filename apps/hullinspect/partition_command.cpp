@@ -277,16 +277,15 @@ int run_partition(const PartitionArgs& args) {
           : partition::partition_with_fallback(args.partitioner, parse_options(args.options),
                                                request);
   const auto connected = connected_regions(hull, result, args.uavs, flight);
-  if (!args.out_path.empty()) {
-    outputs.write(args.out_path, region_mask(hull, result, args));
-    outputs.commit();
-  }
+  if (!args.out_path.empty()) outputs.write(args.out_path, region_mask(hull, result, args));
   if (args.json) {
     std::cout << summary_json(args, hull, request.starts, result, connected, flight).dump() << "\n";
   } else {
     print_summary(args, hull, request.starts, result, connected, flight);
     for (const auto& w : result.warnings) std::cerr << "hullinspect: warning: " << w << "\n";
   }
+  check_stdout();
+  outputs.commit();
   return result.converged ? 0 : 3;
 }
 

@@ -94,9 +94,9 @@ int plan(const PlanArgs& args) {
   const auto trace = recorder.finish(result);
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   ExportWritten written;
-  if (export_request) written = write_export(trace, *export_request, outputs);
+  if (export_request) written = write_export(trace, hull.source(), *export_request, outputs);
   if (!args.report_dir.empty()) {
-    const auto plan_data = io::export_plan(trace);
+    const auto plan_data = io::export_plan(trace, hull.source());
     const auto report = io::preflight_report(trace, plan_data, export_request->formats,
                                              export_request->settings, export_request->geo);
     outputs.write(report_dir / "preflight.json", report.dump(1) + "\n");
@@ -104,12 +104,13 @@ int plan(const PlanArgs& args) {
     outputs.write(report_dir / "preflight.svg",
                   io::preflight_svg(trace, plan_data, export_request->settings));
   }
-  outputs.commit();
   if (args.json) {
     auto j = io::result_json(spec, result);
     j["planned_on"] = "prior";
     j["prior"] = !args.mission.prior.empty() ? "file" : args.synthetic ? "synthetic" : "empty";
     std::cout << j.dump() << "\n";
+    check_stdout();
+    outputs.commit();
     return result.complete ? 0 : 3;
   }
   auto time = [](const std::optional<int>& t) {
@@ -134,6 +135,8 @@ int plan(const PlanArgs& args) {
   if (!args.report_dir.empty()) {
     std::cout << fmt::format("  wrote the pre-flight report to {}\n", args.report_dir);
   }
+  check_stdout();
+  outputs.commit();
   return result.complete ? 0 : 3;
 }
 

@@ -104,14 +104,15 @@ int run(const RunArgs& args) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
     if (!args.html_path.empty()) outputs.write(args.html_path, io::viewer_html(trace));
-    if (export_request) write_export(trace, *export_request, outputs);
-    outputs.commit();
+    if (export_request) write_export(trace, hull.source(), *export_request, outputs);
   }
   if (args.json) {
     std::cout << io::result_json(spec, result).dump() << "\n";
   } else {
     print_summary(spec, result);
   }
+  check_stdout();
+  outputs.commit();
   return result.complete ? 0 : 3;
 }
 

@@ -32,10 +32,11 @@ int view(const ViewArgs& args) {
   const auto trace = io::read_trace(args.trace_path);
   const std::string html = io::viewer_html(trace);
   outputs.write(out, html);
-  outputs.commit();
   std::cout << fmt::format("wrote {} ({:.1f} MB, {} steps): open it in a web browser\n",
                            out.string(), static_cast<double>(html.size()) / 1e6,
                            trace["result"]["steps"].get<long>());
+  check_stdout();
+  outputs.commit();
   return 0;
 }
 

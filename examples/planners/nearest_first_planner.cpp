@@ -1,13 +1,15 @@
 // A user planner outside src/ (tutorial 04, docs/user-planners.md): "nearest-first" descends to the
 // close-up plane and sends each UAV to the nearest cell still unknown or uninspected (M = 0 or 2),
-// keeping the fleet's targets `separation` cells apart. It is compiled into the CLI, the tests and
-// the Python module (examples/CMakeLists.txt) and registered by the one line at the bottom, so
-// `hullinspect run -a nearest-first`, configs, experiments, `hullinspect list` and
-// hullinspect.run_mission(algorithm="nearest-first") all find it.
+// keeping the fleet's targets `separation` cells apart. Distances and steps come from the mission's
+// distance service, so the UAVs fly around no-fly zones and skip cells they cannot inspect. It is
+// compiled into the CLI, the tests and the Python module (examples/CMakeLists.txt) and registered
+// by the one line at the bottom, so `hullinspect run -a nearest-first`, configs, experiments,
+// `hullinspect list` and hullinspect.run_mission(algorithm="nearest-first") all find it.
 //
 // For brevity it scans the map for targets every step; the built-in planners keep incremental
 // sets instead (docs/architecture.md, "Conventions").
 
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <memory>
@@ -29,38 +31,69 @@ class NearestFirstPlanner final : public planners::Planner {
 
   void start(const planners::PlannerContext& context) override {
     targets_.assign(static_cast<std::size_t>(context.params.uavs), grid::Cell{-1, -1});
+    distances_ = &planners::distances_of(context, fallback_distances_);
+    reach_ = context.reach;
+    half_[0] = context.params.s1 / 2;
+    half_[1] = context.params.s2 / 2;
   }
 
   void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override {
     for (std::size_t k = 0; k < actions.size(); ++k) {
       const sim::UavState& uav = view.uavs[k];
       targets_[k] = {-1, -1};
-      if (uav.failed || uav.in_transit()) {
-        actions[k] = sim::Action::kHover;
-      } else if (uav.z == 2) {
-        actions[k] = sim::Action::kChangePlane;  // inspect everything from close up
-      } else {
-        targets_[k] = nearest_open_cell(view, uav.pos, k);
-        actions[k] =
-            targets_[k].x < 0 ? sim::Action::kHover : sim::step_towards(uav.pos, targets_[k]);
+      actions[k] = sim::Action::kHover;
+      if (uav.failed || uav.in_transit()) continue;
+      grid::Cell viewpoint = grid::kNoCell;
+      grid::Cell target = nearest_cell(view, uav.pos, k, Goal::kInspect, viewpoint);
+      int plane = 1;
+      if (target.x < 0) {
+        // Cells no close-up footprint reaches (behind a no-fly zone) are done once seen from z = 2.
+        target = nearest_cell(view, uav.pos, k, Goal::kSee, viewpoint);
+        plane = 2;
       }
+      if (target.x < 0) continue;
+      if (uav.z != plane) {
+        actions[k] = sim::Action::kChangePlane;
+        continue;
+      }
+      targets_[k] = target;
+      actions[k] = sim::step_towards(uav.pos, distances_->next_step(uav.pos, viewpoint));
     }
   }
 
  private:
-  grid::Cell nearest_open_cell(const sim::PlannerView& view, grid::Cell from,
-                               std::size_t uav) const {
+  // kInspect: a cell still unknown or seen corroded (M = 0 or 2) that a close-up footprint can
+  // reach; kSee: an unknown cell that only a z = 2 footprint can reach.
+  enum class Goal { kInspect, kSee };
+
+  bool wanted(const sim::PlannerView& view, grid::Cell c, Goal goal) const {
+    const auto m = view.map[c];
+    const std::uint8_t reach = reach_ != nullptr ? reach_->reach[c] : world::kReachZ1;
+    if (goal == Goal::kInspect) {
+      return (m == sim::kUnknown || m == sim::kCorrosionSeen) && (reach & world::kReachZ1) != 0;
+    }
+    return m == sim::kUnknown && (reach & world::kReachZ1) == 0 && (reach & world::kReachZ2) != 0;
+  }
+
+  // The wanted cell whose viewpoint (the cell itself, or the flyable position nearest it within
+  // the footprint) is the shortest flight away; `viewpoint` receives that position.
+  grid::Cell nearest_cell(const sim::PlannerView& view, grid::Cell from, std::size_t uav, Goal goal,
+                          grid::Cell& viewpoint) {
     grid::Cell best{-1, -1};
     int best_distance = std::numeric_limits<int>::max();
     const auto& map = view.map;
+    const int half = half_[goal == Goal::kInspect ? 0 : 1];
+    const grid::Grid<int>& flight = distances_->field(from);
     for (int y = 0; y < map.height(); ++y) {
       for (int x = 0; x < map.width(); ++x) {
-        const auto m = map(x, y);
-        if (m != sim::kUnknown && m != sim::kCorrosionSeen) continue;
         const grid::Cell c{x, y};
-        const int d = grid::manhattan(from, c);
-        if (d >= best_distance || claimed(c, uav)) continue;
+        if (!wanted(view, c, goal)) continue;
+        const grid::Cell at = distances_->viewpoint(c, half);
+        if (at.x < 0) continue;
+        const int d = flight[at];
+        if (d >= grid::kUnreachable || d >= best_distance || claimed(c, uav)) continue;
         best = c;
+        viewpoint = at;
         best_distance = d;
       }
     }
@@ -76,6 +109,10 @@ class NearestFirstPlanner final : public planners::Planner {
 
   NearestFirstOptions options_;
   std::vector<grid::Cell> targets_;
+  grid::DistanceService* distances_ = nullptr;
+  grid::DistanceService fallback_distances_;
+  const world::Reachability* reach_ = nullptr;
+  int half_[2] = {0, 0};  // footprint half-widths at z = 1, 2
 };
 
 Params<NearestFirstOptions> nearest_first_params() {

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/output_error.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/bounded_read.hpp"
@@ -18,7 +19,8 @@ namespace {
 constexpr std::size_t kMaxJournalBytes = std::size_t{16} << 30;
 }  // namespace
 
-JournalRows read_journal(const std::filesystem::path& path, const std::vector<std::string>& header) {
+JournalRows read_journal(const std::filesystem::path& path,
+                         const std::vector<std::string>& header) {
   JournalRows rows;
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return rows;
@@ -40,7 +42,8 @@ JournalRows read_journal(const std::filesystem::path& path, const std::vector<st
     const auto fields = split_csv_line(line);
     if (line_number == 1) {
       if (!fields || *fields != header) {
-        throw InputError(source, 1, "unexpected header (written by another version of hullinspect?)");
+        throw InputError(source, 1,
+                         "unexpected header (written by another version of hullinspect?)");
       }
       continue;
     }
@@ -54,7 +57,9 @@ JournalRows read_journal(const std::filesystem::path& path, const std::vector<st
   return rows;
 }
 
-std::string_view line_id(std::string_view line) { return line.substr(0, line.find(',')); }
+std::string_view line_id(std::string_view line) {
+  return line.substr(0, line.find(','));
+}
 
 JournalWriter::JournalWriter(const std::filesystem::path& path,
                              const std::vector<std::string>& header,
@@ -65,7 +70,8 @@ JournalWriter::JournalWriter(const std::filesystem::path& path,
   io::write_file_atomic(path, content);
   fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (fd_ < 0) {
-    throw InputError(path.string(), 0, fmt::format("cannot open for appending: {}", std::strerror(errno)));
+    throw OutputError(path.string(),
+                      fmt::format("cannot open for appending: {}", std::strerror(errno)));
   }
 }
 
@@ -81,7 +87,7 @@ void JournalWriter::append(std::string_view line) {
     const ssize_t n = ::write(fd_, buffer_.data() + done, buffer_.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      throw InputError(path_.string(), 0, fmt::format("cannot append: {}", std::strerror(errno)));
+      throw OutputError(path_.string(), fmt::format("cannot append: {}", std::strerror(errno)));
     }
     done += static_cast<std::size_t>(n);
   }

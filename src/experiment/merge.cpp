@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/output_error.hpp"
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/plan.hpp"
 #include "hullinspect/experiment/results_dir.hpp"

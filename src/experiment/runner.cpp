@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/output_error.hpp"
 #include "hullinspect/experiment/journal.hpp"
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
@@ -110,7 +111,7 @@ RunnerSummary run_experiment(const ExperimentPlan& plan, const fs::path& out,
                      "another --out");
   }
   fs::create_directories(out, ec);
-  if (ec) throw InputError(out.string(), 0, fmt::format("cannot create: {}", ec.message()));
+  if (ec) throw OutputError(out.string(), fmt::format("cannot create: {}", ec.message()));
   DirectoryLock lock(out);
   remove_stale_temporaries(out);
   nlohmann::json manifest = open_manifest(plan, out, fresh, options.shard);

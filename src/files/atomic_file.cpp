@@ -11,6 +11,8 @@
 #include <cstring>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/output_error.hpp"
+#include "hullinspect/files/pending_temporaries.hpp"
 
 namespace hullinspect::io {
 
@@ -34,24 +36,25 @@ bool write_all(int fd, std::string_view content) {
 void write_file_atomic(const std::filesystem::path& path, std::string_view content) {
   const std::filesystem::path tmp =
       path.string() + fmt::format(".tmp-{}", static_cast<long>(::getpid()));
+  const PendingTemporary pending(tmp);  // removed by the CLI's signal handler until renamed
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd < 0)
-    throw InputError(path.string(), 0, fmt::format("cannot write: {}", std::strerror(errno)));
+    throw OutputError(path.string(), fmt::format("cannot write: {}", std::strerror(errno)));
   const bool written = write_all(fd, content);
   const int write_errno = errno;
   const bool closed = ::close(fd) == 0;
   if (!written || !closed) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
-    throw InputError(path.string(), 0,
-                     fmt::format("write failed: {}", std::strerror(written ? errno : write_errno)));
+    throw OutputError(path.string(), fmt::format("write failed: {}",
+                                                 std::strerror(written ? errno : write_errno)));
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
-    throw InputError(path.string(), 0, fmt::format("cannot rename into place: {}", ec.message()));
+    throw OutputError(path.string(), fmt::format("cannot rename into place: {}", ec.message()));
   }
 }
 

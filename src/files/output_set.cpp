@@ -11,6 +11,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
+#include "hullinspect/core/output_error.hpp"
 
 namespace hullinspect::io {
 
@@ -99,15 +100,15 @@ const OutputSet::Entry* OutputSet::declared_parent_dir(const fs::path& path) con
 }
 
 void OutputSet::add_input(const fs::path& path, std::string option) {
-  if (!path.empty()) inputs_.push_back({path, std::move(option), false, {}});
+  if (!path.empty()) inputs_.push_back({path, std::move(option), false, {}, {}});
 }
 
 void OutputSet::add_output(const fs::path& path, std::string option) {
-  if (!path.empty()) outputs_.push_back({path, std::move(option), false, {}});
+  if (!path.empty()) outputs_.push_back({path, std::move(option), false, {}, {}});
 }
 
 void OutputSet::add_output_dir(const fs::path& path, std::string option) {
-  if (!path.empty()) outputs_.push_back({path, std::move(option), true, {}});
+  if (!path.empty()) outputs_.push_back({path, std::move(option), true, {}, {}});
 }
 
 void OutputSet::check() const {
@@ -175,8 +176,8 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
     }
     for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
       if (::mkdir(it->c_str(), 0777) != 0 && errno != EEXIST) {
-        throw InputError(it->string(), 0,
-                         fmt::format("cannot create the directory: {}", std::strerror(errno)));
+        throw OutputError(it->string(),
+                          fmt::format("cannot create the directory: {}", std::strerror(errno)));
       }
       created_dirs_.push_back(*it);
     }
@@ -185,12 +186,14 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
     entry->temporary =
         parent_of(path) / fmt::format(".{}.tmp-{}-{}", path.filename().string(),
                                       static_cast<long>(::getpid()), temporary_counter++);
+    entry->pending = PendingTemporary(entry->temporary);
   }
   const int fd = ::open(entry->temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd < 0) {
     const int err = errno;
     entry->temporary.clear();
-    throw InputError(path.string(), 0, fmt::format("cannot write: {}", std::strerror(err)));
+    entry->pending.release();
+    throw OutputError(path.string(), fmt::format("cannot write: {}", std::strerror(err)));
   }
   bool ok = true;
   while (ok && !content.empty()) {
@@ -204,17 +207,18 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
     ok = false;
     err = errno;
   }
-  if (!ok) throw InputError(path.string(), 0, fmt::format("write failed: {}", std::strerror(err)));
+  if (!ok) throw OutputError(path.string(), fmt::format("write failed: {}", std::strerror(err)));
 }
 
 void OutputSet::commit() {
   for (auto& out : outputs_) {
     if (out.temporary.empty()) continue;
     if (::rename(out.temporary.c_str(), out.path.c_str()) != 0) {
-      throw InputError(out.path.string(), 0,
-                       fmt::format("cannot rename into place: {}", std::strerror(errno)));
+      throw OutputError(out.path.string(),
+                        fmt::format("cannot rename into place: {}", std::strerror(errno)));
     }
     out.temporary.clear();
+    out.pending.release();
   }
   created_dirs_.clear();  // they hold the outputs now
 }

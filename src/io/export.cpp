@@ -117,8 +117,8 @@ std::vector<grid::Cell> marked_cells(const nlohmann::json& rows, char mark) {
 }
 }  // namespace
 
-ExportPlan export_plan(const nlohmann::json& trace) {
-  ExportPlan plan{ShipFrame(ship_frame_spec(trace)),
+ExportPlan export_plan(const nlohmann::json& trace, const std::string& source) {
+  ExportPlan plan{ShipFrame(ship_frame_spec(trace, source)),
                   trace.at("plane_change_steps").get<int>(),
                   trace.at("grid").at("width").get<int>(),
                   trace.at("grid").at("height").get<int>(),

@@ -3,16 +3,17 @@
 #include <fmt/format.h>
 #include <GeographicLib/LocalCartesian.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <numbers>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 
 namespace hullinspect::io {
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr const char* kOriginParts[3] = {"LAT", "LON", "ALT"};
 }  // namespace
 
 struct GeoReference::Impl {
@@ -23,15 +24,17 @@ struct GeoReference::Impl {
 
 GeoReference::GeoReference(GeoPoint origin, double heading_deg)
     : origin_(origin), heading_deg_(heading_deg) {
-  if (!(origin.lat >= -90 && origin.lat <= 90) || !(origin.lon >= -180 && origin.lon <= 180) ||
-      !std::isfinite(origin.alt)) {
-    throw ParameterError("origin",
-                         fmt::format("expects LAT,LON,ALT with LAT in [-90, 90] and LON in "
-                                     "[-180, 180] (got {},{},{})",
-                                     origin.lat, origin.lon, origin.alt));
+  if (!(std::abs(origin.lat) <= kMaxLatitudeDeg) || !(std::abs(origin.lon) <= kMaxLongitudeDeg) ||
+      !(origin.alt >= kMinOriginAltM && origin.alt <= kMaxOriginAltM)) {
+    throw ParameterError(
+        "origin", fmt::format("expects LAT,LON,ALT with LAT in [-90, 90], LON in "
+                              "[-180, 180] and ALT in [{}, {}] m (got {},{},{})",
+                              kMinOriginAltM, kMaxOriginAltM, origin.lat, origin.lon, origin.alt));
   }
-  if (!std::isfinite(heading_deg))
-    throw ParameterError("heading", "expects a finite number of degrees");
+  if (!(std::abs(heading_deg) <= kMaxHeadingDeg)) {
+    throw ParameterError("heading",
+                         fmt::format("expects degrees in [-360, 360] (got {})", heading_deg));
+  }
   impl_ =
       std::make_unique<Impl>(Impl{GeographicLib::LocalCartesian(origin.lat, origin.lon, origin.alt),
                                   std::sin(heading_deg * kDeg), std::cos(heading_deg * kDeg)});
@@ -73,6 +76,12 @@ GeoPoint GeoReference::to_wgs84(double x, double y, double z) const {
   const Enu e = to_enu(x, y, z);
   GeoPoint p;
   impl_->local.Reverse(e.east, e.north, e.up, p.lat, p.lon, p.alt);
+  if (!(std::abs(p.lat) <= kMaxLatitudeDeg) || !(std::abs(p.lon) <= kMaxLongitudeDeg) ||
+      !std::isfinite(p.alt)) {
+    throw ParameterError("origin", fmt::format("the point ({}, {}, {}) m of the ship frame has no "
+                                               "WGS-84 position (got {},{},{})",
+                                               x, y, z, p.lat, p.lon, p.alt));
+  }
   return p;
 }
 
@@ -98,18 +107,23 @@ double GeoReference::enu_rotation() const {
 }
 
 GeoPoint parse_geo_origin(const std::string& text) {
+  const double limits[3][2] = {{-kMaxLatitudeDeg, kMaxLatitudeDeg},
+                               {-kMaxLongitudeDeg, kMaxLongitudeDeg},
+                               {kMinOriginAltM, kMaxOriginAltM}};
   double v[3] = {0, 0, 0};
   std::size_t at = 0;
-  for (int i = 0; i < 3; ++i) {
+  for (std::size_t i = 0; i < 3; ++i) {
     const std::size_t end = i < 2 ? text.find(',', at) : text.size();
-    const char* first = text.data() + at;
-    const char* last = text.data() + (end == std::string::npos ? text.size() : end);
-    const auto [ptr, ec] = std::from_chars(first, last, v[i]);
-    if (end == std::string::npos || ec != std::errc() || ptr != last || first == last ||
-        !std::isfinite(v[i])) {
-      throw ParameterError(
-          "origin",
-          fmt::format("expects LAT,LON,ALT in degrees, degrees, metres (got '{}')", text));
+    constexpr const char* kExpected = "expects LAT,LON,ALT in degrees, degrees, metres";
+    if (end == std::string::npos) {
+      throw ParameterError("origin",
+                           fmt::format("{} (got '{}')", kExpected, escape_for_message(text)));
+    }
+    try {
+      v[i] = parse_real(std::string_view(text).substr(at, end - at), limits[i][0], limits[i][1]);
+    } catch (const NumberError& e) {
+      throw ParameterError("origin",
+                           fmt::format("{}: {} {}", kExpected, kOriginParts[i], e.what()));
     }
     at = end + 1;
   }

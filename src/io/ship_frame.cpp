@@ -1,12 +1,24 @@
 #include "hullinspect/io/ship_frame.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/world/ship_frame_bounds.hpp"
 
 namespace hullinspect::io {
 
 ShipFrame::ShipFrame(ShipFrameSpec spec)
-    : spec_(std::move(spec)), sign_(spec_.side == HullSide::kPort ? 1.0 : -1.0) {}
+    : spec_(std::move(spec)), sign_(spec_.side == HullSide::kPort ? 1.0 : -1.0) {
+  // Speeds and hold times divide by the cell side (cruise speed = one cell per step).
+  if (!(spec_.cell_m >= world::kMinCellSizeM && spec_.cell_m <= world::kMaxCellSizeM)) {
+    throw InputError(spec_.source, 0,
+                     fmt::format("the cell size {} m is outside [{}, {}] m", spec_.cell_m,
+                                 world::kMinCellSizeM, world::kMaxCellSizeM));
+  }
+}
 
 double ShipFrame::standoff_m(int z) const {
   const int s = z == 1 ? spec_.s1 : spec_.s2;
@@ -35,6 +47,14 @@ ShipPose ShipFrame::pose(grid::Cell cell, int z) const {
     }
   }
   p.yaw = std::atan2(-ny, -nx);
+  const auto within = [](double v) { return std::abs(v) <= world::kMaxShipFrameM; };
+  if (!within(p.x) || !within(p.y) || !within(p.z) || !std::isfinite(p.yaw)) {
+    throw InputError(spec_.source, 0,
+                     fmt::format("the waypoint of cell ({}, {}) at z = {} lies at ship-frame "
+                                 "({}, {}, {}) m; expected finite metres within ±{} (check the "
+                                 "cell size, θ and the origin)",
+                                 cell.x, cell.y, z, p.x, p.y, p.z, world::kMaxShipFrameM));
+  }
   return p;
 }
 
@@ -65,8 +85,9 @@ int ShipFrame::plane_at(grid::Cell cell, double y, double tolerance_m) const {
   return best;
 }
 
-ShipFrameSpec ship_frame_spec(const nlohmann::json& trace) {
+ShipFrameSpec ship_frame_spec(const nlohmann::json& trace, const std::string& source) {
   ShipFrameSpec s;
+  s.source = source;
   const auto& grid = trace.at("grid");
   s.cell_m = grid.at("cell_size_m").get<double>();
   s.s1 = trace.at("footprint").at(0).get<int>();

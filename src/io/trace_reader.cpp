@@ -14,6 +14,8 @@
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/bounded_read.hpp"
 #include "hullinspect/files/json_document.hpp"
+#include "hullinspect/sim/uav_rules.hpp"
+#include "hullinspect/world/ship_frame_bounds.hpp"
 
 namespace hullinspect::io {
 
@@ -187,12 +189,53 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
 }  // namespace
 
+// The model's motion rules (sim/uav_rules.hpp) over every UAV of every frame, and no UAV on a
+// no-fly position ('#' in `no_fly`, already checked against the grid). Frames are checked.
+void check_motion(const TraceChecker& check, const json& frames, int plane_change_steps,
+                  const json* no_fly) {
+  const auto state = [](const json& u, std::size_t k) {
+    sim::UavState s;
+    s.pos = {u[kUavFields * k].get<int>(), u[kUavFields * k + 1].get<int>()};
+    s.z = u[kUavFields * k + 2].get<int>();
+    s.transit_left = u[kUavFields * k + 3].get<int>();
+    s.failed = u[kUavFields * k + 4].get<int>() == 0;
+    return s;
+  };
+  const std::size_t uavs = frames[0]["u"].size() / kUavFields;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const auto& u = frames[i]["u"];
+    for (std::size_t k = 0; k < uavs; ++k) {
+      const auto where = fmt::format("frames[{}].u", i);
+      const sim::UavState now = state(u, k);
+      if (auto broken = sim::state_violation(now, plane_change_steps)) {
+        check.fail(where, fmt::format("UAV {} {}", k, *broken));
+      }
+      if (no_fly != nullptr) {
+        const auto& row =
+            (*no_fly)[static_cast<std::size_t>(now.pos.y)].get_ref<const std::string&>();
+        if (row[static_cast<std::size_t>(now.pos.x)] == '#') {
+          check.fail(where, fmt::format("UAV {} is on the no-fly position ({}, {})", k, now.pos.x,
+                                        now.pos.y));
+        }
+      }
+      if (i == 0) continue;
+      const sim::UavState before = state(frames[i - 1]["u"], k);
+      if (auto broken = sim::step_violation(before, now, plane_change_steps)) {
+        check.fail(where, fmt::format("UAV {} {} (from frame {})", k, *broken, i - 1));
+      }
+    }
+  }
+}
+
 // The optional `ship_frame` of a hull imported from a mesh: origin [X0, Z0], side_plane_y, side,
 // and `height` rows of `width` depths (metres ≥ 0) and unit normals [nx, ny, nz].
 void check_ship_frame(const TraceChecker& check, const json& frame, int width, int height) {
   check.object(frame, "ship_frame");
   const auto finite = [&](const json& v, const std::string& where) {
-    if (!v.is_number() || !std::isfinite(v.get<double>())) check.fail(where, "expected metres");
+    if (!v.is_number() || !(std::abs(v.get<double>()) <= world::kMaxShipFrameM)) {
+      check.fail(where, fmt::format("expected metres in [{}, {}]", -world::kMaxShipFrameM,
+                                    world::kMaxShipFrameM));
+    }
     return v.get<double>();
   };
   const auto& origin = check.array(check.field(frame, "ship_frame", "origin"), "ship_frame.origin");
@@ -258,9 +301,10 @@ void validate_trace(const json& trace, const std::string& source) {
   const int height = static_cast<int>(
       check.integer(check.field(grid, "grid", "height"), "grid.height", 1, 1 << 15));
   const auto& cell_size = check.field(grid, "grid", "cell_size_m");
-  if (!cell_size.is_number() || !(cell_size.get<double>() > 0) ||
-      !std::isfinite(cell_size.get<double>())) {
-    check.fail("grid.cell_size_m", "expected a positive number of metres");
+  if (!cell_size.is_number() || !(cell_size.get<double>() >= world::kMinCellSizeM &&
+                                  cell_size.get<double>() <= world::kMaxCellSizeM)) {
+    check.fail("grid.cell_size_m", fmt::format("expected metres in [{}, {}]", world::kMinCellSizeM,
+                                               world::kMaxCellSizeM));
   }
   if (auto camera = trace.find("camera"); camera != trace.end()) {
     check.object(*camera, "camera");
@@ -269,11 +313,13 @@ void validate_trace(const json& trace, const std::string& source) {
       check.fail("camera.theta_deg", "expected degrees in (0, 180)");
     }
   }
-  check.integer(check.field(trace, "", "plane_change_steps"), "plane_change_steps", 0, 1 << 20);
+  const auto plane_change_steps = static_cast<int>(check.integer(
+      check.field(trace, "", "plane_change_steps"), "plane_change_steps", 1, 1 << 20));
   const auto& footprint = check.array(check.field(trace, "", "footprint"), "footprint");
   if (footprint.size() != 2) check.fail("footprint", "expected [s1, s2]");
-  check.integer(footprint[0], "footprint[0]", 1, std::max(width, height) * 2 + 1);
-  check.integer(footprint[1], "footprint[1]", 1, std::max(width, height) * 2 + 1);
+  const auto s1 = check.integer(footprint[0], "footprint[0]", 1, std::max(width, height) * 2 + 1);
+  const auto s2 = check.integer(footprint[1], "footprint[1]", 1, std::max(width, height) * 2 + 1);
+  if (auto broken = sim::footprint_violation(s1, s2)) check.fail("footprint", *broken);
 
   check.rows(check.field(trace, "", "truth"), "truth", width, height, ".01");
   check.rows(check.field(trace, "", "prior"), "prior", width, height, ".01");
@@ -301,6 +347,8 @@ void validate_trace(const json& trace, const std::string& source) {
   for (std::size_t i = 0; i < frames.size(); ++i) {
     check_frame(check, frames[i], i, width, height, u0.size(), layers_seen);
   }
+  check_motion(check, frames, plane_change_steps,
+               trace.contains("no_fly") ? &trace["no_fly"] : nullptr);
 
   const auto last = static_cast<std::int64_t>(frames.size()) - 1;
   const auto& series = check.object(check.field(trace, "", "series"), "series");

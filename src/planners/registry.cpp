@@ -2,6 +2,7 @@
 // registries"). Each option is declared once here; defaults are the options structs' initialisers.
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/registry_name.hpp"
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 #include "hullinspect/planners/lawnmower_planner.hpp"
 #include "hullinspect/planners/part_tsp_planner.hpp"
@@ -278,6 +279,7 @@ OptionMap resolve_planner_options(std::string_view name, const OptionMap& option
 }
 
 PlannerRegistration::PlannerRegistration(PlannerInfo entry) {
+  check_registry_name("planner", "algorithm", entry.name);
   planners().add(std::move(entry));
 }
 

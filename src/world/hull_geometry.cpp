@@ -8,6 +8,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/files/json_document.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/ship_frame_bounds.hpp"
 
 namespace hullinspect::world {
 
@@ -82,11 +83,22 @@ int AxisMap::determinant() const {
 }
 
 void validate(const HullGeometry& g, const HullMask& mask, const std::string& source) {
-  if (!(g.cell_size > 0) || !std::isfinite(g.cell_size)) {
-    fail(source, "cell_size", "must be a positive number of metres");
+  if (!(g.cell_size >= kMinCellSizeM && g.cell_size <= kMaxCellSizeM)) {
+    fail(source, "cell_size",
+         fmt::format("must be metres in [{}, {}] (got {})", kMinCellSizeM, kMaxCellSizeM,
+                     g.cell_size));
   }
-  if (!std::isfinite(g.x0) || !std::isfinite(g.z0)) fail(source, "origin", "must be finite");
-  if (!std::isfinite(g.side_plane_y)) fail(source, "side_plane_y", "must be finite");
+  const auto within_frame = [](double v) { return std::abs(v) <= kMaxShipFrameM; };
+  if (!within_frame(g.x0) || !within_frame(g.z0)) {
+    fail(source, "origin",
+         fmt::format("must be metres in [{}, {}] (got [{}, {}])", -kMaxShipFrameM, kMaxShipFrameM,
+                     g.x0, g.z0));
+  }
+  if (!within_frame(g.side_plane_y)) {
+    fail(source, "side_plane_y",
+         fmt::format("must be metres in [{}, {}] (got {})", -kMaxShipFrameM, kMaxShipFrameM,
+                     g.side_plane_y));
+  }
   if (!(g.scale > 0) || !std::isfinite(g.scale)) fail(source, "scale", "must be positive");
   if (!(g.min_coverage > 0 && g.min_coverage <= 1)) {
     fail(source, "min_coverage", "must be in (0, 1]");
@@ -104,7 +116,7 @@ void validate(const HullGeometry& g, const HullMask& mask, const std::string& so
   for (int y = 0; y < mask.height(); ++y) {
     for (int x = 0; x < mask.width(); ++x) {
       const float d = g.depth(x, y);
-      if (!std::isfinite(d) || d < 0) {
+      if (!(d >= 0 && d <= kMaxShipFrameM)) {
         fail(source, "depth", fmt::format("cell ({}, {}) is {}; expected metres >= 0", x, y, d));
       }
       const float c = g.coverage(x, y);

@@ -7,7 +7,10 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
+#include <set>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/io/geo_reference.hpp"
@@ -84,9 +87,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadExport{{"--origin", "53.5;9.9;0", "--heading", "0"},
                   "hullinspect: --origin: expects LAT,LON,ALT in degrees, degrees, metres (got "
                   "'53.5;9.9;0')"},
-        BadExport{{"--origin", "95,9.9,0", "--heading", "0"},
-                  "hullinspect: --origin: expects LAT,LON,ALT with LAT in [-90, 90] and LON in "
-                  "[-180, 180] (got 95,9.9,0)"},
+        BadExport{
+            {"--origin", "95,9.9,0", "--heading", "0"},
+            "hullinspect: --origin: expects LAT,LON,ALT in degrees, degrees, metres: LAT must "
+            "be a number in [-90, 90] (got '95')"},
         BadExport{{"--origin", "1,2,3", "--heading", "x"},
                   "hullinspect: --heading: must be a number in [-360, 360] (got 'x') (see --help)"},
         BadExport{{"--geo", "/nonexistent/geo.yaml"},
@@ -156,7 +160,7 @@ TEST_F(ExportCli, RejectsATraceThatCannotBePlacedInMetres) {
   auto r = run_cli({"export", path, "--out", dir_ + "/never"});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err,
-            "hullinspect: " + path + ": grid.cell_size_m: expected a positive number of metres\n");
+            "hullinspect: " + path + ": grid.cell_size_m: expected metres in [0.001, 1000]\n");
   bad = good;
   bad["camera"]["theta_deg"] = 180;
   io::write_file_atomic(path, bad.dump());
@@ -171,8 +175,20 @@ TEST_F(ExportCli, NoFlyPositionsAreNeverAFenceAndTheKmlDrawsThemAsBoxes) {
   const int width = trace["grid"]["width"].get<int>();
   std::vector<std::string> rows(trace["grid"]["height"].get<std::size_t>(),
                                 std::string(width, '.'));
-  rows[4][10] = '#';
-  rows[7][200] = '#';
+  // Two cells no UAV of the flown mission was ever on (the reader refuses a UAV on a no-fly cell).
+  std::set<std::pair<int, int>> visited;
+  for (const auto& f : trace["frames"]) {
+    const auto& u = f["u"];
+    for (std::size_t k = 0; k < u.size(); k += 5)
+      visited.insert({u[k].get<int>(), u[k + 1].get<int>()});
+  }
+  std::vector<std::pair<int, int>> cells;
+  for (const auto& [x, y] : {std::pair{10, 4}, std::pair{200, 7}}) {
+    int free_x = x;
+    while (visited.contains({free_x, y})) ++free_x;
+    cells.push_back({free_x, y});
+    rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(free_x)] = '#';
+  }
   trace["no_fly"] = rows;
   const std::string path = dir_ + "/nofly.json";
   io::write_file_atomic(path, trace.dump());
@@ -191,7 +207,6 @@ TEST_F(ExportCli, NoFlyPositionsAreNeverAFenceAndTheKmlDrawsThemAsBoxes) {
   pugi::xml_document kml;
   ASSERT_TRUE(kml.load_file((dir_ + "/fence/mission.kml").c_str()));
   const io::GeoReference geo({10, 20, 0}, 30);
-  const std::vector<std::pair<int, int>> cells = {{10, 4}, {200, 7}};
   std::size_t i = 0;
   for (const auto folder : kml.child("kml").child("Document").children("Folder")) {
     if (std::string(folder.child_value("name")) != "No-fly zones") continue;

@@ -176,5 +176,43 @@ TEST(ReadFile, StopsAtItsLimitAndRefusesDirectories) {
   }
 }
 
+// What the CLI's SIGINT/SIGTERM handler calls: every temporary written but not yet renamed into
+// place is listed and removed; a committed output is no longer listed and stays.
+TEST(OutputSet, PendingTemporariesAreListedUntilCommitted) {
+  const fs::path dir = testing::make_temp_dir("output_set_pending");
+  const auto temporaries = [&] {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir)) {
+      n += e.path().filename().string().find(".tmp-") != std::string::npos ? 1 : 0;
+    }
+    return n;
+  };
+  ASSERT_EQ(pending_temporaries(), 0u);
+  {
+    OutputSet set;
+    set.add_output(dir / "a.txt", "a");
+    set.add_output(dir / "b.txt", "b");
+    set.check();
+    set.write(dir / "a.txt", "a");
+    set.write(dir / "b.txt", "b");
+    EXPECT_EQ(pending_temporaries(), 2u);
+    EXPECT_EQ(temporaries(), 2);
+    remove_pending_temporaries();  // as the signal handler does
+    EXPECT_EQ(temporaries(), 0);
+  }
+  EXPECT_EQ(pending_temporaries(), 0u);
+  {
+    OutputSet set;
+    set.add_output(dir / "c.txt", "c");
+    set.check();
+    set.write(dir / "c.txt", "c");
+    set.commit();
+    EXPECT_EQ(pending_temporaries(), 0u);
+    remove_pending_temporaries();
+    EXPECT_TRUE(fs::exists(dir / "c.txt"));
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace hullinspect::io

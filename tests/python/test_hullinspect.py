@@ -345,6 +345,11 @@ class PythonPlanners(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "not a subclass"):
             hullinspect.register_planner("test-object", object)
 
+    def test_names_that_need_quoting_are_refused(self):
+        for name in ["", "two\nlines", 'say "hi"', "it's", "a,b"]:
+            with self.assertRaisesRegex(ValueError, "a planner name must be 1 to 64 letters"):
+                hullinspect.register_planner(name, GoEast)
+
 
 def small_hull():
     with tempfile.TemporaryDirectory() as tmp:

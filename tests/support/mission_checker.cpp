@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <set>
 
+#include "hullinspect/sim/uav_rules.hpp"
+
 namespace hullinspect::testing {
 
 void MissionChecker::fail(const std::string& what) {
@@ -17,8 +19,10 @@ void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner
   last_c_ = sim.c_percent();
   last_m_ = sim.m_percent();
   for (const auto& u : sim.uavs()) {
-    if (!sim.hull().is_hull(u.pos)) fail(fmt::format("UAV starts off the hull at ({}, {})", u.pos.x, u.pos.y));
-    if (sim.no_fly(u.pos)) fail(fmt::format("UAV starts on the no-fly position ({}, {})", u.pos.x, u.pos.y));
+    if (!sim.hull().is_hull(u.pos))
+      fail(fmt::format("UAV starts off the hull at ({}, {})", u.pos.x, u.pos.y));
+    if (sim.no_fly(u.pos))
+      fail(fmt::format("UAV starts on the no-fly position ({}, {})", u.pos.x, u.pos.y));
   }
 }
 
@@ -26,9 +30,12 @@ namespace {
 bool forward(std::int8_t before, std::int8_t after) {
   if (before == after) return true;
   switch (before) {
-    case sim::kUnknown: return after == sim::kClean || after == sim::kCorrosionSeen || after == sim::kInspected;
-    case sim::kCorrosionSeen: return after == sim::kClean || after == sim::kInspected;
-    default: return false;
+    case sim::kUnknown:
+      return after == sim::kClean || after == sim::kCorrosionSeen || after == sim::kInspected;
+    case sim::kCorrosionSeen:
+      return after == sim::kClean || after == sim::kInspected;
+    default:
+      return false;
   }
 }
 }  // namespace
@@ -40,19 +47,16 @@ void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&
   for (std::size_t k = 0; k < uavs.size(); ++k) {
     const auto& before = last_uavs_[k];
     const auto& after = uavs[k];
-    const int moved = grid::manhattan(before.pos, after.pos);
-    if (moved > 1) fail(fmt::format("t={} UAV {} jumped {} cells", t, k, moved));
-    if (moved == 1 && (before.in_transit() || before.failed)) {
-      fail(fmt::format("t={} UAV {} moved while changing plane or failed", t, k));
+    if (auto broken = sim::step_violation(before, after, sim.plane_change_steps())) {
+      fail(fmt::format("t={} UAV {} {}", t, k, *broken));
     }
-    if (moved == 1 && before.z != after.z) fail(fmt::format("t={} UAV {} moved and changed plane", t, k));
+    if (auto broken = sim::state_violation(after, sim.plane_change_steps())) {
+      fail(fmt::format("t={} UAV {} {}", t, k, *broken));
+    }
     if (!sim.map().contains(after.pos)) fail(fmt::format("t={} UAV {} off the grid", t, k));
     if (sim.map().contains(after.pos) && sim.no_fly(after.pos)) {
-      fail(fmt::format("t={} UAV {} on the no-fly position ({}, {})", t, k, after.pos.x, after.pos.y));
-    }
-    if (after.z != 1 && after.z != 2) fail(fmt::format("t={} UAV {} on plane {}", t, k, after.z));
-    if (after.transit_left < 0 || after.transit_left >= sim.plane_change_steps()) {
-      fail(fmt::format("t={} UAV {} has {} transit steps left", t, k, after.transit_left));
+      fail(fmt::format("t={} UAV {} on the no-fly position ({}, {})", t, k, after.pos.x,
+                       after.pos.y));
     }
   }
   const auto& map = sim.map();
@@ -64,11 +68,13 @@ void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&
                        map.cell(i).y, last_map_[i], map[i]));
     }
     if ((last_map_[i] != map[i]) != (changed.count(i) == 1)) {
-      fail(fmt::format("t={} changed-cell list wrong at ({}, {})", t, map.cell(i).x, map.cell(i).y));
+      fail(
+          fmt::format("t={} changed-cell list wrong at ({}, {})", t, map.cell(i).x, map.cell(i).y));
     }
     if (map[i] == sim::kClean || map[i] == sim::kInspected) ++known;
   }
-  if (known != sim.known_cells()) fail(fmt::format("t={} known cells {} but rescan finds {}", t, sim.known_cells(), known));
+  if (known != sim.known_cells())
+    fail(fmt::format("t={} known cells {} but rescan finds {}", t, sim.known_cells(), known));
   if (sim.c_percent() < last_c_) fail(fmt::format("t={} c decreased", t));
   if (sim.m_percent() < last_m_) fail(fmt::format("t={} m decreased", t));
   last_c_ = sim.c_percent();

@@ -10,8 +10,8 @@
 
 namespace hullinspect::testing {
 
-/// Checks after every step: each UAV moved at most one cell (none while changing plane or failed),
-/// stayed on the grid with z ∈ {1, 2} and off every no-fly position; M only moved forward (0 → 1/2/3, 2 → 1/3, 1 and 3 final,
+/// Checks after every step: each UAV followed the model's motion rules (sim/uav_rules.hpp, the
+/// rules the trace reader applies too), stayed on the grid and off every no-fly position; M only moved forward (0 → 1/2/3, 2 → 1/3, 1 and 3 final,
 /// −1 fixed); the simulator's changed-cell list is exactly the set of cells that changed; c and m
 /// never decrease; the simulator's counters agree with a rescan of M.
 class MissionChecker final : public planners::MissionObserver {

@@ -119,7 +119,14 @@ TEST(HullGeometry, BadFilesNameTheField) {
   EXPECT_EQ(with([](auto& d) { d["version"] = 2; }), "h.json: version: expected 1");
   EXPECT_EQ(with([](auto& d) { d.erase("cell_size"); }), "h.json: cell_size: missing");
   EXPECT_EQ(with([](auto& d) { d["cell_size"] = -1; }),
-            "h.json: cell_size: must be a positive number of metres");
+            "h.json: cell_size: must be metres in [0.001, 1000] (got -1)");
+  // The ship frame's bounds (world/ship_frame_bounds.hpp): exports stay finite.
+  EXPECT_EQ(with([](auto& d) { d["cell_size"] = 1e-320; }),
+            "h.json: cell_size: must be metres in [0.001, 1000] (got 1e-320)");
+  EXPECT_EQ(with([](auto& d) { d["origin"] = {1e308, 0}; }),
+            "h.json: origin: must be metres in [-100000, 100000] (got [1e+308, 0])");
+  EXPECT_EQ(with([](auto& d) { d["side_plane_y"] = -2e5; }),
+            "h.json: side_plane_y: must be metres in [-100000, 100000] (got -200000)");
   EXPECT_EQ(with([](auto& d) { d["width"] = 0; }), "h.json: width: expected an integer in 1..4096");
   EXPECT_EQ(with([](auto& d) { d["mask"][0].push_back(1); }),
             "h.json: mask: row 0 must have 3 values");

@@ -19,6 +19,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hullinspect/files/pending_temporaries.hpp"
+
 namespace hullinspect::io {
 
 class OutputSet {
@@ -48,6 +50,7 @@ class OutputSet {
     std::string option;
     bool directory = false;
     std::filesystem::path temporary;  // empty until written
+    PendingTemporary pending;         // lists `temporary` for a signal handler until renamed
   };
   // The declared output directory that is `path`'s parent, or nullptr.
   const Entry* declared_parent_dir(const std::filesystem::path& path) const;

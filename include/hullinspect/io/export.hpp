@@ -70,8 +70,9 @@ struct ExportPlan {
   bool is_hull(grid::Cell c) const;
 };
 
-/// Builds the plan of a validated trace.
-ExportPlan export_plan(const nlohmann::json& trace);
+/// Builds the plan of a validated trace; `source` (the trace or hull file the geometry came from)
+/// is named when a waypoint's coordinates cannot be represented.
+ExportPlan export_plan(const nlohmann::json& trace, const std::string& source = "trace");
 
 struct ExportFile {
   std::string name;  ///< file name inside the output directory

@@ -8,6 +8,15 @@
 
 namespace hullinspect::io {
 
+/// The geo-reference's accepted ranges, the same for --origin/--heading and a --geo file: latitude
+/// [−90, 90]°, longitude [−180, 180]°, height above the ellipsoid [−1 000, 10 000] m (sea level is
+/// within ±110 m of it everywhere), heading [−360, 360]°.
+inline constexpr double kMaxLatitudeDeg = 90;
+inline constexpr double kMaxLongitudeDeg = 180;
+inline constexpr double kMinOriginAltM = -1000;
+inline constexpr double kMaxOriginAltM = 10000;
+inline constexpr double kMaxHeadingDeg = 360;
+
 struct Enu {
   double east = 0;
   double north = 0;
@@ -22,8 +31,7 @@ struct GeoPoint {
 
 class GeoReference {
  public:
-  /// Throws ParameterError("origin" / "heading") when lat ∉ [−90, 90], lon ∉ [−180, 180],
-  /// alt or heading is not finite.
+  /// Throws ParameterError("origin" / "heading") when a value is outside the ranges above.
   GeoReference(GeoPoint origin, double heading_deg);
   GeoReference(const GeoReference& other);
   GeoReference& operator=(const GeoReference& other);
@@ -35,6 +43,8 @@ class GeoReference {
   Enu to_enu(double x, double y, double z) const;
   /// Ship-frame coordinates of an ENU point (the inverse rotation).
   void from_enu(const Enu& enu, double& x, double& y, double& z) const;
+  /// Throws ParameterError("origin") when the point has no finite WGS-84 coordinates (never for
+  /// ship-frame points within ±world::kMaxShipFrameM).
   GeoPoint to_wgs84(double x, double y, double z) const;
   /// Ship-frame coordinates of a WGS-84 point (GeographicLib's inverse).
   void from_wgs84(const GeoPoint& p, double& x, double& y, double& z) const;
@@ -54,7 +64,8 @@ class GeoReference {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Parses "LAT,LON,ALT" (degrees, degrees, metres) for --origin; throws ParameterError("origin").
+/// Parses "LAT,LON,ALT" (degrees, degrees, metres) for --origin with the number rules of
+/// core/numbers.hpp and the ranges above; throws ParameterError("origin").
 GeoPoint parse_geo_origin(const std::string& text);
 
 }  // namespace hullinspect::io

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <string>
 
 #include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/grid.hpp"
@@ -39,13 +40,17 @@ struct ShipFrameSpec {
   grid::Grid<double> depth;              ///< per cell, metres; empty = 0 everywhere
   /// Per cell outward unit normal (ship frame); empty = the side's normal (0, ±1, 0).
   grid::Grid<std::array<double, 3>> normal;
+  /// The file these numbers came from (a trace, a hull), named by errors.
+  std::string source = "trace";
 };
 
 class ShipFrame {
  public:
   explicit ShipFrame(ShipFrameSpec spec);
 
-  /// The pose of a UAV at cell (x, y) on plane z ∈ {1, 2}.
+  /// The pose of a UAV at cell (x, y) on plane z ∈ {1, 2}. Throws InputError(spec.source) when a
+  /// coordinate is not finite or lies beyond ±world::kMaxShipFrameM (a cell size, θ or origin
+  /// that no export can represent), so no writer ever sees such a number.
   ShipPose pose(grid::Cell cell, int z) const;
   /// ζ_z in metres.
   double standoff_m(int z) const;
@@ -69,6 +74,7 @@ class ShipFrame {
 
 /// The ship frame a trace's mission was flown in: its grid, footprints, θ (`camera.theta_deg`,
 /// else `parameters.theta`, else 90°) and, when the trace has one, its `ship_frame` geometry.
-ShipFrameSpec ship_frame_spec(const nlohmann::json& trace);
+/// `source` names the file in errors.
+ShipFrameSpec ship_frame_spec(const nlohmann::json& trace, const std::string& source = "trace");
 
 }  // namespace hullinspect::io
