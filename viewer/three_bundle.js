@@ -4,6 +4,6 @@ export {
   AmbientLight, BufferAttribute, BufferGeometry, Color, DirectionalLight, DoubleSide, Group,
   LineBasicMaterial, LineDashedMaterial, LineSegments, Line, Mesh, MeshBasicMaterial,
   MeshLambertMaterial, PerspectiveCamera, Scene, SphereGeometry, Vector3, WebGLRenderer,
-  Box3, CanvasTexture, Sprite, SpriteMaterial,
+  Box3, CanvasTexture, Raycaster, Sprite, SpriteMaterial,
 } from 'three';
 export {OrbitControls} from 'three/examples/jsm/controls/OrbitControls.js';

@@ -165,8 +165,10 @@
       const radius = Math.max(0.45 * cell, 0.006 * this.box.getSize(new T.Vector3()).length());
       const sphere = new T.SphereGeometry(radius, 16, 12);
       this.uavs = [];
+      this.failedColor = new T.Color(0.6, 0.6, 0.6); // a failed UAV is grey, as in the 2D view
       for (let u = 0; u < k; ++u) {
-        const color = new T.Color(uavColor(u));
+        // CSS colours as they are: the renderer outputs linear values unchanged (see constructor).
+        const color = new T.Color().setStyle(uavColor(u), 'srgb-linear');
         const mesh = new T.Mesh(sphere, new T.MeshBasicMaterial({color}));
         const sight = new T.Line(new T.BufferGeometry(), new T.LineBasicMaterial({color}));
         sight.geometry.setAttribute('position', new T.BufferAttribute(new Float32Array(6), 3));
@@ -285,7 +287,7 @@
         u.mesh.position.set(p[0], p[1], p[2]);
         u.label.position.set(p[0], p[1], p[2]);
         u.label.visible = this.show.labels;
-        u.mesh.material.color.set(s.active ? u.color : 0x999999);
+        u.mesh.material.color.copy(s.active ? u.color : this.failedColor);
         const sight = u.sight.geometry.attributes.position;
         sight.array.set(p, 0);
         this.lifted(i, 0, sight.array, 3);

@@ -1,0 +1,294 @@
+// Browser test of the replay viewer's 3D view: Debian's Chromium (WebGL by its software renderer)
+// driven by playwright-core, no network. Run by CTest as `viewer_browser_3d`, or by hand:
+//   HULLINSPECT_CLI=build/release/hullinspect node --test viewer/test/viewer3d.test.mjs
+// Screenshots go to $HULLINSPECT_TEST_OUTPUT (default: a new temporary folder).
+
+import {after, before, test} from 'node:test';
+import assert from 'node:assert/strict';
+import {spawnSync} from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+import {mapAt} from './synthetic_trace.mjs';
+
+const CLI = process.env.HULLINSPECT_CLI;
+const CHROMIUM = process.env.HULLINSPECT_CHROMIUM || '/usr/bin/chromium';
+const OUT = process.env.HULLINSPECT_TEST_OUTPUT ||
+    fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-viewer3d-test-'));
+
+// The viewer's colours (viewer/palette.js, docs/viewer.md), written out again on purpose.
+const BACKGROUND = [245, 246, 248];
+const INSPECTED = [46, 160, 67];
+const REGIONS = [
+  [150, 105, 195], [40, 150, 150], [210, 100, 150], [140, 140, 45], [150, 75, 85], [60, 125, 95],
+  [165, 85, 125], [175, 150, 60], [185, 120, 200], [35, 115, 125], [200, 135, 160], [120, 60, 120],
+];
+const tint = (c) => c.map((v) => Math.round(v * (1 - 0.62) + 255 * 0.62));
+const shade = (c) => c.map((v) => Math.round(v * (1 - 0.3)));
+
+// WebGL without a GPU: Chromium's SwiftShader.
+const BROWSER_ARGS = [
+  '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-quic',
+  '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync',
+];
+
+let context;
+let userDataDir;
+let dtc; // {trace, html, plainHtml}
+let mask; // {trace, html}
+
+function cli(args) {
+  return spawnSync(CLI, args, {encoding: 'utf8'});
+}
+
+before(async () => {
+  assert.ok(CLI, 'set HULLINSPECT_CLI to the hullinspect binary (CTest does)');
+  let chromium;
+  try {
+    ({chromium} = await import('playwright-core'));
+  } catch (e) {
+    assert.fail(`playwright-core is not installed: run scripts/setup (npm ci in viewer/test): ${e.message}`);
+  }
+  fs.mkdirSync(OUT, {recursive: true});
+  // 16 UAVs on the DTC container ship (a hull imported from a mesh), lawnmower (regions).
+  const tracePath = path.join(OUT, 'dtc-16.json');
+  let r = cli(['run', '--hull', 'dtc', '--uavs', '16', '--seed', '3', '--trace', tracePath]);
+  assert.equal(r.status, 0, r.stderr);
+  const html = path.join(OUT, 'dtc-16-3d.html');
+  r = cli(['view', tracePath, '--3d', '--out', html]);
+  assert.equal(r.status, 0, r.stderr);
+  const plainHtml = path.join(OUT, 'dtc-16.html');
+  r = cli(['view', tracePath, '--out', plainHtml]);
+  assert.equal(r.status, 0, r.stderr);
+  dtc = {trace: JSON.parse(fs.readFileSync(tracePath, 'utf8')), html, plainHtml};
+  // A mission on the default mask hull: no 3D geometry.
+  const maskTrace = path.join(OUT, 'mask-4.json');
+  r = cli(['run', '--uavs', '4', '--seed', '3', '--trace', maskTrace]);
+  assert.equal(r.status, 0, r.stderr);
+  const maskHtml = path.join(OUT, 'mask-4.html');
+  r = cli(['view', maskTrace, '--out', maskHtml]);
+  assert.equal(r.status, 0, r.stderr);
+  mask = {trace: maskTrace, html: maskHtml};
+
+  userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-chromium-'));
+  context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: CHROMIUM,
+    headless: true,
+    args: BROWSER_ARGS,
+    viewport: {width: 1400, height: 900},
+    deviceScaleFactor: 1,
+  });
+  await context.route('**/*', (route) =>
+    route.request().url().startsWith('file:') ? route.continue() : route.abort());
+});
+
+after(async () => {
+  if (context) await context.close();
+  if (userDataDir) fs.rmSync(userDataDir, {recursive: true, force: true});
+});
+
+async function open(file) {
+  const page = await context.newPage();
+  const requests = [];
+  const errors = [];
+  page.on('request', (r) => requests.push(r.url()));
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(`file://${file}`);
+  await page.waitForFunction(() => window.hullViewer && (window.hullViewer.ready || window.hullViewer.error));
+  assert.equal(await page.evaluate(() => window.hullViewer.error), null);
+  await settle(page);
+  assert.deepEqual(errors, []);
+  return {page, requests};
+}
+
+async function settle(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+
+// The 3D canvas's pixels: how many differ from the background, and the colour at given points.
+async function canvasPixels(page, points = []) {
+  return page.evaluate((points) => {
+    const source = window.hullViewer.view3d().renderer.domElement;
+    const c = document.createElement('canvas');
+    c.width = source.width;
+    c.height = source.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(source, 0, 0);
+    const data = ctx.getImageData(0, 0, c.width, c.height).data;
+    let drawn = 0;
+    for (let p = 0; p < data.length; p += 4) {
+      if (Math.abs(data[p] - 245) + Math.abs(data[p + 1] - 246) + Math.abs(data[p + 2] - 248) > 6) ++drawn;
+    }
+    const at = points.map(([x, y]) => {
+      const p = (Math.round(y) * c.width + Math.round(x)) * 4;
+      return [data[p], data[p + 1], data[p + 2]];
+    });
+    return {drawn, total: c.width * c.height, at, width: c.width, height: c.height};
+  }, points);
+}
+
+// Screen pixel of each ship-frame point in the 3D view, and whether the hull hides it (the first
+// surface a ray from the camera meets is more than 5 cm before it).
+async function project(page, points) {
+  return page.evaluate((points) => {
+    const v = window.hullViewer.view3d();
+    const canvas = v.renderer.domElement;
+    const ray = new THREE_VIEW.Raycaster();
+    return points.map((p) => {
+      const point = new THREE_VIEW.Vector3(...p);
+      const q = point.clone().project(v.camera);
+      ray.setFromCamera({x: q.x, y: q.y}, v.camera);
+      const hit = ray.intersectObject(v.hullMesh)[0];
+      const hidden = hit !== undefined && hit.distance < v.camera.position.distanceTo(point) - 0.05;
+      return [(q.x + 1) / 2 * canvas.width, (1 - q.y) / 2 * canvas.height, hidden];
+    });
+  }, points);
+}
+
+test('a mesh hull opens in 3D with view --3d, loads nothing, and toggles to 2D and back', async () => {
+  const {page, requests} = await open(dtc.html);
+  assert.deepEqual(requests.filter((u) => !u.startsWith('file:')), []);
+  assert.equal(await page.isVisible('#view3d canvas'), true);
+  assert.equal(await page.isVisible('#grid-canvas'), false);
+  assert.equal(await page.textContent('#btn-3d'), '2D');
+  await page.click('#btn-3d');
+  assert.equal(await page.isVisible('#grid-canvas'), true);
+  assert.equal(await page.isVisible('#view3d'), false);
+  await page.keyboard.press('d');
+  await settle(page);
+  assert.equal(await page.isVisible('#view3d canvas'), true);
+  await page.close();
+  // Without --3d the same page opens in 2D and offers 3D.
+  const plain = (await open(dtc.plainHtml)).page;
+  assert.equal(await plain.isVisible('#grid-canvas'), true);
+  assert.equal(await plain.isEnabled('#btn-3d'), true);
+  await plain.close();
+});
+
+test('a mask hull: 3D disabled with its reason, three.js not inlined, view --3d refused', async () => {
+  const {page} = await open(mask.html);
+  assert.equal(await page.isEnabled('#btn-3d'), false);
+  assert.match(await page.getAttribute('#btn-3d', 'title'), /3D unavailable: .*imported from a mesh/);
+  assert.equal(await page.evaluate(() => typeof THREE_VIEW), 'undefined');
+  await page.close();
+  const out = path.join(OUT, 'mask-3d.html');
+  const r = cli(['view', mask.trace, '--3d', '--out', out]);
+  assert.equal(r.status, 2);
+  assert.equal(r.stderr.trim().split('\n').length, 1);
+  assert.match(r.stderr, /--3d: .* mask hull without 3D geometry/);
+  assert.equal(fs.existsSync(out), false);
+  // What three.js adds to a page with 3D geometry: the mesh hull's page against its trace.
+  const added = fs.statSync(dtc.html).size - fs.statSync(mask.html).size;
+  assert.ok(added > 300e3, `a 3D page is only ${added} bytes larger`);
+});
+
+test('the hull is drawn in the colours of M at the replay time, the UAVs in theirs', async () => {
+  const {page} = await open(dtc.html);
+  const trace = dtc.trace;
+  const W = trace.grid.width;
+  const H = trace.grid.height;
+  const {origin, side_plane_y: ys, depth} = trace.ship_frame;
+  const cell = trace.grid.cell_size_m;
+  const surface = (x, y) => [origin[0] + (x + 0.5) * cell, ys - depth[y][x], origin[1] + (y + 0.5) * cell];
+  const owner = (x, y) => {
+    const ch = trace.partition[y][x];
+    return ch >= 'A' ? ch.charCodeAt(0) - 55 : Number(ch);
+  };
+  await page.uncheck('#show-footprints');
+  await page.uncheck('#show-paths');
+  await page.uncheck('#show-labels');
+  const normal = trace.ship_frame.normal;
+  // Expected colour of a cell whose state does not depend on who saw it: M = 0 in its region's
+  // colour, M = 1 in its tint, M = 3 inspected; null for non-hull and M = 2.
+  const expected = (map, x, y) => {
+    const v = map[y * W + x];
+    const region = REGIONS[owner(x, y) % REGIONS.length];
+    return v === 0 ? region : v === 1 ? tint(region) : v === 3 ? INSPECTED : null;
+  };
+  // Cells whose 5 × 5 neighbourhood has the same colour and faces the side (not the bilge, seen
+  // at a grazing angle), so no pixel blends two colours, away from every UAV.
+  const uniformCells = (t) => {
+    const {map} = mapAt(trace, t);
+    const u = trace.frames[t].u;
+    const cells = [];
+    for (let y = 4; y < H - 4; y += 5) {
+      for (let x = 4 + (y % 3); x < W - 4; x += 23) {
+        const c = expected(map, x, y);
+        let ok = c !== null;
+        for (let dy = -2; dy <= 2 && ok; ++dy) {
+          for (let dx = -2; dx <= 2 && ok; ++dx) {
+            const d = expected(map, x + dx, y + dy);
+            ok = d !== null && d.every((v, j) => v === c[j]) && normal[y + dy][x + dx][1] < -0.9;
+          }
+        }
+        for (let o = 0; o < u.length && ok; o += 5) ok = Math.abs(u[o] - x) > 12 || Math.abs(u[o + 1] - y) > 12;
+        if (ok) cells.push({x, y, color: c, state: map[y * W + x]});
+      }
+    }
+    return cells;
+  };
+  for (const t of [0, 300, trace.frames.length - 1]) {
+    await page.evaluate((t) => window.hullViewer.seek(t), t);
+    await settle(page);
+    const projected = await project(page, uniformCells(t).map(({x, y}) => surface(x, y)));
+    const cells = uniformCells(t).filter((c, j) => !projected[j][2]);
+    assert.ok(cells.length >= 20, `only ${cells.length} cells to check at t = ${t}`);
+    const pixels = await canvasPixels(page, projected.filter((p) => !p[2]));
+    cells.forEach(({x, y, color, state}, j) => {
+      assert.deepEqual(pixels.at[j], color, `cell (${x}, ${y}) at t = ${t}, M = ${state}`);
+    });
+    // The hull fills a good part of the view; the background the rest.
+    assert.ok(pixels.drawn > 0.1 * pixels.total && pixels.drawn < 0.7 * pixels.total,
+              `${pixels.drawn} of ${pixels.total} pixels drawn at t = ${t}`);
+    // The states checked: at t = 0 unknown cells, at the end none.
+    const states = new Set(cells.map((c) => c.state));
+    if (t === 0) assert.ok(states.has(0));
+    if (t === trace.frames.length - 1) assert.ok(!states.has(0) && states.has(1), [...states].join());
+  }
+  // Each UAV at its stand-off position, in the dark shade of its region's colour.
+  const t = 300;
+  await page.evaluate((t) => window.hullViewer.seek(t), t);
+  await settle(page);
+  const u = trace.frames[t].u;
+  const theta = (trace.camera.theta_deg * Math.PI) / 180;
+  const uavPoints = [];
+  for (let o = 0; o < u.length; o += 5) {
+    const [x, y, z] = [u[o], u[o + 1], u[o + 2]];
+    const zeta = (trace.footprint[z - 1] * cell) / (2 * Math.tan(theta / 2));
+    const p = surface(x, y);
+    uavPoints.push([p[0], p[1] - zeta, p[2]]);
+  }
+  const pixels = await canvasPixels(page, await project(page, uavPoints));
+  pixels.at.forEach((got, k) => assert.deepEqual(got, shade(REGIONS[k % REGIONS.length]), `UAV ${k} at t = ${t}`));
+  await page.close();
+});
+
+test('zooming with the wheel brings the hull closer, dragging orbits it', async () => {
+  const {page} = await open(dtc.html);
+  const box = await page.locator('#view3d canvas').boundingBox();
+  const before = await canvasPixels(page);
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  for (let i = 0; i < 5; ++i) await page.mouse.wheel(0, -200);
+  await page.waitForTimeout(300);
+  const zoomed = await canvasPixels(page);
+  assert.ok(zoomed.drawn > 1.3 * before.drawn, `${before.drawn} → ${zoomed.drawn} pixels drawn`);
+  const camera = () => page.evaluate(() => window.hullViewer.view3d().camera.position.toArray());
+  const from = await camera();
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 200, box.y + box.height / 2 + 50, {steps: 5});
+  await page.mouse.up();
+  const to = await camera();
+  assert.ok(Math.hypot(...from.map((v, i) => v - to[i])) > 1, `camera ${from} → ${to}`);
+  await page.close();
+});
+
+test('screenshot of 16 UAVs on the DTC hull in 3D', async () => {
+  const {page} = await open(dtc.html);
+  await page.evaluate(() => window.hullViewer.seek(300));
+  await settle(page);
+  const file = path.join(OUT, 'viewer-3d-dtc-16.png');
+  await page.locator('#map-panel').screenshot({path: file});
+  assert.ok(fs.statSync(file).size > 20e3);
+  await page.close();
+});
