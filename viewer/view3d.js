@@ -121,6 +121,9 @@
         box.expandByPoint(new T.Vector3(...c[2]));
       });
       this.box = box;
+      this.hullPos = pos;
+      this.quadOf = new Int32Array(W * H).fill(-1); // cell → its quad in hullPos
+      this.hullCells.forEach((i, k) => { this.quadOf[i] = k; });
       const g = new T.BufferGeometry();
       g.setAttribute('position', new T.BufferAttribute(pos, 3));
       this.hullColors = new Float32Array(n * 18);
@@ -139,14 +142,15 @@
       const T = THREE_VIEW;
       const {W, H, cell} = this.geo;
       const k = this.replay.uavCount;
-      // Footprints: up to s2² tiles per UAV, a little off the surface so they are not hidden by it.
+      // Footprints: up to s2² copies of the hull's quads per UAV, drawn over the surface.
       const s2 = this.replay.trace.footprint[1];
       this.footprintPos = new Float32Array(k * s2 * s2 * 18);
       const fg = new T.BufferGeometry();
       fg.setAttribute('position', new T.BufferAttribute(this.footprintPos, 3));
       this.footprints = new T.Mesh(fg, new T.MeshBasicMaterial({
         color: new T.Color(...FOOTPRINT_COLOR.map((v) => v / 255)), transparent: true, opacity: 0.35,
-        side: T.DoubleSide, depthWrite: false}));
+        side: T.DoubleSide, depthWrite: false, polygonOffset: true, polygonOffsetFactor: -2,
+        polygonOffsetUnits: -4}));
       this.scene.add(this.footprints);
       // No-fly positions: dark tiles half-way between the surface and the detection plane.
       if (this.replay.noFly) {
@@ -228,7 +232,7 @@
       const size = this.box.getSize(new T.Vector3());
       const sign = this.replay.trace.ship_frame.side === 'port' ? 1 : -1;
       const halfWidth = Math.atan(Math.tan((this.camera.fov * Math.PI) / 360) * this.camera.aspect);
-      const d = Math.max((0.58 * size.x) / Math.tan(halfWidth), (0.8 * size.z) /
+      const d = Math.max((0.66 * size.x) / Math.tan(halfWidth), (0.8 * size.z) /
                          Math.tan((this.camera.fov * Math.PI) / 360));
       const dir = new T.Vector3(0.2, sign, 0.25).normalize();
       this.camera.position.copy(this.center).addScaledVector(dir, d);
@@ -277,7 +281,6 @@
       const {W, H} = this.geo;
       const fp = r.trace.footprint;
       let tiles = 0;
-      const lift = 0.02 * this.geo.cell;
       for (let k = 0; k < r.uavCount; ++k) {
         const s = r.uavState(t, k);
         const i = s.y * W + s.x;
@@ -306,8 +309,9 @@
         const half = (fp[s.z - 1] - 1) / 2;
         for (let y = Math.max(0, s.y - half); y <= Math.min(H - 1, s.y + half); ++y) {
           for (let x = Math.max(0, s.x - half); x <= Math.min(W - 1, s.x + half); ++x) {
-            if (r.map[y * W + x] < 0) continue;
-            this.tile(y * W + x, lift, this.footprintPos, tiles * 18);
+            const q = this.quadOf[y * W + x];
+            if (q < 0) continue;
+            this.footprintPos.set(this.hullPos.subarray(q * 18, q * 18 + 18), tiles * 18);
             ++tiles;
           }
         }
