@@ -6,7 +6,7 @@
 'use strict';
 
 (function (hv) {
-  const {COLORS, regionColor, regionTint, uavColor} = hv.palette;
+  const {cellColor, uavColor} = hv.palette;
   const PATH_LENGTH = 40; // steps of recent path behind each UAV, as in the 2D view
   const FOOTPRINT_COLOR = [40, 120, 255];
   const NO_FLY_COLOR = [17, 17, 17];
@@ -152,7 +152,7 @@
         side: T.DoubleSide, depthWrite: false, polygonOffset: true, polygonOffsetFactor: -2,
         polygonOffsetUnits: -4}));
       this.scene.add(this.footprints);
-      // No-fly positions: dark tiles half-way between the surface and the detection plane.
+      // No-fly positions: dark translucent tiles at the close-up stand-off.
       if (this.replay.noFly) {
         const cells = [];
         for (let i = 0; i < W * H; ++i) if (this.replay.noFly[i]) cells.push(i);
@@ -255,22 +255,12 @@
       for (const u of this.uavs) u.label.scale.set(48 * k, 32 * k, 1);
     }
 
-    cellColor(i) {
-      const r = this.replay;
-      const v = r.map[i];
-      if (v === 2) return r.firstSeen[i] <= r.t ? COLORS.corrosion : COLORS.priorOnly;
-      if (v === 3) return COLORS.inspected;
-      const o = r.owner && this.show.regions ? r.owner[i] : -1;
-      if (o >= 0) return v === 0 ? regionColor(o) : regionTint(o);
-      return v === 0 ? COLORS.unknown : COLORS.clean;
-    }
-
     // Everything that changes with the replay time, then one render.
     draw() {
       const r = this.replay;
       const t = r.t;
       this.hullCells.forEach((i, k) => {
-        const c = this.cellColor(i);
+        const c = cellColor(r, i, this.show.regions);
         for (let v = 0; v < 6; ++v) {
           this.hullColors[k * 18 + v * 3] = c[0] / 255;
           this.hullColors[k * 18 + v * 3 + 1] = c[1] / 255;

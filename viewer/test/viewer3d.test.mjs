@@ -298,23 +298,61 @@ test('screenshot of 16 UAVs on the DTC hull in 3D', async () => {
   await page.close();
 });
 
-// The picture in docs/viewer.md: a hull the repository may show (the DTC data is GPL-3+), the
-// Wigley hull of docs/hulls.md, 16 UAVs, footprints and paths at t = 30 s.
-test('screenshot of 16 UAVs on a Wigley hull in 3D', async () => {
+// A mission on the Wigley hull of docs/hulls.md (100 m × 8 m, 200 × 16 cells of 0.5 m), written
+// as a 3D page; `extra` are more `run` arguments.
+function wigleyPage(name, extra = []) {
   const stl = path.join(OUT, 'wigley.stl');
-  const tool = path.join(path.dirname(new URL(import.meta.url).pathname), '../../tools/make_wigley_hull.py');
-  let r = spawnSync('/usr/bin/python3', [tool, stl, '--length', '100', '--beam', '10', '--draft', '8'],
-                    {encoding: 'utf8'});
+  if (!fs.existsSync(stl)) {
+    const tool = path.join(path.dirname(new URL(import.meta.url).pathname), '../../tools/make_wigley_hull.py');
+    const r = spawnSync('/usr/bin/python3', [tool, stl, '--length', '100', '--beam', '10', '--draft', '8'],
+                        {encoding: 'utf8'});
+    assert.equal(r.status, 0, r.stderr);
+  }
+  const trace = path.join(OUT, `${name}.json`);
+  let r = cli(['run', '--hull', stl, '--uavs', '16', '--seed', '3', '--trace', trace, ...extra]);
   assert.equal(r.status, 0, r.stderr);
-  const trace = path.join(OUT, 'wigley-16.json');
-  r = cli(['run', '--hull', stl, '--uavs', '16', '--seed', '3', '--trace', trace]);
-  assert.equal(r.status, 0, r.stderr);
-  const html = path.join(OUT, 'wigley-16.html');
+  const html = path.join(OUT, `${name}.html`);
   r = cli(['view', trace, '--3d', '--out', html]);
   assert.equal(r.status, 0, r.stderr);
-  const {page} = await open(html);
+  return {html, trace: JSON.parse(fs.readFileSync(trace, 'utf8'))};
+}
+
+// The picture in docs/viewer.md: a hull the repository may show (the DTC data is GPL-3+), the
+// Wigley hull, 16 UAVs, footprints and paths at t = 30 s.
+test('screenshot of 16 UAVs on a Wigley hull in 3D', async () => {
+  const {page} = await open(wigleyPage('wigley-16').html);
   await page.evaluate(() => window.hullViewer.seek(30));
   await settle(page);
   await screenshot(page, 'viewer-3d-wigley-16');
+  await page.close();
+});
+
+test('no-fly positions darken the view exactly where they are', async () => {
+  const {html, trace} = wigleyPage('wigley-no-fly', ['--no-fly-box', '90,4,100,10']);
+  const {page} = await open(html);
+  await page.uncheck('#show-labels');
+  await page.uncheck('#show-paths');
+  await page.uncheck('#show-footprints');
+  const W = trace.grid.width;
+  const noFly = trace.no_fly.join('');
+  assert.equal([...noFly].filter((c) => c === '#').length, 11 * 7);
+  assert.equal(await page.evaluate(() => window.hullViewer.view3d().noFly.geometry.attributes.position.count),
+               11 * 7 * 6);
+  // Each cell's point out at the close-up stand-off, seen with and without the no-fly tiles.
+  const {origin, side_plane_y: ys, depth} = trace.ship_frame;
+  const cell = trace.grid.cell_size_m;
+  const zeta1 = (trace.footprint[0] * cell) / (2 * Math.tan((trace.camera.theta_deg * Math.PI) / 360));
+  const cells = [[95, 7], [93, 6], [98, 8], [40, 7], [150, 8], [95, 14]];
+  const points = cells.map(([x, y]) => [origin[0] + (x + 0.5) * cell, ys - depth[y][x] - zeta1,
+    origin[1] + (y + 0.5) * cell]);
+  const at = await project(page, points);
+  const shown = (await canvasPixels(page, at)).at;
+  await page.evaluate(() => { const v = window.hullViewer.view3d(); v.noFly.visible = false; v.render(); });
+  const hidden = (await canvasPixels(page, at)).at;
+  cells.forEach(([x, y], j) => {
+    const inside = noFly[y * W + x] === '#';
+    const darker = shown[j].every((v, d) => v < 0.8 * hidden[j][d]);
+    assert.equal(darker, inside, `cell (${x}, ${y}): ${shown[j]} with the no-fly tiles, ${hidden[j]} without`);
+  });
   await page.close();
 });
