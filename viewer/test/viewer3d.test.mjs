@@ -10,10 +10,10 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
+import {Browser, settle} from './browser.mjs';
 import {mapAt} from './synthetic_trace.mjs';
 
 const CLI = process.env.HULLINSPECT_CLI;
-const CHROMIUM = process.env.HULLINSPECT_CHROMIUM || '/usr/bin/chromium';
 const OUT = process.env.HULLINSPECT_TEST_OUTPUT ||
     fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-viewer3d-test-'));
 
@@ -33,8 +33,7 @@ const BROWSER_ARGS = [
   '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync',
 ];
 
-let context;
-let userDataDir;
+let browser;
 let dtc; // {trace, html, plainHtml}
 let mask; // {trace, html}
 
@@ -44,12 +43,6 @@ function cli(args) {
 
 before(async () => {
   assert.ok(CLI, 'set HULLINSPECT_CLI to the hullinspect binary (CTest does)');
-  let chromium;
-  try {
-    ({chromium} = await import('playwright-core'));
-  } catch (e) {
-    assert.fail(`playwright-core is not installed: run scripts/setup (npm ci in viewer/test): ${e.message}`);
-  }
   fs.mkdirSync(OUT, {recursive: true});
   // 16 UAVs on the DTC container ship (a hull imported from a mesh), lawnmower (regions).
   const tracePath = path.join(OUT, 'dtc-16.json');
@@ -71,40 +64,14 @@ before(async () => {
   assert.equal(r.status, 0, r.stderr);
   mask = {trace: maskTrace, html: maskHtml};
 
-  userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-chromium-'));
-  context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: CHROMIUM,
-    headless: true,
-    args: BROWSER_ARGS,
-    viewport: {width: 1400, height: 900},
-    deviceScaleFactor: 1,
-  });
-  await context.route('**/*', (route) =>
-    route.request().url().startsWith('file:') ? route.continue() : route.abort());
+  browser = await Browser.launch(BROWSER_ARGS);
 });
 
 after(async () => {
-  if (context) await context.close();
-  if (userDataDir) fs.rmSync(userDataDir, {recursive: true, force: true});
+  if (browser) await browser.close();
 });
 
-async function open(file) {
-  const page = await context.newPage();
-  const requests = [];
-  const errors = [];
-  page.on('request', (r) => requests.push(r.url()));
-  page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(`file://${file}`);
-  await page.waitForFunction(() => window.hullViewer && (window.hullViewer.ready || window.hullViewer.error));
-  assert.equal(await page.evaluate(() => window.hullViewer.error), null);
-  await settle(page);
-  assert.deepEqual(errors, []);
-  return {page, requests};
-}
-
-async function settle(page) {
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-}
+const open = (file) => browser.open(file);
 
 // The 3D canvas's pixels: how many differ from the background, and the colour at given points.
 async function canvasPixels(page, points = []) {
