@@ -11,6 +11,8 @@
   const FOOTPRINT_COLOR = [40, 120, 255];
   const NO_FLY_COLOR = [17, 17, 17];
   const BACKGROUND = [245, 246, 248];
+  const LABEL_SIZE = [40, 26]; // a UAV's number, screen pixels
+  const LABEL_LIFT = 0.6; // gap between a UAV and its label, in label heights
 
   // Per cell of the grid: its 3D surface point, outward normal and the unit direction in which
   // the UAVs stand off from it, in the ship frame (X stern → bow, Y to port, Z up), in metres.
@@ -189,23 +191,22 @@
     label(text, color) {
       const T = THREE_VIEW;
       const canvas = document.createElement('canvas');
-      canvas.width = 48;
-      canvas.height = 32;
+      const [w, h] = LABEL_SIZE;
+      [canvas.width, canvas.height] = [w, h];
       const ctx = canvas.getContext('2d');
       ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
-      ctx.fillRect(0, 0, 48, 32);
+      ctx.fillRect(0, 0, w, h);
       ctx.strokeStyle = color;
       ctx.lineWidth = 3;
-      ctx.strokeRect(1.5, 1.5, 45, 29);
+      ctx.strokeRect(1.5, 1.5, w - 3, h - 3);
       ctx.fillStyle = color;
-      ctx.font = 'bold 22px sans-serif';
+      ctx.font = `bold ${Math.round(0.7 * h)}px sans-serif`;
       ctx.textAlign = 'center';
       ctx.textBaseline = 'middle';
-      ctx.fillText(text, 24, 17);
+      ctx.fillText(text, w / 2, h / 2 + 1);
       const texture = new T.CanvasTexture(canvas);
       texture.colorSpace = 'srgb-linear';
       const sprite = new T.Sprite(new T.SpriteMaterial({map: texture, sizeAttenuation: false, depthTest: false}));
-      sprite.center.set(0.5, -0.6); // above the UAV
       sprite.renderOrder = 1;
       return sprite;
     }
@@ -249,10 +250,10 @@
         if (this.controls) this.controls.update();
         this.framed = true;
       }
-      // Labels of 48 × 32 screen pixels: a sprite without size attenuation of scale s covers
+      // Labels of LABEL_SIZE screen pixels: a sprite without size attenuation of scale s covers
       // s / (2·tan(fov/2)) of the view's height.
       const k = (2 * Math.tan((this.camera.fov * Math.PI) / 360)) / height;
-      for (const u of this.uavs) u.label.scale.set(48 * k, 32 * k, 1);
+      for (const u of this.uavs) u.label.scale.set(LABEL_SIZE[0] * k, LABEL_SIZE[1] * k, 1);
     }
 
     // Everything that changes with the replay time, then one render.
@@ -311,7 +312,38 @@
       this.render();
     }
 
-    render() { this.renderer.render(this.scene, this.camera); }
+    // Labels of UAVs close together on screen are stacked upwards so none covers another:
+    // left to right, each goes on the lowest row where it overlaps no label placed before.
+    // labelBoxes keeps the boxes (canvas pixels) for the browser test.
+    placeLabels() {
+      const T = THREE_VIEW;
+      const canvas = this.renderer.domElement;
+      const width = canvas.clientWidth;
+      const height = canvas.clientHeight;
+      const [w, h, gap] = [LABEL_SIZE[0], LABEL_SIZE[1], 2];
+      const anchors = [];
+      this.uavs.forEach((u, k) => {
+        if (!u.label.visible) return;
+        const q = new T.Vector3().copy(u.mesh.position).project(this.camera);
+        anchors.push({k, x: ((q.x + 1) / 2) * width, y: ((1 - q.y) / 2) * height});
+      });
+      anchors.sort((a, b) => a.x - b.x || a.k - b.k);
+      this.labelBoxes = [];
+      for (const a of anchors) {
+        let row = 0;
+        const box = (r) => ({k: a.k, x: a.x - w / 2, y: a.y - LABEL_LIFT * h - r * (h + gap) - h, w, h});
+        const clash = (b) => this.labelBoxes.some((o) => b.x < o.x + o.w && o.x < b.x + b.w &&
+                                                           b.y < o.y + o.h && o.y < b.y + b.h);
+        while (clash(box(row))) ++row;
+        this.uavs[a.k].label.center.set(0.5, -LABEL_LIFT - row * (1 + gap / h));
+        this.labelBoxes.push(box(row));
+      }
+    }
+
+    render() {
+      this.placeLabels();
+      this.renderer.render(this.scene, this.camera);
+    }
   }
 
   hv.View3d = View3d;

@@ -250,6 +250,34 @@ test('zooming with the wheel brings the hull closer, dragging orbits it', async 
   await page.close();
 });
 
+test('the 16 UAVs\' labels on the DTC hull never cover one another', async () => {
+  const {page} = await open(dtc.html);
+  const last = dtc.trace.frames.length - 1;
+  const result = await page.evaluate((last) => {
+    const v = window.hullViewer.view3d();
+    const problems = [];
+    let labels = 0;
+    for (let t = 0; t <= last; t += 20) {
+      window.hullViewer.seek(t);
+      v.draw();
+      const boxes = v.labelBoxes;
+      labels += boxes.length;
+      if (boxes.length !== 16) problems.push(`t = ${t}: ${boxes.length} labels`);
+      boxes.forEach((b, i) => {
+        for (const o of boxes.slice(0, i)) {
+          if (b.x < o.x + o.w && o.x < b.x + b.w && b.y < o.y + o.h && o.y < b.y + b.h) {
+            problems.push(`t = ${t}: labels of UAV ${b.k} and ${o.k} overlap`);
+          }
+        }
+      });
+    }
+    return {problems, labels};
+  }, last);
+  assert.deepEqual(result.problems, []);
+  assert.ok(result.labels >= 16 * 40);
+  await page.close();
+});
+
 // What the screenshot shows, apart from the background: a good part of the view.
 async function screenshot(page, name) {
   const pixels = await canvasPixels(page);
