@@ -4,8 +4,8 @@
 'use strict';
 
 (function (hv) {
-  const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, regionColor, regionTint,
-    uavColor, layerColor} = hv.palette;
+  const {FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, uavColor, layerColor,
+    cellColor} = hv.palette;
   const PATH_LENGTH = 40; // steps of recent path drawn behind each UAV
   // Margins around the cells (CSS px), inside the overlay canvas: axes in metres below and left,
   // room above and right so markers and labels of the outer rows are not cut off.
@@ -92,15 +92,7 @@
       return segments;
     }
 
-    cellColor(i) {
-      const v = this.replay.map[i];
-      if (v < 0) return COLORS.nonHull;
-      if (v === 2) return this.replay.firstSeen[i] <= this.replay.t ? COLORS.corrosion : COLORS.priorOnly;
-      if (v === 3) return COLORS.inspected;
-      const o = this.replay.owner && this.show.regions ? this.replay.owner[i] : -1;
-      if (o >= 0) return v === 0 ? regionColor(o) : regionTint(o);
-      return v === 0 ? COLORS.unknown : COLORS.clean;
-    }
+    cellColor(i) { return cellColor(this.replay, i, this.show.regions); }
 
     drawCells() {
       const {W, H} = this.replay;

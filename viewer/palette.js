@@ -46,8 +46,21 @@
     return LAYER_COLORS[name] || EXTRA_LAYER_COLORS[i % EXTRA_LAYER_COLORS.length];
   }
 
+  // The colour of cell i of a replay (replay.js) at its current time, in the map and the 3D view:
+  // corrosion apart by whether a UAV has seen it, unknown and clean cells in their region's colour
+  // and tint when `regions` (and the trace has a partition).
+  function cellColor(replay, i, regions) {
+    const v = replay.map[i];
+    if (v < 0) return COLORS.nonHull;
+    if (v === 2) return replay.firstSeen[i] <= replay.t ? COLORS.corrosion : COLORS.priorOnly;
+    if (v === 3) return COLORS.inspected;
+    const o = replay.owner && regions ? replay.owner[i] : -1;
+    if (o >= 0) return v === 0 ? regionColor(o) : regionTint(o);
+    return v === 0 ? COLORS.unknown : COLORS.clean;
+  }
+
   hv.palette = {
     COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, M_NAMES, rgb,
-    regionColor, regionTint, uavColor, layerColor,
+    regionColor, regionTint, uavColor, layerColor, cellColor,
   };
 })(window.hullinspectViewer = window.hullinspectViewer || {});

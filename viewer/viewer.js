@@ -9,7 +9,7 @@
   const $ = (id) => document.getElementById(id);
 
   class Viewer {
-    constructor(replay) {
+    constructor(replay, options = {}) {
       this.replay = replay;
       this.playing = false;
       this.speed = 10;
@@ -18,6 +18,8 @@
       this.show = {};
       this.map = new hv.MapView(replay, $('grid-canvas'), $('overlay-canvas'), this.show);
       this.chart = new hv.ProgressChart(replay, $('chart-canvas'));
+      this.view3d = null; // built on the first switch to 3D
+      this.mode3d = false;
       this.fillTitle();
       this.fillStats();
       this.buildUavTable();
@@ -26,6 +28,7 @@
       this.chooseDefaultSpeed();
       this.layout();
       this.seek(0);
+      if (options.start_3d) this.toggle3d();
     }
 
     // --- setup --------------------------------------------------------------------------------
@@ -155,6 +158,10 @@
       button('btn-end', () => this.seek(r.lastT));
       button('btn-tc', () => this.seek(r.trace.result.T_c));
       button('btn-tm', () => this.seek(r.trace.result.T_m));
+      const reason3d = hv.View3d.unavailableReason(r);
+      $('btn-3d').disabled = reason3d !== null;
+      if (reason3d) $('btn-3d').title = `3D unavailable: ${reason3d}`;
+      button('btn-3d', () => this.toggle3d());
       slider.addEventListener('input', () => { this.pause(); this.seek(Number(slider.value)); });
       $('speed').addEventListener('change', (e) => { this.speed = Number(e.target.value); e.target.blur(); });
       $('zoom').addEventListener('change', (e) => { this.layout(); e.target.blur(); });
@@ -205,6 +212,7 @@
         case 'End': this.pause(); this.seek(r.lastT); break;
         case 'c': case 'C': if (r.trace.result.T_c !== null) { this.pause(); this.seek(r.trace.result.T_c); } break;
         case 'm': case 'M': if (r.trace.result.T_m !== null) { this.pause(); this.seek(r.trace.result.T_m); } break;
+        case 'd': case 'D': if (!$('btn-3d').disabled) this.toggle3d(); break;
         case '+': case '=': this.setSpeed(speeds[Math.min(speeds.length - 1, speedIndex + 1)]); break;
         case '-': case '_': this.setSpeed(speeds[Math.max(0, speedIndex - 1)]); break;
         default: handled = false;
@@ -218,6 +226,18 @@
       $('speed').value = String(v);
     }
 
+    // The flat map or the 3D hull in the map's place; the timeline, chart and tables stay.
+    toggle3d() {
+      this.mode3d = !this.mode3d;
+      if (this.mode3d && !this.view3d) this.view3d = new hv.View3d(this.replay, $('view3d'), this.show);
+      $('map-scroll').hidden = this.mode3d;
+      $('hover-info').hidden = this.mode3d;
+      $('view3d').hidden = !this.mode3d;
+      $('btn-3d').classList.toggle('active', this.mode3d);
+      $('btn-3d').textContent = this.mode3d ? '2D' : '3D';
+      this.layout();
+    }
+
     // --- layout ---------------------------------------------------------------------------------
 
     layout() {
@@ -229,6 +249,10 @@
       const dpr = window.devicePixelRatio || 1;
       $('map-stack').style.width = `${this.map.layout(cellPx, dpr)}px`;
       this.chart.layout(dpr);
+      if (this.mode3d) {
+        const width = Math.max(100, $('map-panel').clientWidth - 16);
+        this.view3d.resize(width, Math.round(Math.min(0.62 * window.innerHeight, 0.5 * width)));
+      }
       this.requestDraw();
     }
 
@@ -293,7 +317,8 @@
     // --- drawing --------------------------------------------------------------------------------
 
     draw() {
-      this.map.draw();
+      if (this.mode3d) this.view3d.draw();
+      else this.map.draw();
       this.chart.draw();
       this.updateText();
     }
@@ -389,8 +414,12 @@
       $('viewer').hidden = false;
       $('file-picker').hidden = true;
       $('load-error').hidden = true;
-      const viewer = new Viewer(replay);
+      const optionsText = $('view-options') ? $('view-options').textContent.trim() : '';
+      const viewer = new Viewer(replay, optionsText ? JSON.parse(optionsText) : {});
       Object.assign(api, {
+        // The 3D view (null while never shown) and a switch for the browser test.
+        view3d: () => viewer.view3d,
+        toggle3d: () => viewer.toggle3d(),
         replay,
         viewer,
         seek: (t) => viewer.seek(t),

@@ -20,6 +20,7 @@ namespace {
 struct ViewArgs {
   std::string trace_path;
   std::string out_path;  // empty: the trace's path with the extension .html
+  bool start_3d = false;
 };
 
 int view(const ViewArgs& args) {
@@ -30,7 +31,13 @@ int view(const ViewArgs& args) {
   outputs.add_output(out, "out");
   outputs.check();
   const auto trace = io::read_trace(args.trace_path);
-  const std::string html = io::viewer_html(trace);
+  if (args.start_3d && !io::trace_has_3d_geometry(trace)) {
+    throw ParameterError("3d", fmt::format("'{}' is a mission on a mask hull without 3D geometry "
+                                           "(no ship_frame); the 3D view needs a hull imported "
+                                           "from a mesh",
+                                           args.trace_path));
+  }
+  const std::string html = io::viewer_html(trace, {.start_3d = args.start_3d});
   outputs.write(out, html);
   std::cout << fmt::format("wrote {} ({:.1f} MB, {} steps): open it in a web browser\n",
                            out.string(), static_cast<double>(html.size()) / 1e6,
@@ -56,6 +63,9 @@ void add_view_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--out,-o", args->out_path,
                   "HTML file to write (default: TRACE with the extension .html)")
       ->type_name("FILE");
+  cmd->add_flag("--3d", args->start_3d,
+                "Open the replay in its 3D view (hulls imported from a mesh; the page's 2D/3D "
+                "toggle switches either way)");
   cmd->callback([args, &action] { action = [args] { return view(*args); }; });
 }
 

@@ -12,6 +12,7 @@ namespace detail {
 extern const std::string_view kViewerHtml;
 extern const std::string_view kViewerJs;
 extern const std::string_view kViewerCss;
+extern const std::string_view kViewerThreeJs;
 }  // namespace detail
 
 namespace {
@@ -24,6 +25,9 @@ constexpr std::string_view kScriptsBegin = "<!-- viewer scripts";
 constexpr std::string_view kScriptsEnd = "<!-- end of viewer scripts -->";
 constexpr std::string_view kTraceSlot =
     R"(<script type="application/json" id="trace-data"></script>)";
+// Where three.js goes when the page can show 3D: before the viewer's scripts, which find it as the
+// global THREE_VIEW; the page's start-up options go in the same place.
+constexpr std::string_view kThreeSlot = "<!-- three.js -->";
 
 // JSON text that is safe inside a <script> element: '<' only occurs inside JSON strings, where the
 // escape \u003c means the same character, so "</script>" or "<!--" can never appear.
@@ -43,7 +47,31 @@ std::string script_safe_json(const nlohmann::json& trace) {
 
 }  // namespace
 
-std::string viewer_html(const nlohmann::json& trace) {
+bool viewer_has_3d() {
+  return !detail::kViewerThreeJs.empty();
+}
+
+bool trace_has_3d_geometry(const nlohmann::json& trace) {
+  return trace.is_object() && trace.contains("ship_frame") && trace["ship_frame"].is_object();
+}
+
+std::string viewer_html(const nlohmann::json& trace, const ViewerOptions& options) {
+  const bool geometry = trace_has_3d_geometry(trace);
+  if (options.start_3d && !geometry) {
+    throw ParameterError("3d",
+                         "the trace's hull is a mask without 3D geometry (no ship_frame); the 3D "
+                         "view needs a hull imported from a mesh (hullinspect hull import)");
+  }
+  if (options.start_3d && !viewer_has_3d()) {
+    throw Error(
+        "--3d: this hullinspect was built without the viewer's 3D view "
+        "(viewer/node_modules missing: run scripts/setup, then configure again)");
+  }
+  std::string three_content = R"(<script type="application/json" id="view-options">{"start_3d":)" +
+                              std::string(options.start_3d ? "true" : "false") + "}</script>";
+  if (geometry && viewer_has_3d()) {
+    three_content += "\n<script>\n" + std::string(detail::kViewerThreeJs) + "\n</script>";
+  }
   // Each slot is the text [at, at + size) of the page, replaced by `content`.
   struct Slot {
     std::string_view begin;
@@ -52,7 +80,8 @@ std::string viewer_html(const nlohmann::json& trace) {
     std::size_t at = std::string_view::npos;
     std::size_t size = 0;
   };
-  std::array<Slot, 3> slots{{
+  std::array<Slot, 4> slots{{
+      {kThreeSlot, {}, std::move(three_content)},
       {kStyleLink, {}, "<style>\n" + std::string(detail::kViewerCss) + "</style>"},
       {kScriptsBegin, kScriptsEnd, "<script>\n" + std::string(detail::kViewerJs) + "</script>"},
       {kTraceSlot,
@@ -71,8 +100,9 @@ std::string viewer_html(const nlohmann::json& trace) {
   }
   std::sort(slots.begin(), slots.end(), [](const Slot& a, const Slot& b) { return a.at < b.at; });
   std::string html;
-  html.reserve(page.size() + slots[0].content.size() + slots[1].content.size() +
-               slots[2].content.size());
+  std::size_t size = page.size();
+  for (const auto& slot : slots) size += slot.content.size();
+  html.reserve(size);
   std::size_t from = 0;
   for (const auto& slot : slots) {
     html.append(page.substr(from, slot.at - from));

@@ -10,10 +10,10 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
+import {Browser, settle} from './browser.mjs';
 import {mapAt, prng, syntheticTrace} from './synthetic_trace.mjs';
 
 const CLI = process.env.HULLINSPECT_CLI;
-const CHROMIUM = process.env.HULLINSPECT_CHROMIUM || '/usr/bin/chromium';
 const OUT = process.env.HULLINSPECT_TEST_OUTPUT ||
     fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-viewer-test-'));
 
@@ -69,9 +69,7 @@ const BROWSER_ARGS = [
   '--disable-component-update', '--disable-sync',
 ];
 
-let chromium;
-let context;
-let userDataDir;
+let browser;
 let mission; // {trace, html}
 let synthetic; // {trace, html}
 const measurements = {};
@@ -83,11 +81,6 @@ function cli(args) {
 before(async () => {
   assert.ok(CLI, 'set HULLINSPECT_CLI to the hullinspect binary (CTest does)');
   assert.ok(fs.existsSync(CLI), `HULLINSPECT_CLI=${CLI} does not exist: build it first`);
-  try {
-    ({chromium} = await import('playwright-core'));
-  } catch (e) {
-    assert.fail(`playwright-core is not installed: run scripts/setup (npm ci in viewer/test): ${e.message}`);
-  }
   fs.mkdirSync(OUT, {recursive: true});
 
   // A real mission: 8 UAVs, lawnmower (partitioned), with its trace and both ways to the page.
@@ -110,46 +103,15 @@ before(async () => {
   measurements.synthetic_trace_mb = fs.statSync(longPath).size / 1e6;
   measurements.synthetic_generation_ms = Date.now() - started;
 
-  userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'hullinspect-chromium-'));
-  context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: CHROMIUM,
-    headless: true,
-    args: BROWSER_ARGS,
-    viewport: {width: 1400, height: 900},
-    deviceScaleFactor: 1,
-  });
-  // No network: anything but the page's own file is refused (the page's CSP forbids it too).
-  await context.route('**/*', (route) =>
-    route.request().url().startsWith('file:') ? route.continue() : route.abort());
+  browser = await Browser.launch(BROWSER_ARGS);
 });
 
 after(async () => {
-  if (context) await context.close();
-  if (userDataDir) fs.rmSync(userDataDir, {recursive: true, force: true});
+  if (browser) await browser.close();
   fs.writeFileSync(path.join(OUT, 'measurements.json'), JSON.stringify(measurements, null, 2) + '\n');
 });
 
-// Opens a viewer page; returns the page, the requests it made and the time until it was ready.
-async function open(file) {
-  const page = await context.newPage();
-  const requests = [];
-  const errors = [];
-  page.on('request', (r) => requests.push(r.url()));
-  page.on('pageerror', (e) => errors.push(e.message));
-  const started = performance.now();
-  await page.goto(`file://${file}`);
-  await page.waitForFunction(() => window.hullViewer && (window.hullViewer.ready || window.hullViewer.error));
-  const openMs = performance.now() - started;
-  assert.equal(await page.evaluate(() => window.hullViewer.error), null);
-  assert.deepEqual(errors, []);
-  await settle(page);
-  return {page, requests, errors, openMs};
-}
-
-// Waits until the viewer has drawn what was asked (drawing happens on animation frames).
-async function settle(page) {
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-}
+const open = (file) => browser.open(file);
 
 async function pixelOfCell(page, x, y) {
   return page.evaluate(({x, y}) => {
