@@ -5,7 +5,11 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <set>
+
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
+#include "hullinspect/io/bounded_read.hpp"
 
 namespace hullinspect::cli {
 
@@ -35,15 +39,35 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
 
 namespace {
 
+// A geo-reference file is a few lines; anything larger is not one.
+constexpr std::size_t kMaxGeoFileBytes = std::size_t{1} << 20;
+
+// yaml-cpp keeps the first of two equal keys silently; a file that says `heading` twice is
+// ambiguous, so it is refused.
+void refuse_duplicate_keys(const YAML::Node& map, const std::string& path) {
+  std::set<std::string> seen;
+  for (const auto& entry : map) {
+    const std::string key = entry.first.Scalar();
+    if (!seen.insert(key).second) {
+      throw InputError(path, entry.first.Mark().line + 1,
+                       fmt::format("duplicate key '{}'", escape_for_message(key, 200)));
+    }
+  }
+}
+
 io::GeoReference geo_from_yaml(const std::string& path) {
+  // Read like every input (bounded, regular files only, registered against the outputs).
+  const std::string text = io::read_file(path, kMaxGeoFileBytes, "the geo-reference file");
   YAML::Node doc;
   try {
-    doc = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw InputError(path, 0, "cannot open the geo-reference file");
+    doc = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw InputError(path, e.mark.line + 1, "not YAML: " + e.msg);
+    throw InputError(path, e.mark.line + 1, "not YAML: " + escape_for_message(e.msg, 200));
   }
+  if (!doc.IsMap()) {
+    throw InputError(path, 0, "expected a YAML mapping with origin: [LAT, LON, ALT] and heading");
+  }
+  refuse_duplicate_keys(doc, path);
   const auto origin = doc["origin"];
   if (!origin || !origin.IsSequence() || origin.size() != 3) {
     throw InputError(path, origin ? origin.Mark().line + 1 : 0, "origin: expected [LAT, LON, ALT]");

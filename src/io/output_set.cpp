@@ -11,6 +11,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
+#include "hullinspect/io/input_registry.hpp"
 
 namespace hullinspect::io {
 
@@ -20,17 +21,6 @@ namespace {
 
 std::string shown(const fs::path& p) {
   return escape_for_message(p.string(), 200);
-}
-
-// What kind of non-regular file `st` describes, for messages.
-const char* kind(const struct stat& st) {
-  if (S_ISDIR(st.st_mode)) return "a directory";
-  if (S_ISCHR(st.st_mode)) return "a character device";
-  if (S_ISBLK(st.st_mode)) return "a block device";
-  if (S_ISFIFO(st.st_mode)) return "a FIFO";
-  if (S_ISSOCK(st.st_mode)) return "a socket";
-  if (S_ISREG(st.st_mode)) return "a regular file";
-  return "not a regular file";
 }
 
 fs::path resolved(const fs::path& p) {
@@ -117,13 +107,13 @@ void OutputSet::check() const {
     if (::stat(out.path.c_str(), &st) == 0) {
       if (out.directory && !S_ISDIR(st.st_mode)) {
         throw ParameterError(
-            out.option, fmt::format("'{}' is {}, expected a directory", shown(out.path), kind(st)));
+            out.option, fmt::format("'{}' is {}, expected a directory", shown(out.path), file_kind(st)));
       }
       if (!out.directory && !S_ISREG(st.st_mode)) {
         throw ParameterError(out.option,
                              fmt::format("'{}' is {}; an output must be a regular file or a new "
                                          "path",
-                                         shown(out.path), kind(st)));
+                                         shown(out.path), file_kind(st)));
       }
       if (out.directory && ::access(out.path.c_str(), W_OK | X_OK) != 0) {
         throw ParameterError(out.option, fmt::format("cannot write into '{}': {}", shown(out.path),
@@ -148,6 +138,7 @@ void OutputSet::check() const {
                                          shown(out.path), in.option, shown(in.path)));
       }
     }
+    check_not_read(out);
     for (std::size_t j = 0; j < k; ++j) {
       if (same_file(out.path, outputs_[j].path)) {
         throw ParameterError(
@@ -207,7 +198,21 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
   if (!ok) throw InputError(path.string(), 0, fmt::format("write failed: {}", std::strerror(err)));
 }
 
+void OutputSet::check_not_read(const Entry& out) {
+  if (out.directory) return;
+  if (const auto in = registered_input_at(out.path)) {
+    throw ParameterError(out.option,
+                         fmt::format("'{}' is the same file as the input '{}'; it would be "
+                                     "overwritten",
+                                     shown(out.path), shown(in->path)));
+  }
+}
+
 void OutputSet::commit() {
+  // Inputs read since check() (a prior, a no-fly map, a mesh) are known only now.
+  for (const auto& out : outputs_) {
+    if (!out.temporary.empty()) check_not_read(out);
+  }
   for (auto& out : outputs_) {
     if (out.temporary.empty()) continue;
     if (::rename(out.temporary.c_str(), out.path.c_str()) != 0) {

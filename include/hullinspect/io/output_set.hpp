@@ -6,8 +6,11 @@
 //      (or, for add_output_dir, a non-directory), whose directory does not exist or is not
 //      writable, or that is the same file (same st_dev/st_ino, or the same path once resolved) as
 //      an input or another output, is refused with a ParameterError naming its option (exit 2);
+//      an input is a declared one or any file the process has read through io::read_file (which
+//      registers every file it opens), so an input option cannot be forgotten here;
 //   2. write() puts each output's content into a temporary beside it;
-//   3. commit() renames all temporaries into place together at the end; if the command fails
+//   3. commit() checks again that no output is a file read since check(), then renames all
+//      temporaries into place together at the end; if the command fails
 //      before commit(), the destructor removes the temporaries and nothing was touched.
 // Files inside a declared output directory (add_output_dir, then add_output of DIR/NAME) may be
 // declared before the directory exists: write() creates it (with its missing parents) and, if the
@@ -49,6 +52,8 @@ class OutputSet {
     bool directory = false;
     std::filesystem::path temporary;  // empty until written
   };
+  // Throws if the output `out` is a file this process has read (io::read_file registers them).
+  static void check_not_read(const Entry& out);
   // The declared output directory that is `path`'s parent, or nullptr.
   const Entry* declared_parent_dir(const std::filesystem::path& path) const;
   std::vector<Entry> inputs_;
