@@ -35,6 +35,9 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
   cmd.add_option("--geo", a.geo_file,
                  "Geo-reference from a YAML file: origin: [LAT, LON, ALT], heading: DEG")
       ->type_name("FILE");
+  cmd.add_flag("--force", a.force,
+               "Write into the directory even if it already holds files (files of the same names "
+               "are replaced, others are left as they are)");
 }
 
 namespace {
@@ -94,7 +97,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
   if (a.dir.empty()) {
     for (const auto& [set, option] :
          {std::pair{!a.origin.empty(), "origin"}, std::pair{a.heading.has_value(), "heading"},
-          std::pair{!a.geo_file.empty(), "geo"}}) {
+          std::pair{!a.geo_file.empty(), "geo"}, std::pair{a.force, "force"}}) {
       if (set)
         throw ParameterError(option, fmt::format("has no effect without {} DIR", dir_option));
     }
@@ -121,12 +124,15 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
   }
   r.option = name;
   r.geo_file = a.geo_file;
+  r.force = a.force;
   return r;
 }
 
 void declare_export_dir(io::OutputSet& outputs, const ExportRequest& request) {
   outputs.add_input(request.geo_file, "geo");
-  outputs.add_output_dir(request.dir, request.option);
+  // A new or empty directory, unless --force: files of an earlier export with more UAVs would
+  // otherwise stay beside the new ones and read as part of it.
+  outputs.add_output_dir(request.dir, request.option, !request.force);
 }
 
 void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, int uavs) {

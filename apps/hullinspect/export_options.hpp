@@ -25,9 +25,10 @@ struct ExportArgs {
   std::string origin;
   std::optional<double> heading;
   std::string geo_file;
+  bool force = false;
 };
 
-/// Adds --format, --origin, --heading, --geo and the directory option `dir_option` ("--out" for
+/// Adds --format, --origin, --heading, --geo, --force and the directory option `dir_option` ("--out" for
 /// `export`, "--export" for run and plan).
 void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_option);
 
@@ -38,6 +39,7 @@ struct ExportRequest {
   std::optional<io::GeoReference> geo;
   std::string option;    ///< the directory option without dashes ("out", "export"), for messages
   std::string geo_file;  ///< --geo FILE, an input of the command; empty without one
+  bool force = false;    ///< write into a directory that already holds files
 };
 
 /// Checks the options (format, geo-reference) before anything runs; nullopt when no directory

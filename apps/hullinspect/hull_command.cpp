@@ -8,7 +8,7 @@
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/io/output_set.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "mesh_options.hpp"
 
@@ -29,10 +29,14 @@ std::string output_path(const std::string& out) {
 int import(const HullImportArgs& args) {
   if (args.out.empty()) throw ParameterError("out", "expects a file name");
   const std::string out = output_path(args.out);
+  io::OutputSet outputs;
+  outputs.add_output(out, "out");
+  outputs.check();
   const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
-  io::write_file_atomic(out, world::to_hull_json(hull));
+  outputs.write(out, world::to_hull_json(hull));
+  outputs.commit();
   std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
                            imported.facing_facets, world::to_string(g.side));
   std::cout << fmt::format("  grid {} × {} cells of {} m, {} hull cells ({:.1f} m²)\n",

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
@@ -96,8 +97,8 @@ void OutputSet::add_output(const fs::path& path, std::string option) {
   if (!path.empty()) outputs_.push_back({path, std::move(option), false, {}});
 }
 
-void OutputSet::add_output_dir(const fs::path& path, std::string option) {
-  if (!path.empty()) outputs_.push_back({path, std::move(option), true, {}});
+void OutputSet::add_output_dir(const fs::path& path, std::string option, bool must_be_empty) {
+  if (!path.empty()) outputs_.push_back({path, std::move(option), true, {}, must_be_empty});
 }
 
 void OutputSet::check() const {
@@ -119,6 +120,7 @@ void OutputSet::check() const {
         throw ParameterError(out.option, fmt::format("cannot write into '{}': {}", shown(out.path),
                                                      std::strerror(errno)));
       }
+      if (out.directory && out.must_be_empty) check_empty(out);
     } else if (errno != ENOENT) {
       throw ParameterError(
           out.option, fmt::format("cannot use '{}': {}", shown(out.path), std::strerror(errno)));
@@ -196,6 +198,26 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
     err = errno;
   }
   if (!ok) throw InputError(path.string(), 0, fmt::format("write failed: {}", std::strerror(err)));
+}
+
+void OutputSet::check_empty(const Entry& out) {
+  std::error_code ec;
+  fs::directory_iterator it(out.path, ec);
+  if (ec) {
+    throw ParameterError(out.option,
+                         fmt::format("cannot list '{}': {}", shown(out.path), ec.message()));
+  }
+  if (it == fs::directory_iterator()) return;
+  // The first name in order, so that the message does not depend on the directory's layout.
+  fs::path first = it->path().filename();
+  for (; it != fs::directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    first = std::min(first, it->path().filename());
+  }
+  throw ParameterError(out.option,
+                       fmt::format("'{}' is not empty (it holds '{}'); give a new or empty "
+                                   "directory, or --force to write into it",
+                                   shown(out.path), shown(first)));
 }
 
 void OutputSet::check_not_read(const Entry& out) {

@@ -36,7 +36,10 @@ class OutputSet {
   /// A file the command writes (created or replaced).
   void add_output(const std::filesystem::path& path, std::string option);
   /// A directory the command creates or writes into (it may exist; then it must be a directory).
-  void add_output_dir(const std::filesystem::path& path, std::string option);
+  /// With `must_be_empty`, an existing directory that holds anything is refused, so that files of
+  /// an earlier, larger output (uav2–7 beside a new 2-UAV export) are never left beside new ones.
+  void add_output_dir(const std::filesystem::path& path, std::string option,
+                      bool must_be_empty = false);
   /// Runs every check described above; throws ParameterError(option, …) on the first problem.
   void check() const;
 
@@ -51,7 +54,10 @@ class OutputSet {
     std::string option;
     bool directory = false;
     std::filesystem::path temporary;  // empty until written
+    bool must_be_empty = false;       // directories only
   };
+  // Throws if the output directory `out` holds anything.
+  static void check_empty(const Entry& out);
   // Throws if the output `out` is a file this process has read (io::read_file registers them).
   static void check_not_read(const Entry& out);
   // The declared output directory that is `path`'s parent, or nullptr.
