@@ -28,8 +28,8 @@ struct ExportArgs {
   bool force = false;
 };
 
-/// Adds --format, --origin, --heading, --geo, --force and the directory option `dir_option` ("--out" for
-/// `export`, "--export" for run and plan).
+/// Adds --format, --origin, --heading, --geo, --force and the directory option `dir_option`
+/// ("--out" for `export`, "--export" for run and plan).
 void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_option);
 
 /// A checked export request.

@@ -380,16 +380,13 @@ nlohmann::json config_json(const ExperimentConfig& c) {
     for (const auto& z : s.corrosion.zones) {
       zones.push_back({{"x_begin", z.x_begin}, {"x_end", z.x_end}, {"p_c", z.p_c}, {"l_c", z.l_c}});
     }
-    json scenario = {{"name", s.name},
-                     {"sweep", s.sweep},
-                     {"sweep_value", s.sweep_value},
-                     {"zones", zones},
-                     {"p_tp", s.corrosion.p_tp},
-                     {"p_fp", s.corrosion.p_fp}};
+    json scenario = {{"name", s.name}, {"sweep", s.sweep},         {"sweep_value", s.sweep_value},
+                     {"zones", zones}, {"p_tp", s.corrosion.p_tp}, {"p_fp", s.corrosion.p_fp}};
     if (!s.failures.empty()) {
       json at = json::array();
       for (const auto& f : s.failures.at) at.push_back({f.uav, f.time});
-      scenario["failures"] = {{"at", at}, {"rate", s.failures.rate}, {"one_within", s.failures.one_within}};
+      scenario["failures"] = {
+          {"at", at}, {"rate", s.failures.rate}, {"one_within", s.failures.one_within}};
     }
     if (!s.no_fly_spec.is_null()) scenario["no_fly"] = s.no_fly_spec;  // only when given
     scenarios.push_back(std::move(scenario));
@@ -440,7 +437,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       spec.corrosion.p_fp = s.at("p_fp").get<double>();
       if (s.contains("failures")) {
         const auto& f = s.at("failures");
-        for (const auto& a : f.at("at")) spec.failures.at.push_back({a.at(0).get<int>(), a.at(1).get<int>()});
+        for (const auto& a : f.at("at"))
+          spec.failures.at.push_back({a.at(0).get<int>(), a.at(1).get<int>()});
         spec.failures.rate = f.at("rate").get<double>();
         spec.failures.one_within = f.at("one_within").get<int>();
       }

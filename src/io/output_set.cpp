@@ -73,6 +73,8 @@ bool same_file(const fs::path& a, const fs::path& b) {
   return resolved(a) == resolved(b);
 }
 
+OutputSet::OutputSet() : first_input_(next_input_sequence()) {}
+
 OutputSet::~OutputSet() {
   for (const auto& out : outputs_) {
     if (!out.temporary.empty()) ::unlink(out.temporary.c_str());
@@ -107,8 +109,8 @@ void OutputSet::check() const {
     struct stat st {};
     if (::stat(out.path.c_str(), &st) == 0) {
       if (out.directory && !S_ISDIR(st.st_mode)) {
-        throw ParameterError(
-            out.option, fmt::format("'{}' is {}, expected a directory", shown(out.path), file_kind(st)));
+        throw ParameterError(out.option, fmt::format("'{}' is {}, expected a directory",
+                                                     shown(out.path), file_kind(st)));
       }
       if (!out.directory && !S_ISREG(st.st_mode)) {
         throw ParameterError(out.option,
@@ -220,9 +222,9 @@ void OutputSet::check_empty(const Entry& out) {
                                    shown(out.path), shown(first)));
 }
 
-void OutputSet::check_not_read(const Entry& out) {
+void OutputSet::check_not_read(const Entry& out) const {
   if (out.directory) return;
-  if (const auto in = registered_input_at(out.path)) {
+  if (const auto in = registered_input_at(out.path, first_input_)) {
     throw ParameterError(out.option,
                          fmt::format("'{}' is the same file as the input '{}'; it would be "
                                      "overwritten",

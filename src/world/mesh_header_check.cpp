@@ -190,7 +190,8 @@ void check_ply(std::string_view bytes, const std::string& source) {
       for (const PlyProperty& p : e.properties) {
         std::uint64_t size = p.size;
         if (p.count_size > 0) {
-          if (at + p.count_size > body.size()) size = body.size();  // refused just below
+          if (at + p.count_size > body.size())
+            size = body.size();  // refused just below
           else {
             size = ply_unsigned(body, at, p.count_size, big) * p.size;
             at += p.count_size;

@@ -98,7 +98,7 @@ void cap_child_memory(std::size_t mesh_bytes) {
   }
   const std::uint64_t mapped = static_cast<std::uint64_t>(pages) * ::sysconf(_SC_PAGESIZE);
   const std::uint64_t cap = mapped + (std::uint64_t{1} << 30) + 32 * std::uint64_t{mesh_bytes};
-  const struct rlimit limit{cap, cap};
+  const struct rlimit limit { cap, cap };
   ::setrlimit(RLIMIT_AS, &limit);
 #else
   (void)mesh_bytes;

@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include "source_dir.hpp"
 #include <nlohmann/json.hpp>
+#include "source_dir.hpp"
 
 #include <cstdlib>
 #include <filesystem>

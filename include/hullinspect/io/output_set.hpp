@@ -6,8 +6,9 @@
 //      (or, for add_output_dir, a non-directory), whose directory does not exist or is not
 //      writable, or that is the same file (same st_dev/st_ino, or the same path once resolved) as
 //      an input or another output, is refused with a ParameterError naming its option (exit 2);
-//      an input is a declared one or any file the process has read through io::read_file (which
-//      registers every file it opens), so an input option cannot be forgotten here;
+//      an input is a declared one or any file read through io::read_file (which registers every
+//      file it opens) since the set was made, so an input option cannot be forgotten: a command
+//      makes its OutputSet before it reads anything;
 //   2. write() puts each output's content into a temporary beside it;
 //   3. commit() checks again that no output is a file read since check(), then renames all
 //      temporaries into place together at the end; if the command fails
@@ -17,6 +18,7 @@
 // command fails before commit(), the destructor removes what it created.
 // Standard output is checked by main() (a failed write or flush is an error, e.g. > /dev/full).
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -26,7 +28,7 @@ namespace hullinspect::io {
 
 class OutputSet {
  public:
-  OutputSet() = default;
+  OutputSet();
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
   ~OutputSet();
@@ -59,12 +61,13 @@ class OutputSet {
   // Throws if the output directory `out` holds anything.
   static void check_empty(const Entry& out);
   // Throws if the output `out` is a file this process has read (io::read_file registers them).
-  static void check_not_read(const Entry& out);
+  void check_not_read(const Entry& out) const;
   // The declared output directory that is `path`'s parent, or nullptr.
   const Entry* declared_parent_dir(const std::filesystem::path& path) const;
   std::vector<Entry> inputs_;
   std::vector<Entry> outputs_;
   std::vector<std::filesystem::path> created_dirs_;  // by write(), outermost first
+  std::uint64_t first_input_;  // inputs read from this io::next_input_sequence() on are its own
 };
 
 /// True if `a` and `b` name the same existing file (same device and inode), or, when either does
