@@ -9,6 +9,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
+#include "hullinspect/core/plural.hpp"
 
 namespace hullinspect::world::detail {
 
@@ -70,8 +71,8 @@ void check_stl(std::string_view bytes, const std::string& source) {
   const std::uint64_t needed = kStlHeaderBytes + kStlFacetBytes * facets;
   if (bytes.size() < needed) {
     throw InputError(source, 0,
-                     fmt::format("not a readable stl mesh (the binary STL declares {} facets, {} "
-                                 "bytes, but has {} bytes: truncated?)",
+                     fmt::format("not a readable stl mesh (the binary STL declares {} facets ({} "
+                                 "bytes) but has {} bytes: truncated?)",
                                  facets, needed, bytes.size()));
   }
 }
@@ -166,9 +167,11 @@ void check_ply(std::string_view bytes, const std::string& source) {
     for (const PlyElement& e : elements) {
       declared += e.count;
       if (declared > lines) {
-        refuse_ply(source, fmt::format("the header declares {} {} items but the data ends "
-                                       "after {} lines: truncated?",
-                                       e.count, e.name, lines - (declared - e.count)));
+        refuse_ply(source, fmt::format("element {}: {} declared, but the data ends after "
+                                       "{}: truncated?",
+                                       e.name, e.count,
+                                       plural(static_cast<long long>(lines - (declared - e.count)),
+                                              "line")));
       }
     }
     return;
@@ -181,9 +184,9 @@ void check_ply(std::string_view bytes, const std::string& source) {
     std::uint64_t least = 0;
     for (const PlyProperty& p : e.properties) least += p.count_size > 0 ? p.count_size : p.size;
     if (least > 0 && e.count > (body.size() - at) / least) {
-      refuse_ply(source, fmt::format("the header declares {} {} items, more than the {} bytes "
-                                     "after it hold: truncated?",
-                                     e.count, e.name, body.size()));
+      refuse_ply(source, fmt::format("element {}: {} declared, more than the {} bytes after "
+                                     "the header hold: truncated?",
+                                     e.name, e.count, body.size()));
     }
     if (least == 0) continue;  // nothing to walk
     for (std::uint64_t item = 0; item < e.count; ++item) {
@@ -198,7 +201,8 @@ void check_ply(std::string_view bytes, const std::string& source) {
           }
         }
         if (size > body.size() - at) {
-          refuse_ply(source, fmt::format("the data ends inside {} item {} of {}: truncated?",
+          refuse_ply(source, fmt::format("element {}: the data ends inside number {} of {}: "
+                                         "truncated?",
                                          e.name, item + 1, e.count));
         }
         at += size;
