@@ -13,7 +13,7 @@
 #include <string>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 
 namespace {

@@ -1,9 +1,9 @@
 // One whole lawnmower mission (default hull, perfect scenario, s2 = 7): the foundation's speed.
 // The partition is computed once and shared, as the experiment runner does. Also one whole
 // Sweep-Inspect mission (combined scenario), with own-band-first on and off: what the option's
-// 14 candidate plans cost at every sweep it plans (docs/beyond.md, item 4); and with
+// 14 candidate plans cost at every sweep it plans (docs/sweep-inspect.md, "The sweep"); and with
 // inspect-viewpoints on and off (imperfect scenario): what choosing a viewpoint over the
-// inspection's window costs at every step a UAV spends at z = 1 (item 5).
+// inspection's window costs at every step a UAV spends at z = 1.
 //   build/release/bench/mission_bench --benchmark_repetitions=10
 //   --benchmark_report_aggregates_only=true
 

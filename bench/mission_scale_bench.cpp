@@ -1,9 +1,9 @@
-// Whole missions at scale (issue 16 §3): every paper planner (lawnmower, part-tsp, part-tsp0,
-// coop-frontier) on the default hull profile at 1×, 2×, 4× and 8× its area and on the 700 × 70
-// hull, for n = 4 … 32. The partitioned planners use the `transfer` partitioner (DARP does not
-// converge at these sizes; docs/results.md), so every mission is one partition plus one simulated
-// mission, measured as CPU time of one thread. Scenario "imperfect" (noisy prior), s1 = 5, s2 = 7,
-// instance seed 1, time limit 200 000 steps.
+// Whole missions at scale (docs/results.md, "Missions at scale"): every paper planner (lawnmower,
+// part-tsp, part-tsp0, coop-frontier) on the default hull profile at 1×, 2×, 4× and 8× its area and
+// on the 700 × 70 hull, for n = 4 … 32. The partitioned planners use the `transfer` partitioner
+// (DARP does not converge at these sizes; docs/results.md), so every mission is one partition plus
+// one simulated mission, measured as CPU time of one thread. Scenario "imperfect" (noisy prior),
+// s1 = 5, s2 = 7, instance seed 1, time limit 200 000 steps.
 //
 //   build/release/bench/mission_scale_bench --benchmark_format=json > scale.json
 //   /usr/bin/python3 tools/plot_mission_scale.py scale.json docs/img/mission_scale.png

@@ -1,7 +1,8 @@
-// The `transfer` partitioner at scale (issue 16 §1): n = 1 … 32 UAVs on the default hull (230 × 30)
-// and on the same profile scaled to 700 × 70 (tools/make_default_hull.py --size 700x70, generated
-// at build time), with the model's default start cells; and the random-start sweep (10 start sets
-// per n, drawn from a seeded stream) reported as counters.
+// The `transfer` partitioner at scale (docs/results.md, "Partition at scale"): n = 1 … 32 UAVs on
+// the default hull (230 × 30) and on the same profile scaled to 700 × 70
+// (tools/make_default_hull.py --size 700x70, generated at build time), with the model's default
+// start cells; and the random-start sweep (10 start sets per n, drawn from a seeded stream)
+// reported as counters.
 //
 //   build/release/bench/transfer_bench --benchmark_filter=Default --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true   (one command line)

@@ -23,7 +23,7 @@ instance = hullinspect.make_instance(hull, seed=7, scenario="imperfect")
 hidden_truth = instance.truth
 
 # Coop-Frontier plans on the shared map every step, so when a UAV fails the others take over its
-# frontiers (Part-TSP would leave the failed UAV's partition unfinished; docs/beyond.md).
+# frontiers (Part-TSP would leave the failed UAV's partition unfinished; docs/failures.md).
 session = hullinspect.Session("coop-frontier", hull=hull, prior=instance.prior, uavs=4)
 
 

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/json_document.hpp"
+#include "hullinspect/files/json_document.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 15's targets for Sweep-Inspect from a `beyond` run's runs.csv (docs/beyond.md, "Measured").
+"""The targets for Sweep-Inspect from a `beyond` run's runs.csv (docs/sweep-inspect.md, "Measured results").
 
 Per cell (scenario x s2 x n of the paper's four scenarios): the best of the four paper planners by
 mean T_c, Sweep-Inspect's mean T_c and the ratio with a 95 % bootstrap interval, the paired
@@ -12,7 +12,7 @@ itself, not its interval) and the counts.
 The intervals resample the seeds (each seed keeps its missions together, so the pairing of the
 planners, and of a seed's mission with and without a failure, is kept) 4 000 times from a fixed
 stream: the same runs.csv always prints the same table. With the `beyond` preset's 10 seeds a
-cell they are wide; bench/configs/beyond_tuning_seeds.yaml gives the issue's own cells (the
+cell they are wide; bench/configs/beyond_tuning_seeds.yaml gives the targets' own cells (the
 `paper` preset's, n = 4..8) on 100 tuning seeds, and with `--instances 50` on the preset's seeds.
 
     /usr/bin/python3 tools/beyond_targets.py results/beyond/runs.csv
@@ -28,7 +28,7 @@ OURS = "sweep-inspect"
 ORACLE = "oracle-part-tsp"  # a bound, not a planner: never the best paper planner
 SCENARIOS = ["perfect", "imperfect", "inhomogeneous", "combined"]
 RESAMPLES = 4000
-FAILURE_TARGET = 1.3  # issue 15: T_c with one of n UAVs failing <= 1.3x its failure-free T_c
+FAILURE_TARGET = 1.3  # T_c with one of n UAVs failing <= 1.3x its failure-free T_c
 
 
 def read_runs(path):

@@ -3,9 +3,9 @@
 
 Per cell (scenario x s2 x n) that has a `*-fail1` twin in runs.csv: Sweep-Inspect's mean T_c
 with one failure over its failure-free mean, on all the seeds and on each block of BLOCK seeds
-in seed order (default 50, the `paper` preset's count), and how many blocks exceed the issue's
+in seed order (default 50, the `paper` preset's count), and how many blocks exceed the target's
 1.3x. It shows whether a cell that misses the target on the preset's 50 seeds misses it in the
-population or by the draw (docs/beyond.md, "Not done"; bench/configs/failure_population.yaml).
+population or by the draw (docs/sweep-inspect.md, "Limits"; bench/configs/failure_population.yaml).
 
     /usr/bin/python3 tools/failure_blocks.py RUNS.csv [BLOCK]
 """

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Figures of issue 15's targets from a `beyond` run's runs.csv (docs/beyond.md, "Measured").
+"""Figures of Sweep-Inspect's targets from a `beyond` run's runs.csv (docs/sweep-inspect.md, "Measured results").
 
 Usage: /usr/bin/python3 tools/plot_beyond.py RUNS_CSV --out DIR [--format png,pdf] [--dpi 110]
 

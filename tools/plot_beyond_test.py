@@ -3,7 +3,7 @@
 
 Made-up runs of two cells (imperfect, s2 = 7, n = 4 and 8; five seeds) are drawn, and the
 matplotlib objects are inspected: Sweep-Inspect's points sit at the ratios of means (red where the
-target is missed), the oracle and the lower bound at theirs, the target lines where the issue puts
+target is missed), the oracle and the lower bound at theirs, the target lines where the targets put
 them; the failure figure leaves out a planner that did not complete its missions with a failure
 and names it; the command writes both files.
 """

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Figure and table of bench/mission_scale_bench's "Growth" missions (issue 16 §3).
+"""Figure and table of bench/mission_scale_bench's "Growth" missions (docs/results.md, "Missions at scale").
 
 Usage: /usr/bin/python3 tools/plot_mission_scale.py BENCH_JSON FIGURE.png
 

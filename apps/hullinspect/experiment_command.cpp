@@ -17,7 +17,7 @@
 #include "hullinspect/experiment/build_data.hpp"
 #include "hullinspect/experiment/presets.hpp"
 #include "hullinspect/experiment/runner.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "number_options.hpp"
 #include "progress_reporter.hpp"
 

@@ -6,7 +6,7 @@
 
 #include "commands.hpp"
 #include "export_options.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 
 namespace hullinspect::cli {

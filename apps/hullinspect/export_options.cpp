@@ -9,7 +9,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
-#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/files/bounded_read.hpp"
 
 namespace hullinspect::cli {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/io/export.hpp"
-#include "hullinspect/io/output_set.hpp"
 
 namespace hullinspect::cli {
 

@@ -8,7 +8,7 @@
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "mesh_options.hpp"
 

@@ -8,7 +8,7 @@
 #include "experiment_commands.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/experiment/merge.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 
 namespace hullinspect::cli {
 

@@ -3,9 +3,10 @@
 #include <fmt/format.h>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/world/no_fly.hpp"
 #include "hullinspect/core/parameters.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/world/defect_map.hpp"
+#include "hullinspect/world/no_fly.hpp"
 #include "hullinspect/world/scenario.hpp"
 #include "number_options.hpp"
 
@@ -46,7 +47,8 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
   }
   const auto scenario = world::scenarios().get("perfect").specs();
   cmd.add_option("--algorithm,-a", a.algorithm, "Planner: " + planner_names)->capture_default_str();
-  cmd.add_option("--uavs,-n", a.uavs, "Fleet size n (1 … number of hull cells)")->capture_default_str();
+  cmd.add_option("--uavs,-n", a.uavs, "Fleet size n (1 … number of hull cells)")
+      ->capture_default_str();
   cmd.add_option("--s1", a.s1, "Footprint side at the close-up plane z = 1, cells (odd)")
       ->capture_default_str();
   cmd.add_option("--s2", a.s2, "Footprint side at the detection plane z = 2, cells (odd, > s1)")
@@ -100,7 +102,7 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
       ->type_name("KEY=VALUE");
   cmd.add_option("--fail", a.fail,
                  "UAV k fails at the start of step T: it stops, senses nothing (repeatable; "
-                 "docs/beyond.md)")
+                 "docs/failures.md)")
       ->type_name("UAV@T");
   cmd.add_option("--fail-rate", a.fail_rate,
                  "Probability that a working UAV fails at a step, drawn from the instance seed")
@@ -109,14 +111,29 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
                  "One UAV (drawn from the instance seed) fails at a random step below H (0: none)")
       ->type_name("H")
       ->capture_default_str();
-  cmd.add_option("--prior", a.prior,
-                 "Expected corrosion C' from FILE (text mask or PGM, marked = corroded) instead of "
-                 "the generated prior")
-      ->type_name("FILE");
-  cmd.add_option("--truth", a.truth,
-                 "Ground truth C from FILE (text mask or PGM, marked = corroded) instead of the "
-                 "generated one")
-      ->type_name("FILE");
+  auto* prior =
+      cmd.add_option(
+             "--prior", a.prior,
+             "Expected corrosion C' from FILE (text mask or PGM, marked = corroded) instead of "
+             "the generated prior")
+          ->type_name("FILE");
+  auto* truth = cmd.add_option("--truth", a.truth,
+                               "Ground truth C from FILE (text mask or PGM, marked = corroded) "
+                               "instead of the generated one")
+                    ->type_name("FILE");
+  cmd.add_option("--prior-defects", a.prior_defects,
+                 "Expected corrosion C' from a list of defects in ship coordinates (CSV or JSON: "
+                 "x_m or frame, z_m, side, w_m, h_m; docs/hulls.md)")
+      ->type_name("FILE")
+      ->excludes(prior);
+  cmd.add_option("--truth-defects", a.truth_defects,
+                 "Ground truth C from a list of defects in ship coordinates (as --prior-defects)")
+      ->type_name("FILE")
+      ->excludes(truth);
+  cmd.add_option("--frame-spacing", a.frame_spacing,
+                 "Metres between frames, for defects placed by frame number (frame 0 at x = 0)")
+      ->type_name("M")
+      ->check(real_in(1e-3, 1e3));
   add_mesh_options(cmd, a.mesh);
   add_no_fly_options(cmd, a.no_fly, a.no_fly_boxes);
   cmd.footer("Planners and their options (-O KEY=VALUE):\n" + planner_help);
@@ -144,7 +161,6 @@ std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& 
 
 world::HullMask load_mission_hull(const MissionArgs& a) {
   return load_hull_argument(a.hull, a.mesh);
-
 }
 
 planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hull) {
@@ -181,6 +197,16 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
     throw ParameterError(e.name().substr(dot + 1), e.problem());
   }
   spec.maps = world::load_user_maps(a.prior, a.truth, hull);
+  world::FrameSpacing frames;
+  frames.frame_spacing_m = a.frame_spacing;
+  if (!a.prior_defects.empty()) {
+    spec.maps.prior = std::make_shared<const world::CorrosionMap>(
+        world::load_defect_map(a.prior_defects, hull, frames));
+  }
+  if (!a.truth_defects.empty()) {
+    spec.maps.truth = std::make_shared<const world::CorrosionMap>(
+        world::load_defect_map(a.truth_defects, hull, frames));
+  }
 
   auto put = [&](const char* key, const std::optional<std::string>& v) {
     if (v) spec.planner_options[key] = *v;

@@ -37,6 +37,8 @@ struct MissionArgs {
   int fail_one_within = 0;
   MeshArgs mesh;                             // how a mesh --hull is imported
   std::string prior, truth;                  // the user's C′ and C (any hull-mask format)
+  std::string prior_defects, truth_defects;  // the same from defects in ship coordinates
+  std::optional<double> frame_spacing;       // metres between frames, for defects given by frame
 };
 
 /// Adds --no-fly FILE and --no-fly-box X0,Y0,X1,Y1 (repeatable) to a command.

@@ -10,8 +10,9 @@
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/grid/distance.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/partition/fallback.hpp"
 #include "hullinspect/partition/flight_split.hpp"
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
@@ -36,6 +37,7 @@ struct PartitionArgs {
   std::string partitioner{partition::kDefaultPartitioner};
   std::vector<std::string> options;  // key=value
   bool json = false;
+  bool no_fallback = false;  // the partitioner's own result, without the missions' fallback
   std::string out_path;
   std::string no_fly;
   std::vector<std::string> no_fly_boxes;
@@ -118,7 +120,10 @@ std::string region_mask(const world::HullMask& hull, const partition::Partition&
       "; hullinspect partition: {}, {}, seed {}, hull {}\n"
       "; one symbol per cell, top row (y = {}) first: UAV 0-9, then A-Z = 10-35, a-z = 36-61; "
       "'.' = not hull\n",
-      args.partitioner, plural(args.uavs, "UAV"), args.seed, hull.source(), hull.height() - 1);
+      p.fallback.empty()
+          ? args.partitioner
+          : fmt::format("{} (as a mission falls back from {})", p.fallback, args.partitioner),
+      plural(args.uavs, "UAV"), args.seed, hull.source(), hull.height() - 1);
   for (int y = hull.height() - 1; y >= 0; --y) {
     for (int x = 0; x < hull.width(); ++x) {
       const int k = p.owner(x, y);
@@ -135,6 +140,10 @@ void print_summary(const PartitionArgs& args, const world::HullMask& hull,
   std::cout << fmt::format("{}: {} on {} ({}), seed {}\n", args.partitioner,
                            plural(args.uavs, "UAV"), hull.source(),
                            plural(hull.cell_count(), "hull cell"), args.seed);
+  if (!p.fallback.empty()) {
+    std::cout << fmt::format("  partition produced by {} ({} did not converge; as in a mission)\n",
+                             p.fallback, args.partitioner);
+  }
   const world::Reachability& reach = flight.reach;
   if (reach.unreachable_z1 > 0) {
     std::cout << fmt::format("  no-fly zones: {} cannot be inspected, {} cannot be seen at all\n",
@@ -192,6 +201,7 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
     if (flight.reach.any_no_fly) regions.back()["flight_component"] = flight.component[k];
   }
   nlohmann::json out = {{"partitioner", args.partitioner},
+                        {"produced_by", p.fallback.empty() ? args.partitioner : p.fallback},
                         {"hull", hull.source()},
                         {"hull_cells", hull.cell_count()},
                         {"uavs", args.uavs},
@@ -257,8 +267,15 @@ int run_partition(const PartitionArgs& args) {
   }
   reject_shared_starts(params.starts, request.starts);
   flight.component = partition::start_components(request);
-  const partition::Partition result = partition::partition_per_flight_component(
-      request, [&](const partition::PartitionRequest& one) { return partitioner->partition(one); });
+  // By default the partition a mission would fly (the fallback rule of docs/model.md), so that this
+  // command and every mission on the same hull agree.
+  const partition::Partition result =
+      args.no_fallback
+          ? partition::partition_per_flight_component(
+                request,
+                [&](const partition::PartitionRequest& one) { return partitioner->partition(one); })
+          : partition::partition_with_fallback(args.partitioner, parse_options(args.options),
+                                               request);
   const auto connected = connected_regions(hull, result, args.uavs, flight);
   if (!args.out_path.empty()) {
     outputs.write(args.out_path, region_mask(hull, result, args));
@@ -288,6 +305,8 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
   }
   cmd->footer(
       "Partitioners and their options (-O KEY=VALUE):\n" + partitioners +
+      "The partition is the one a mission uses: when darp does not converge and the transfer "
+      "partitioner balances the same request better, transfer's (--no-fallback: darp's own).\n"
       "Exit status: 0 converged, 3 not converged (the best connected partition found is still "
       "reported and written), 2 invalid input, 1 other failure.\n"
       "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
@@ -309,6 +328,9 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
                   "Partitioner option as key=value, e.g. iteration-limit=500 (repeatable; listed "
                   "below)")
       ->type_name("KEY=VALUE");
+  cmd->add_flag("--no-fallback", args->no_fallback,
+                "Show the partitioner's own result, even when a mission would fall back to "
+                "transfer's partition");
   add_no_fly_options(*cmd, args->no_fly, args->no_fly_boxes);
   cmd->add_option("--s1", args->s1,
                   "Footprint side at z = 1 (with no-fly zones: which hull cells can be inspected "

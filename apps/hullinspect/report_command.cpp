@@ -15,13 +15,16 @@
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/experiment/build_data.hpp"
+#include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/paired.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
+#include "hullinspect/experiment/staged_dir.hpp"
 #include "hullinspect/experiment/summary.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/files/output_set.hpp"
+#include "number_options.hpp"
 #include "subprocess.hpp"
 
 namespace hullinspect::cli {
@@ -39,7 +42,25 @@ struct ReportArgs {
   std::vector<std::string> labels;    // ALGORITHM=LABEL for the figures
   std::vector<std::string> formats = {"png", "pdf"};
   int dpi = 150;
+  bool partial = false;         // report an incomplete set of runs (flagged) instead of refusing
+  double python_seconds = 600;  // the plotting child's time limit
 };
+
+/// The report's input: the validated rows of a finished results directory.
+struct ReportInput {
+  nlohmann::json manifest;
+  experiment::CsvTable runs;
+  int runs_total = 0;
+  std::vector<std::string> missing;  // run ids of the plan with no row, in canonical order
+};
+
+/// Up to three run ids, then how many more.
+std::string missing_list(const std::vector<std::string>& ids) {
+  std::string out = "run";
+  for (std::size_t i = 0; i < ids.size() && i < 3; ++i) out += (i == 0 ? " " : ", ") + ids[i];
+  if (ids.size() > 3) out += fmt::format(" and {} more", ids.size() - 3);
+  return out;
+}
 
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
@@ -52,19 +73,6 @@ std::string default_python() {
   return env != nullptr && *env != '\0' ? env : "/usr/bin/python3";
 }
 
-/// Figures from an earlier report of this directory (the new set may differ).
-void remove_old_figures(const fs::path& dir) {
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    const std::string name = entry.path().filename().string();
-    const std::string ext = entry.path().extension().string();
-    if ((name.starts_with("fig6_") || name.starts_with("fig7_") || name.starts_with("fig8_")) &&
-        (ext == ".png" || ext == ".pdf" || ext == ".svg")) {
-      fs::remove(entry.path(), ec);
-    }
-  }
-}
-
 std::vector<std::string> figure_stems(const fs::path& dir, const std::string& format) {
   std::vector<std::string> stems;
   std::error_code ec;
@@ -75,26 +83,51 @@ std::vector<std::string> figure_stems(const fs::path& dir, const std::string& fo
   return stems;
 }
 
-void draw_figures(const ReportArgs& a, const fs::path& out) {
-  const fs::path figures = out / "figures";
+/// The Python's own messages, for a failure: its last line (a traceback ends with the error).
+std::string last_line(const fs::path& log) {
+  std::string text;
+  try {
+    text = io::read_file(log, std::size_t{1} << 20);
+  } catch (const Error&) {
+    return "";
+  }
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  const auto start = text.rfind('\n');
+  return escape_for_message(start == std::string::npos ? text : text.substr(start + 1), 200);
+}
+
+/// Draws the figures into `staging`/figures with the script written to `staging`.
+void draw_figures(const ReportArgs& a, const fs::path& staging) {
+  const fs::path figures = staging / "figures";
   fs::create_directories(figures);
-  remove_old_figures(figures);
-  const fs::path script = out / "plot_report.py";
+  const fs::path script = staging / "plot_report.py";
   io::write_file_atomic(script, experiment::embedded_plot_script());
-  const int status = run_process({a.python, script.string(), "--results", a.results, "--summary",
-                                  (out / "summary.csv").string(), "--out", figures.string(),
-                                  "--planners", joined(a.planners), "--labels", joined(a.labels),
-                                  "--format", joined(a.formats), "--dpi", std::to_string(a.dpi)});
-  if (status != 0) {
+  const fs::path log = staging / "plot_report.log";
+  const auto r = run_process({a.python, script.string(), "--results", a.results, "--summary",
+                              (staging / "summary.csv").string(), "--out", figures.string(),
+                              "--planners", joined(a.planners), "--labels", joined(a.labels),
+                              "--format", joined(a.formats), "--dpi", std::to_string(a.dpi)},
+                             log, a.python_seconds);
+  const std::string said = last_line(log);
+  std::error_code ec;
+  fs::remove(log, ec);
+  if (r.timed_out) {
+    throw Error(
+        fmt::format("--python: plotting did not finish within {} s: {} was stopped (raise "
+                    "--python-timeout, or pass --no-figures)",
+                    a.python_seconds, escape_for_message(a.python, 200)));
+  }
+  if (r.status != 0) {
     throw Error(fmt::format(
-        "plotting failed: {} {} exited with status {} (is Debian's python3-matplotlib installed? "
-        "run scripts/setup, or pass --no-figures)",
-        a.python, script.string(), status));
+        "--python: plotting failed: {} exited with status {}{} (is Debian's python3-matplotlib "
+        "installed? run scripts/setup, or pass --no-figures)",
+        escape_for_message(a.python, 200), r.status, said.empty() ? "" : ": " + said));
   }
 }
 
-std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const std::string& tables,
+std::string report_markdown(const ReportInput& in, const ReportArgs& a, const std::string& tables,
                             const std::string& paired, const std::vector<std::string>& figures) {
+  const auto& m = in.manifest;
   const auto& config = m.at("config");
   std::string md = fmt::format("# Experiment report: {}\n\n", config.value("name", "?"));
   if (!config.value("description", "").empty()) md += config.value("description", "") + "\n\n";
@@ -106,6 +139,12 @@ std::string report_markdown(const nlohmann::json& m, const ReportArgs& a, const 
                     m.value("config_source", "?"), m.value("fingerprint", "?"),
                     m.value("version", "?"), m.value("git_revision", "unknown"));
   md += fmt::format("- Ran from {} to {}\n", m.value("started", "?"), m.value("finished", "?"));
+  if (!in.missing.empty()) {
+    md += fmt::format(
+        "- **Partial**: {} of the experiment's {} missing ({}); every table and "
+        "figure covers only the runs found\n",
+        in.missing.size(), plural(in.runs_total, "run"), missing_list(in.missing));
+  }
   md +=
       "- Times in seconds (one step = 1 s). Each cell gives the mean ± sample standard deviation "
       "over the missions that reached the time; \"[k incomplete]\" counts missions stopped by the "
@@ -170,15 +209,10 @@ void check_python(const std::string& python) {
                                              escape_for_message(python, 200)));
 }
 
-int run(const ReportArgs& a) {
+ReportInput read_results(const ReportArgs& a) {
   const fs::path results(a.results);
-  const fs::path out(a.out);
-  io::OutputSet outputs;
-  outputs.add_input(results / experiment::kRunsFile, "results");
-  outputs.add_output_dir(out, "out");
-  outputs.check();
-  if (!a.no_figures) check_python(a.python);
-  const auto manifest = experiment::read_manifest(results);
+  ReportInput in;
+  in.manifest = experiment::read_manifest(results);
   for (const char* file : {experiment::kRunsFile, experiment::kCurvesFile}) {
     if (!fs::exists(results / file)) {
       throw InputError((results / file).string(), 0,
@@ -186,13 +220,46 @@ int run(const ReportArgs& a) {
                        "merge its shards first)");
     }
   }
+  // Every row is checked against the experiment's plan, as --resume and merge check them.
+  const auto plan = experiment::results_plan(results, in.manifest);
+  const auto stored = experiment::read_stored_runs(results, plan, true);
+  in.runs_total = static_cast<int>(plan.runs().size());
+  for (const auto& run : plan.runs()) {
+    if (!stored.records.contains(run.id)) in.missing.push_back(run.id);
+  }
+  if (!in.missing.empty() && !a.partial) {
+    throw InputError((results / experiment::kRunsFile).string(), 0,
+                     fmt::format("{} of the experiment's {} {} missing ({}): finish them with "
+                                 "--resume or merge the shards, or pass --partial",
+                                 in.missing.size(), plural(in.runs_total, "run"),
+                                 in.missing.size() == 1 ? "is" : "are", missing_list(in.missing)));
+  }
+  const auto curves_path = (results / experiment::kCurvesFile).string();
+  if (io::read_file(curves_path, std::size_t{16} << 30) !=
+      experiment::curves_csv(plan, experiment::canonical_lines(plan, stored))) {
+    throw InputError(curves_path, 0,
+                     "does not match runs.csv and samples.csv (truncated or edited? merge the "
+                     "directory into a new one to rebuild it)");
+  }
   const auto runs_path = (results / experiment::kRunsFile).string();
-  const auto runs =
-      experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
-  const auto rows = experiment::summarize_runs(runs, runs_path);
+  in.runs = experiment::parse_csv(io::read_file(runs_path, std::size_t{16} << 30), runs_path);
+  return in;
+}
+
+int run_report(const ReportArgs& a) {
+  const fs::path results(a.results);
+  const fs::path out(a.out);
+  io::OutputSet outputs;
+  outputs.add_input(results / experiment::kRunsFile, "results");
+  outputs.add_output_dir(out, "out");
+  outputs.check();
+  if (!a.no_figures) check_python(a.python);
+  const ReportInput in = read_results(a);
+  const auto rows = experiment::summarize_runs(in.runs, (results / experiment::kRunsFile).string());
   experiment::PairedOptions paired_options;
   paired_options.algorithms = a.planners;
-  const auto analysis = experiment::analyse_pairs(runs, runs_path, paired_options);
+  const auto analysis = experiment::analyse_pairs(
+      in.runs, (results / experiment::kRunsFile).string(), paired_options);
   for (const auto& l : a.labels) {
     const auto eq = l.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == l.size()) {
@@ -205,28 +272,26 @@ int run(const ReportArgs& a) {
     }
   }
   const auto claims = experiment::check_paper_claims(analysis);
-  if (manifest.value("shard", "1/1") != "1/1") {
-    std::cerr << fmt::format(
-        "hullinspect: {} holds shard {} only: merge the shards for the whole "
-        "experiment\n",
-        a.results, manifest.value("shard", "?"));
+  if (!in.missing.empty()) {
+    std::cerr << fmt::format("hullinspect: {}: partial report: {} of the experiment's {} missing\n",
+                             a.results, in.missing.size(), plural(in.runs_total, "run"));
   }
-  if (manifest.value("status", "") != "complete") {
-    std::cerr << fmt::format(
-        "hullinspect: {} has status '{}': the report covers the {} runs found\n", a.results,
-        manifest.value("status", "?"), runs.rows.size());
-  }
-  fs::create_directories(out);
+  // Everything is written into a staging directory and moved into --out only when all is written.
+  experiment::StagedDir staged(out);
+  const fs::path& stage = staged.path();
   const std::string tables = experiment::summary_markdown(rows);
-  io::write_file_atomic(out / "summary.csv", experiment::summary_csv(rows));
-  io::write_file_atomic(out / "summary.md", tables);
-  io::write_file_atomic(out / "paired.csv", experiment::paired_csv(analysis));
-  if (!a.no_figures) draw_figures(a, out);
-  const auto figures =
-      !a.no_figures ? figure_stems(out / "figures", a.formats.front()) : std::vector<std::string>{};
+  io::write_file_atomic(stage / "summary.csv", experiment::summary_csv(rows));
+  io::write_file_atomic(stage / "summary.md", tables);
+  io::write_file_atomic(stage / "paired.csv", experiment::paired_csv(analysis));
+  InterruptGuard::check();
+  if (!a.no_figures) draw_figures(a, stage);
+  const auto figures = !a.no_figures ? figure_stems(stage / "figures", a.formats.front())
+                                     : std::vector<std::string>{};
   io::write_file_atomic(
-      out / "report.md",
-      report_markdown(manifest, a, tables, experiment::paired_markdown(analysis, claims), figures));
+      stage / "report.md",
+      report_markdown(in, a, tables, experiment::paired_markdown(analysis, claims), figures));
+  InterruptGuard::check();
+  staged.commit();
   std::cout << tables;
   std::cout << "\nThe paper's claims (details and paired differences in report.md):\n";
   for (const auto& c : claims) std::cout << fmt::format("  {}: {}\n", c.id, c.verdict);
@@ -235,6 +300,16 @@ int run(const ReportArgs& a) {
                            plural(static_cast<long long>(figures.size()), "figure"),
                            joined(a.formats));
   return 0;
+}
+
+int run(const ReportArgs& a) {
+  InterruptGuard guard;
+  try {
+    return run_report(a);
+  } catch (const Interrupted& e) {
+    // The staging directory is gone (unwound); end as the signal would have.
+    InterruptGuard::die(e.signal());
+  }
 }
 
 }  // namespace
@@ -272,6 +347,14 @@ void add_report_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG figures")
       ->check(CLI::Range(30, 1200))
       ->capture_default_str();
+  cmd->add_flag("--partial", args->partial,
+                "Report the runs found when some of the experiment's runs are missing (flagged in "
+                "report.md); without it such results are refused");
+  cmd->add_option("--python-timeout", args->python_seconds,
+                  "Seconds the plotting may take before it is stopped")
+      ->check(real_in(1, 86400))
+      ->capture_default_str()
+      ->type_name("SECONDS");
   cmd->callback([args, &action] { action = [args] { return run(*args); }; });
 }
 

@@ -9,7 +9,7 @@
 #include "export_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/io/viewer_html.hpp"

@@ -7,8 +7,8 @@
 
 #include "commands.hpp"
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/io/viewer_html.hpp"
 #include "mission_options.hpp"

@@ -10,8 +10,9 @@
 #include "config_scenarios.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
 
@@ -110,6 +111,69 @@ void read_user_maps(const YamlFields& f, const YAML::Node& root,
   } catch (const InputError& e) {
     f.fail(root["truth"], "truth", e.what());
   }
+  c.prior_defects_path = path("prior-defects");
+  c.truth_defects_path = path("truth-defects");
+  if (root["frame-spacing"]) {
+    c.frame_spacing = f.as_number(root["frame-spacing"], "frame-spacing", 1e-3, 1e3);
+  }
+  world::FrameSpacing frames;
+  frames.frame_spacing_m = c.frame_spacing;
+  const auto defects = [&](const char* key, const char* mask_key, const std::string& file,
+                           std::shared_ptr<const world::CorrosionMap>& map) {
+    if (file.empty()) return;
+    if (root[mask_key]) {
+      f.fail(root[key], key, fmt::format("give either {} or {}, not both", mask_key, key));
+    }
+    try {
+      map = std::make_shared<const world::CorrosionMap>(
+          world::load_defect_map(file, *c.hull, frames));
+    } catch (const InputError& e) {
+      f.fail(root[key], key, e.what());
+    }
+  };
+  defects("prior-defects", "prior", c.prior_defects_path, c.maps.prior);
+  defects("truth-defects", "truth", c.truth_defects_path, c.maps.truth);
+}
+
+/// `prior:` replaces the generated C′ and `truth:` the generated C (docs/model.md): a scenario or
+/// sweep parameter that only shapes a replaced map would label runs with a value that had no
+/// effect.
+void refuse_replaced_parameters(const YamlFields& f, const YAML::Node& root) {
+  const bool prior = static_cast<bool>(root["prior"]);
+  const bool truth = static_cast<bool>(root["truth"]);
+  const auto replaced_by = [&](std::string_view key) -> std::string_view {
+    if (prior && (key == "p_tp" || key == "p_fp")) return "prior";
+    const bool corrosion = key == "zones" || key.ends_with("p_c") || key.ends_with("l_c");
+    if (truth && corrosion) return "truth";
+    return {};
+  };
+  const auto fail = [&](const YAML::Node& node, const std::string& key, std::string_view map) {
+    f.fail(node, key,
+           fmt::format("has no effect with '{}:' (the {} file replaces the map it would shape); "
+                       "remove one of them",
+                       map, map));
+  };
+  if (!prior && !truth) return;
+  if (const auto scenarios = root["scenarios"]; scenarios && scenarios.IsSequence()) {
+    for (std::size_t i = 0; i < scenarios.size(); ++i) {
+      if (!scenarios[i].IsMap()) continue;
+      for (const auto& entry : scenarios[i]) {
+        const auto key = entry.first.as<std::string>();
+        if (const auto map = replaced_by(key); !map.empty()) {
+          fail(entry.second, fmt::format("scenarios[{}].{}", i, key), map);
+        }
+      }
+    }
+  }
+  if (const auto sweeps = root["sweeps"]; sweeps && sweeps.IsSequence()) {
+    for (std::size_t i = 0; i < sweeps.size(); ++i) {
+      const auto parameter = sweeps[i].IsMap() ? sweeps[i]["parameter"] : YAML::Node();
+      if (!parameter || !parameter.IsScalar()) continue;
+      if (const auto map = replaced_by(parameter.Scalar()); !map.empty()) {
+        fail(parameter, fmt::format("sweeps[{}].parameter", i), map);
+      }
+    }
+  }
 }
 
 void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesystem::path& base_dir,
@@ -127,6 +191,14 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   const YAML::Node h = root["hull"];
   const int hull_line = h ? YamlFields::line(h) : 0;
   if (h && h.IsMap()) {
+    // A mesh hull's grid and cell size come from the mesh: a grid: key would be ignored.
+    for (const char* key : {"width", "height", "cell_size"}) {
+      if (const auto g = root["grid"]; g && g[key]) {
+        f.fail(g[key], std::string("grid.") + key,
+               "cannot be set for a mesh hull (its grid comes from the mesh; set hull.cell-size "
+               "instead)");
+      }
+    }
     read_mesh_hull(f, h, base_dir, c);
   } else if (h) {
     c.hull_spec = f.as_string(h, "hull");
@@ -162,6 +234,12 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
   c.hull_hash =
       stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
+  if (const auto g = root["grid"]; c.hull->geometry() && g && g["cell_size"] &&
+                                   c.cell_size != c.hull->geometry()->cell_size) {
+    f.fail(g["cell_size"], "grid.cell_size",
+           fmt::format("is {} but the hull's geometry has cells of {} m", c.cell_size,
+                       c.hull->geometry()->cell_size));
+  }
   if (c.hull->geometry()) c.cell_size = c.hull->geometry()->cell_size;
   c.hull_width = c.hull->width();
   c.hull_height = c.hull->height();
@@ -277,14 +355,17 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   c.name = std::filesystem::path(source).stem().string();
   if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   f.expect_map(root, "",
-               {"name", "description", "hull", "grid", "scenarios", "sweeps", "s1", "s2", "theta",
-                "uavs", "start_z", "algorithms", "instances", "first_seed", "time_limit", "curve",
-                "prior", "truth", "no-fly"});
+               {"name",          "description", "hull",      "grid",          "scenarios",
+                "sweeps",        "s1",          "s2",        "theta",         "uavs",
+                "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
+                "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
+                "frame-spacing", "no-fly"});
   for (const char* key : {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull"}) {
     remember_line(c, root, key);
   }
   if (root["name"]) c.name = f.as_label(root["name"], "name");
   if (root["description"]) c.description = f.as_string(root["description"], "description");
+  refuse_replaced_parameters(f, root);
   read_hull(f, root, base_dir, c);
   detail::read_no_fly(f, root, base_dir, c);
   read_user_maps(f, root, base_dir, c);
@@ -374,6 +455,9 @@ nlohmann::json config_json(const ExperimentConfig& c) {
   // Only when given, so configs without user maps keep their fingerprints.
   if (!c.prior_path.empty()) j["prior"] = c.prior_path;
   if (!c.truth_path.empty()) j["truth"] = c.truth_path;
+  if (!c.prior_defects_path.empty()) j["prior_defects"] = c.prior_defects_path;
+  if (!c.truth_defects_path.empty()) j["truth_defects"] = c.truth_defects_path;
+  if (c.frame_spacing) j["frame_spacing"] = *c.frame_spacing;
   json scenarios = json::array();
   for (const auto& s : c.scenarios) {
     json zones = json::array();
@@ -424,6 +508,11 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     if (j.contains("no_fly")) c.no_fly_spec = j.at("no_fly");
     if (j.contains("prior")) c.prior_path = j.at("prior").get<std::string>();
     if (j.contains("truth")) c.truth_path = j.at("truth").get<std::string>();
+    if (j.contains("prior_defects"))
+      c.prior_defects_path = j.at("prior_defects").get<std::string>();
+    if (j.contains("truth_defects"))
+      c.truth_defects_path = j.at("truth_defects").get<std::string>();
+    if (j.contains("frame_spacing")) c.frame_spacing = j.at("frame_spacing").get<double>();
     for (const auto& s : j.at("scenarios")) {
       ScenarioSpec spec;
       spec.name = s.at("name").get<std::string>();

@@ -195,7 +195,7 @@ class ScenarioParser {
     }
   }
 
-  /// failures: {at: [UAV@STEP, …], rate: P, one_within: H} (docs/beyond.md).
+  /// failures: {at: [UAV@STEP, …], rate: P, one_within: H} (docs/failures.md).
   world::FailurePlan failures(const YAML::Node& node, const std::string& key) const {
     f_.expect_map(node, key, {"at", "rate", "one_within"});
     world::FailurePlan plan;

@@ -9,8 +9,8 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/csv.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
 
 namespace hullinspect::experiment {
 

@@ -8,6 +8,7 @@
 #include "hullinspect/experiment/manifest.hpp"
 #include "hullinspect/experiment/plan.hpp"
 #include "hullinspect/experiment/results_dir.hpp"
+#include "hullinspect/experiment/staged_dir.hpp"
 
 namespace hullinspect::experiment {
 
@@ -30,14 +31,7 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
                                    fingerprint));
     }
   }
-  const auto first_manifest = (inputs[0] / kManifestFile).string();
-  if (!manifests[0].contains("config")) throw InputError(first_manifest, 0, "has no 'config'");
-  const ExperimentPlan plan(config_from_json(manifests[0]["config"], first_manifest));
-  if (config_fingerprint(plan.config()) != fingerprint) {
-    throw InputError(first_manifest, 0,
-                     "its config does not reproduce its fingerprint (edited by hand, or written by "
-                     "another version of hullinspect?)");
-  }
+  const ExperimentPlan plan = results_plan(inputs[0], manifests[0]);
 
   MergeSummary summary;
   summary.inputs = static_cast<int>(inputs.size());
@@ -58,10 +52,10 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
   summary.runs = static_cast<int>(merged.records.size());
   summary.missing = static_cast<int>(plan.runs().size()) - summary.runs;
 
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw InputError(out.string(), 0, fmt::format("cannot create: {}", ec.message()));
-  write_final_tables(out, plan, merged);
+  // Written whole into a staging directory and renamed into place: a full disk leaves no output
+  // directory behind.
+  StagedDir staged(out);
+  write_final_tables(staged.path(), plan, merged);
 
   nlohmann::json manifest = base_manifest(plan);
   manifest["config_source"] = manifests[0].value("config_source", "");
@@ -91,7 +85,8 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
   manifest["finished"] = finished;
   manifest["merged_at"] = utc_now();
   manifest["merged_from"] = parts;
-  write_manifest(out, manifest);
+  write_manifest(staged.path(), manifest);
+  staged.commit();
   return summary;
 }
 

@@ -8,17 +8,24 @@
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/journal.hpp"
 #include "hullinspect/experiment/run_row_check.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 
 namespace hullinspect::experiment {
 
 namespace {
 
-std::unordered_map<std::string, std::string> by_id(const std::filesystem::path& file,
-                                                   const JournalRows& rows,
-                                                   const ExperimentPlan& plan,
-                                                   bool check_runs_rows = false) {
-  std::unordered_map<std::string, std::string> out;
+/// A journal line and its line number in the file.
+struct Row {
+  std::string text;
+  int line = 0;
+};
+
+/// The rows of one journal by run id: every id a run of `plan`, none twice, and (for runs.csv)
+/// every row a possible record of its run.
+std::unordered_map<std::string, Row> by_id(const std::filesystem::path& file,
+                                           const JournalRows& rows, const ExperimentPlan& plan,
+                                           bool check_runs_rows = false) {
+  std::unordered_map<std::string, Row> out;
   int line = 1;
   for (const auto& l : rows.lines) {
     ++line;
@@ -35,10 +42,10 @@ std::unordered_map<std::string, std::string> by_id(const std::filesystem::path& 
           run_row_problem(plan, plan.runs()[static_cast<std::size_t>(position)], l);
       if (!problem.empty()) throw InputError(file.string(), line, problem);
     }
-    auto [it, inserted] = out.emplace(id, l);
-    if (!inserted && it->second != l) {
+    auto [it, inserted] = out.emplace(id, Row{l, line});
+    if (!inserted) {
       throw InputError(file.string(), line,
-                       fmt::format("run {} appears twice with different values", id));
+                       fmt::format("run {} appears twice (also on line {})", id, it->second.line));
     }
   }
   return out;
@@ -46,7 +53,20 @@ std::unordered_map<std::string, std::string> by_id(const std::filesystem::path& 
 
 }  // namespace
 
-StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPlan& plan) {
+ExperimentPlan results_plan(const std::filesystem::path& dir, const nlohmann::json& manifest) {
+  const auto source = (dir / kManifestFile).string();
+  if (!manifest.contains("config")) throw InputError(source, 0, "has no 'config'");
+  ExperimentPlan plan(config_from_json(manifest["config"], source));
+  if (config_fingerprint(plan.config()) != manifest.value("fingerprint", "")) {
+    throw InputError(source, 0,
+                     "its config does not reproduce its fingerprint (edited by hand, or written by "
+                     "another version of hullinspect?)");
+  }
+  return plan;
+}
+
+StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPlan& plan,
+                            bool finished) {
   StoredRuns stored;
   const auto runs_path = dir / kRunsFile;
   const auto samples_path = dir / kSamplesFile;
@@ -57,6 +77,9 @@ StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPl
   for (const auto* j : {&runs, &samples, &timings}) {
     if (j->torn) {
       const auto& name = j == &runs ? runs_path : j == &samples ? samples_path : timings_path;
+      if (finished) {
+        throw InputError(name.string(), 0, "ends in a line without a line break (truncated?)");
+      }
       stored.notes.push_back(fmt::format("{}: dropped a torn last line", name.string()));
     }
   }
@@ -67,18 +90,30 @@ StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPl
   for (const auto& [id, line] : run_lines) {
     auto s = sample_lines.find(id);
     if (s == sample_lines.end()) {
+      if (finished) {
+        throw InputError(samples_path.string(), 0,
+                         fmt::format("has no row for run {} of runs.csv", id));
+      }
       ++unfinished;
       continue;
     }
+    const RunKey& run = plan.runs()[static_cast<std::size_t>(plan.run_position(id))];
+    const auto problem = samples_row_problem(plan, run, line.text, s->second.text);
+    if (!problem.empty()) throw InputError(samples_path.string(), s->second.line, problem);
     RunRecord record;
-    record.runs = line;
-    record.samples = std::move(s->second);
+    record.runs = line.text;
+    record.samples = std::move(s->second.text);
     auto t = timing_lines.find(id);
-    record.timings = t != timing_lines.end() ? std::move(t->second) : id + ",,,,";
+    record.timings = t != timing_lines.end() ? std::move(t->second.text) : id + ",,,,";
     stored.records.emplace(id, std::move(record));
   }
-  for (const auto& entry : sample_lines) {
-    if (!run_lines.contains(entry.first)) ++unfinished;
+  for (const auto& [id, row] : sample_lines) {
+    if (run_lines.contains(id)) continue;
+    if (finished) {
+      throw InputError(samples_path.string(), row.line,
+                       fmt::format("run {} has no row in runs.csv", id));
+    }
+    ++unfinished;
   }
   if (unfinished > 0) {
     stored.notes.push_back(fmt::format(

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_row_check.hpp"
 
@@ -127,43 +126,10 @@ std::vector<std::string> run_parameter_fields(const ExperimentPlan& plan, const 
           std::to_string(run.seed)};
 }
 
-static std::string failures_field(const ExperimentPlan& plan, const RunKey& run) {
+std::string run_failures_field(const ExperimentPlan& plan, const RunKey& run) {
   const auto& c = plan.config();
   const Cell& cell = plan.cells()[static_cast<std::size_t>(run.cell)];
   return c.scenarios[static_cast<std::size_t>(cell.scenario)].failures.text();
-}
-
-std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::string_view line) {
-  const auto fields = split_csv_line(line);
-  const auto header = runs_header();
-  if (!fields || fields->size() != header.size()) return "malformed row";
-  const auto expected = run_parameter_fields(plan, run);
-  for (std::size_t k = 0; k < expected.size(); ++k) {
-    if ((*fields)[k] != expected[k]) {
-      return fmt::format("{} is '{}' but run {} of this experiment has '{}'", header[k],
-                         escape_for_message((*fields)[k]), run.id, escape_for_message(expected[k]));
-    }
-  }
-  for (std::size_t k = expected.size(); k < header.size(); ++k) {
-    const std::string& v = (*fields)[k];
-    if (header[k] == "failures") {
-      // A parameter, though it comes after the results: the scenario's failure model.
-      const auto expected_failures = failures_field(plan, run);
-      if (v != expected_failures) {
-        return fmt::format("failures is '{}' but run {} of this experiment has '{}'",
-                           escape_for_message(v), run.id, escape_for_message(expected_failures));
-      }
-      continue;
-    }
-    const bool optional = header[k] == "T_c" || header[k] == "T_m";
-    if (optional && v.empty()) continue;
-    try {
-      (void)parse_integer<long long>(v, 0, header[k] == "complete" ? 1 : kMaxStoredCount);
-    } catch (const NumberError& e) {
-      return fmt::format("{} {}", header[k], e.what());
-    }
-  }
-  return {};
 }
 
 RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::MissionResult& r,
@@ -193,7 +159,7 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
                             std::to_string(r.planner.tsp_fallbacks),
                             std::to_string(r.planner.replans),
                             std::to_string(r.planner.assignments),
-                            failures_field(plan, run),
+                            run_failures_field(plan, run),
                             std::to_string(r.failed_uavs),
                             std::to_string(r.bound_t_c),
                             std::to_string(r.bound_t_m),

@@ -4,9 +4,9 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
-#include "hullinspect/io/json_document.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/files/json_document.hpp"
 
 namespace hullinspect::io {
 

@@ -74,7 +74,7 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
   declare_prior_weight_options(p);
   p.flag("share-work", &PartTspOptions::share_work,
          "beyond the paper: a UAV that is done takes over a failed UAV's region, else part of the "
-         "most loaded UAV's remaining work (docs/beyond.md)");
+         "most loaded UAV's remaining work (docs/part-tsp.md)");
   return p;
 }
 
@@ -246,13 +246,13 @@ void add_builtins(PlannerRegistry& r) {
       "sweep-inspect",
       "beyond the paper: sweep the region at z = 2 in bands of s2 rows or columns, inspect "
       "detections as they come abreast, then help with the nearest unclaimed work anywhere "
-      "(docs/beyond.md)",
+      "(docs/sweep-inspect.md)",
       sweep_inspect_params(),
       [](const SweepInspectOptions& o) { return std::make_unique<SweepInspectPlanner>(o); }));
   r.add_builtin(make_entry<Planner, PartTspOptions>(
       "oracle-part-tsp",
       "BOUND, not a planner: Part-TSP whose local maps start from the ground truth C instead of "
-      "the prior (sees the truth; docs/beyond.md)",
+      "the prior (sees the truth; docs/model.md §11)",
       part_tsp_params(true, true),
       [](const PartTspOptions& o) { return std::make_unique<PartTspPlanner>(o); },
       /*sees_truth=*/true));

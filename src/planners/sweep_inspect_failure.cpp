@@ -1,4 +1,4 @@
-// Sweep-Inspect after a UAV fails (docs/beyond.md, Sweep-Inspect item 8, take-over-sweep): the
+// Sweep-Inspect after a UAV fails (docs/sweep-inspect.md, "Failures", take-over-sweep): the
 // cells not yet observed are re-split among the working UAVs so that they end together.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"

@@ -1,4 +1,4 @@
-// Sweep-Inspect's regions (docs/beyond.md, Sweep-Inspect item 1): the band partition with its
+// Sweep-Inspect's regions (docs/sweep-inspect.md, "Regions"): the band partition with its
 // flight-balanced cuts, and the columns swept at z = 1.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"

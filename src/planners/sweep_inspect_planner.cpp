@@ -1,4 +1,4 @@
-// Sweep-Inspect (docs/beyond.md, "Sweep-Inspect"): the mission's start and each step's decision per
+// Sweep-Inspect (docs/sweep-inspect.md): the mission's start and each step's decision per
 // UAV — prior tour, sweep, inspection, return, help — and the trace annotations. The other stages
 // are in sweep_inspect_{partition,sweep,targets,prior,failure}.cpp.
 

@@ -1,6 +1,6 @@
-// Sweep-Inspect's tours of the prior's cells at z = 1 (docs/beyond.md, Sweep-Inspect items 2 and
-// 7): the planned tour, its estimate, and the re-splits that end neighbours' tours together
-// (share-prior), also of a failed UAV's cells.
+// Sweep-Inspect's tours of the prior's cells at z = 1 (docs/sweep-inspect.md, "The prior" and
+// "Failures"): the planned tour, its estimate, and the re-splits that end neighbours' tours
+// together (share-prior), also of a failed UAV's cells.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 

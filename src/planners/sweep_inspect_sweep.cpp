@@ -1,4 +1,4 @@
-// Sweep-Inspect's sweeps (docs/beyond.md, Sweep-Inspect items 4–6): planning a UAV's bands,
+// Sweep-Inspect's sweeps (docs/sweep-inspect.md, "The sweep" to "Help"): planning a UAV's bands,
 // following them (skipping what is seen), rejoining after an inspection, and taking over the tail
 // of another UAV's sweep (share-sweep).
 
@@ -97,11 +97,11 @@ void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int 
   // A share after a failure's re-split holds cells other UAVs left part-swept, and one
   // boustrophedon over its ragged bands can leave a band for last on its far side (combined,
   // s2 = 7, tuning seed 1 000 148, UAV 1 failing at 74 s: T_c 417 s, 337 s in two blocks).
-  // On the 300 tuning seeds of failure_population.yaml the three s2's ratios went 1.2861 /
-  // 1.2486 / 1.2660 -> 1.2758 / 1.2485 / 1.2653 for shares with both planes (session 27), and
-  // -> 1.2723 / 1.2476 / 1.2633 with shares wholly in dense columns too; no mission without a
-  // failure changed. (At z = 2 the same gained less and lost more: 1.2759 / 1.2468 / 1.2649,
-  // up to +82 s in a mission.)
+  // On the 300 tuning seeds of failure_population.yaml the three s2's ratios are 1.2723 /
+  // 1.2476 / 1.2633 with two blocks for shares with both planes and shares wholly in dense
+  // columns, against 1.2861 / 1.2486 / 1.2660 with one boustrophedon; no mission without a
+  // failure changes. (Two blocks at z = 2 gain less and lose more: 1.2759 / 1.2468 / 1.2649, up
+  // to +82 s in a mission, so they are not planned there.)
   const SweepRequest request{
       k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
   auto blocks = two_block_sweep(owner, request, from, waypoints);

@@ -1,4 +1,4 @@
-// Sweep-Inspect's single targets (docs/beyond.md, Sweep-Inspect item 6): the help phase of a UAV
+// Sweep-Inspect's single targets (docs/sweep-inspect.md, "Help"): the help phase of a UAV
 // whose sweep is done, the nearest detection, unobserved cell or cluster edge a UAV may take, and
 // the claims that keep two UAVs off one target (yield-claims).
 

@@ -71,7 +71,7 @@ CbcCutOptions CbcCutSolver::read_options(const OptionMap& options) {
 TspSolution CbcCutSolver::solve(const SegmentTsp& problem) {
   const auto started = std::chrono::steady_clock::now();
   if (problem.segments.empty()) return detail::make_solution(problem, {}, true, started);
-  // The heuristic's tour is CBC's first incumbent (the "seeded by the heuristic"), and
+  // The heuristic's tour is CBC's first incumbent (docs/tsp.md: "seeded with the heuristic's tour"), and
   // the answer if the time limit stops CBC first.
   TspSolution incumbent = HeuristicSolver().solve(problem);
   std::vector<int> entries;

@@ -8,8 +8,8 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
+#include "hullinspect/files/bounded_read.hpp"
 #include "hullinspect/grid/distance.hpp"
-#include "hullinspect/io/bounded_read.hpp"
 #include "hullinspect/world/cell_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 

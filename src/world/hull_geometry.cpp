@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/json_document.hpp"
+#include "hullinspect/files/json_document.hpp"
 #include "hullinspect/world/hull.hpp"
 
 namespace hullinspect::world {

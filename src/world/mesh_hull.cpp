@@ -7,7 +7,7 @@
 #include <cctype>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 
 namespace hullinspect::world {
 

@@ -1,4 +1,4 @@
-// Defects of issue 11 that do not fit the bad-input table: standard output that cannot be written,
+// Output defects that do not fit the bad-input table: standard output that cannot be written,
 // fleet sizes whose default starts used to collide, rows edited by hand before a merge.
 
 #include <gtest/gtest.h>

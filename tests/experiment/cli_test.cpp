@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <map>
 #include <set>
 #include <thread>
 
@@ -67,6 +68,10 @@ Outcome wait_cli(pid_t pid, const ScratchDir& dir) {
   o.out = read(dir / "stdout.txt");
   o.err = read(dir / "stderr.txt");
   return o;
+}
+
+std::string read_if_exists(const std::filesystem::path& path) {
+  return std::filesystem::exists(path) ? read(path) : std::string();
 }
 
 Outcome run_cli(const std::vector<std::string>& args, const ScratchDir& dir) {
@@ -216,6 +221,15 @@ TEST(ExperimentCli, ReportWritesEveryTableAndFigure) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(bad.err, "hullinspect: --labels: 'zz' is not an algorithm of the report\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+
+  // A new report into the same directory replaces the earlier figures whole: SVG only now.
+  const Outcome again =
+      run_cli({"report", results.string(), "--out", report.string(), "--format", "svg"}, dir);
+  ASSERT_EQ(again.status, 0) << again.err;
+  for (const auto& f : std::filesystem::directory_iterator(report / "figures")) {
+    EXPECT_EQ(f.path().extension(), ".svg") << f.path();
+  }
+  EXPECT_TRUE(std::filesystem::exists(report / "figures" / "fig6_dense.svg"));
 }
 
 TEST(ExperimentCli, ErrorsAreOneLineWithExitStatus2) {
@@ -276,6 +290,205 @@ TEST(ExperimentCli, ShardsFromSlurmAndAPartialMerge) {
       run_cli({"merge", (dir / "all").string(), "--out", (dir / "one").string()}, dir);
   EXPECT_EQ(single.status, 0) << single.err;
   EXPECT_EQ(single.out, "merged 1 directory into " + (dir / "one").string() + ": 18 runs\n");
+}
+
+namespace report_checks {
+
+/// Every entry under `dir` with its bytes (files) or kind.
+std::map<std::string, std::string> contents(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> out;
+  if (!std::filesystem::exists(dir)) return out;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    out[std::filesystem::relative(e.path(), dir).string()] =
+        e.is_regular_file() ? read(e.path()) : "dir";
+  }
+  return out;
+}
+
+/// True when `dir` holds an entry left by a staging directory.
+bool staging_left(const std::filesystem::path& dir) {
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (e.path().filename().string().find(".staging-") != std::string::npos) return true;
+  }
+  return false;
+}
+
+/// Runs the experiment of kReportConfig (18 runs) from `config` into `results`.
+bool run_small_experiment(const ScratchDir& dir, const std::filesystem::path& config,
+                          const std::filesystem::path& results) {
+  io::write_file_atomic(config, kReportConfig);
+  const Outcome o =
+      run_cli({"experiment", "--config", config.string(), "--out", results.string()}, dir);
+  EXPECT_EQ(o.status, 0) << o.err;
+  return o.status == 0;
+}
+
+void write_script(const std::filesystem::path& path, const std::string& body) {
+  io::write_file_atomic(path, "#!/bin/sh\n" + body);
+  std::filesystem::permissions(path, std::filesystem::perms::owner_all);
+}
+
+}  // namespace report_checks
+
+TEST(ExperimentCli, ReportRefusesRowsThatLieAndNamesMissingRuns) {
+  using report_checks::contents;
+  ScratchDir dir("report-rows");
+  const auto config = dir / "small.yaml";
+  const auto results = dir / "results";
+  ASSERT_TRUE(report_checks::run_small_experiment(dir, config, results));
+  const std::string runs = read(results / kRunsFile);
+  const std::string first =
+      runs.substr(runs.find('\n') + 1, runs.find('\n', runs.find('\n') + 1) - runs.find('\n'));
+  const std::string id = first.substr(0, first.find(','));
+
+  // A duplicated row (the report would count 4 runs of 3).
+  io::write_file_atomic(results / kRunsFile, runs + first);
+  const auto report = dir / "report";
+  Outcome o = run_cli({"report", results.string(), "--out", report.string(), "--no-figures"}, dir);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "hullinspect: " + (results / kRunsFile).string() + ":20: run " + id +
+                       " appears twice (also on line 2)\n");
+  EXPECT_FALSE(std::filesystem::exists(report));
+  io::write_file_atomic(results / kRunsFile, runs);
+
+  // A truncated curves.csv is refused in one line, before any Python runs.
+  const std::string curves = read(results / kCurvesFile);
+  io::write_file_atomic(results / kCurvesFile, curves.substr(0, curves.size() / 2));
+  o = run_cli({"report", results.string(), "--out", report.string()}, dir);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "hullinspect: " + (results / kCurvesFile).string() +
+                       ": does not match runs.csv and samples.csv (truncated or edited? merge the "
+                       "directory into a new one to rebuild it)\n");
+  EXPECT_FALSE(std::filesystem::exists(report));
+  io::write_file_atomic(results / kCurvesFile, curves);
+
+  // Half of the runs (one shard): refused, naming the missing runs, unless --partial.
+  const auto shard = dir / "shard";
+  ASSERT_EQ(run_cli({"experiment", "--config", config.string(), "--out", shard.string(), "--shard",
+                     "1/2"},
+                    dir)
+                .status,
+            0);
+  o = run_cli({"report", shard.string(), "--out", report.string(), "--no-figures"}, dir);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_TRUE(o.err.starts_with("hullinspect: " + (shard / kRunsFile).string() +
+                                ": 9 of the experiment's 18 runs are missing (run "))
+      << o.err;
+  EXPECT_TRUE(
+      o.err.ends_with(" and 6 more): finish them with --resume or merge the shards, or "
+                      "pass --partial\n"))
+      << o.err;
+  EXPECT_FALSE(std::filesystem::exists(report));
+  o = run_cli({"report", shard.string(), "--out", report.string(), "--no-figures", "--partial"},
+              dir);
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.err, "hullinspect: " + shard.string() +
+                       ": partial report: 9 of the experiment's 18 runs missing\n");
+  EXPECT_NE(read(report / "report.md").find("- **Partial**: 9 of the experiment's 18 runs missing"),
+            std::string::npos);
+}
+
+TEST(ExperimentCli, ReportIsAllOrNothing) {
+  using report_checks::contents;
+  using report_checks::staging_left;
+  using report_checks::write_script;
+  ScratchDir dir("report-staging");
+  const auto config = dir / "small.yaml";
+  const auto results = dir / "results";
+  ASSERT_TRUE(report_checks::run_small_experiment(dir, config, results));
+
+  // A Python that fails: nothing is written, and an earlier report is left as it was.
+  const auto report = dir / "report";
+  Outcome o = run_cli(
+      {"report", results.string(), "--out", report.string(), "--python", "/bin/false"}, dir);
+  EXPECT_EQ(o.status, 1);
+  EXPECT_TRUE(
+      o.err.starts_with("hullinspect: --python: plotting failed: /bin/false exited with "
+                        "status 1 (is Debian's python3-matplotlib installed?"))
+      << o.err;
+  EXPECT_EQ(count_lines(o.err), 1);
+  EXPECT_FALSE(std::filesystem::exists(report));
+  ASSERT_EQ(
+      run_cli({"report", results.string(), "--out", report.string(), "--no-figures"}, dir).status,
+      0);
+  const auto before = contents(report);
+  write_script(dir / "fail.sh",
+               "echo 'Traceback (most recent call last):' >&2\n"
+               "echo 'ValueError: no curves' >&2\nexit 3\n");
+  o = run_cli({"report", results.string(), "--out", report.string(), "--python",
+               (dir / "fail.sh").string()},
+              dir);
+  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.err, "hullinspect: --python: plotting failed: " + (dir / "fail.sh").string() +
+                       " exited with status 3: ValueError: no curves (is Debian's "
+                       "python3-matplotlib installed? run scripts/setup, or pass --no-figures)\n");
+  EXPECT_EQ(contents(report), before);
+
+  // A Python that hangs is stopped at its time limit.
+  write_script(dir / "hang.sh", "exec sleep 600\n");
+  o = run_cli({"report", results.string(), "--out", report.string(), "--python",
+               (dir / "hang.sh").string(), "--python-timeout", "1"},
+              dir);
+  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.err, "hullinspect: --python: plotting did not finish within 1 s: " +
+                       (dir / "hang.sh").string() +
+                       " was stopped (raise --python-timeout, or pass --no-figures)\n");
+  EXPECT_EQ(contents(report), before);
+
+  // SIGINT or SIGTERM while the Python runs: the child is stopped, nothing is written, and
+  // hullinspect ends by the signal.
+  for (const int signal : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(signal);
+    const auto pid_file = dir / ("child-" + std::to_string(signal) + ".pid");
+    write_script(dir / "wait.sh", "echo $$ > '" + pid_file.string() + "'\nexec sleep 600\n");
+    const pid_t pid = start_cli({"report", results.string(), "--out", (dir / "fresh").string(),
+                                 "--python", (dir / "wait.sh").string()},
+                                dir);
+    for (int i = 0; i < 1000 && read_if_exists(pid_file).empty(); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    const std::string child = read_if_exists(pid_file);
+    ASSERT_FALSE(child.empty()) << "the plotting child never started";
+    kill(pid, signal);
+    o = wait_cli(pid, dir);
+    EXPECT_EQ(o.status, -signal);
+    EXPECT_NE(kill(std::stoi(child), 0), 0) << "the child outlived hullinspect";
+    EXPECT_FALSE(std::filesystem::exists(dir / "fresh"));
+    EXPECT_FALSE(staging_left(dir.path()));
+  }
+
+  // A full disk (a file size limit) while writing: nothing of the new report is left.
+  const auto sized = dir / "sized";
+  std::size_t largest_other = 0;
+  for (const char* f : {"summary.csv", "summary.md", "paired.csv"}) {
+    largest_other = std::max(largest_other, read(report / f).size());
+  }
+  const std::size_t blocks = largest_other / 512 + 1;
+  ASSERT_GT(read(report / "report.md").size(), blocks * 512)
+      << "report.md must be the largest file";
+  const std::string command = "trap '' XFSZ; ulimit -f " + std::to_string(blocks) + "; exec '" +
+                              cli_path() + "' report '" + results.string() + "' --out '" +
+                              sized.string() + "' --no-figures > /dev/null 2> '" +
+                              (dir / "err.txt").string() + "'";
+  const int status = std::system(command.c_str());
+  EXPECT_NE(status, 0);
+  EXPECT_NE(read(dir / "err.txt").find("report.md"), std::string::npos) << read(dir / "err.txt");
+  EXPECT_FALSE(std::filesystem::exists(sized));
+  EXPECT_FALSE(staging_left(dir.path()));
+}
+
+TEST(ExperimentCli, AMergeThatHitsAFullDiskLeavesNoDirectory) {
+  ScratchDir dir("merge-full");
+  const auto config = dir / "small.yaml";
+  const auto results = dir / "results";
+  ASSERT_TRUE(report_checks::run_small_experiment(dir, config, results));
+  const auto merged = dir / "merged";
+  const std::string command = "trap '' XFSZ; ulimit -f 1; exec '" + cli_path() + "' merge '" +
+                              results.string() + "' --out '" + merged.string() +
+                              "' > /dev/null 2> /dev/null";
+  EXPECT_NE(std::system(command.c_str()), 0);
+  EXPECT_FALSE(std::filesystem::exists(merged));
+  EXPECT_FALSE(report_checks::staging_left(dir.path()));
 }
 
 }  // namespace

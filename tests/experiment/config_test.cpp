@@ -2,10 +2,13 @@
 // configs with their exact messages (file:line: key: problem).
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
 #include "source_dir.hpp"
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -233,7 +236,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, "
        "s1, "
        "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, "
-       "truth, no-fly)"},
+       "truth, prior-defects, truth-defects, frame-spacing, no-fly)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
@@ -304,6 +307,23 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       {"algorithms:\n  - name: lawnmower\n    options: {partition-seed: [1]}\n",
        "bad.yaml:3: algorithms[0].options.partition-seed: must be a single value"},
       {"s2: [7, 9\n", "bad.yaml:2: invalid YAML: …"},
+      // Values that a replaced map would ignore (the files need not exist: refused first).
+      {"prior: p.txt\nsweeps: [{parameter: p_tp, values: [0.5, 1]}]\n",
+       "bad.yaml:2: sweeps[0].parameter: has no effect with 'prior:' (the prior file replaces the "
+       "map it would shape); remove one of them"},
+      {"prior: p.txt\nscenarios: [{name: a, p_c: 0.1, p_fp: 0.2}]\n",
+       "bad.yaml:2: scenarios[0].p_fp: has no effect with 'prior:' (the prior file replaces the "
+       "map "
+       "it would shape); remove one of them"},
+      {"truth: t.txt\nscenarios:\n  - {name: a, p_tp: 0.5}\n  - {name: b, p_c: 0.1}\n",
+       "bad.yaml:4: scenarios[1].p_c: has no effect with 'truth:' (the truth file replaces the map "
+       "it would shape); remove one of them"},
+      {"truth: t.txt\nsweeps: [{parameter: front_back_p_c, values: [[0.1, 0.2]]}]\n",
+       "bad.yaml:2: sweeps[0].parameter: has no effect with 'truth:' (the truth file replaces the "
+       "map it would shape); remove one of them"},
+      {"hull: {mesh: hull.stl}\ngrid: {width: 7}\n",
+       "bad.yaml:2: grid.width: cannot be set for a mesh hull (its grid comes from the mesh; set "
+       "hull.cell-size instead)"},
   };
   for (const auto& c : cases) {
     const std::string got = error_of(c.yaml);
@@ -315,6 +335,32 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
       EXPECT_EQ(got, c.message) << "config:\n" << c.yaml;
     }
   }
+}
+
+TEST(ExperimentConfig, DefectListsBecomeThePriorAndTruth) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("hullinspect_config_defects_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "plate.txt") << "XXXXXXXX\nXXXXXXXX\nXXXXXXXX\nXXXXXXXX\n";
+  std::ofstream(dir / "survey.csv") << "frame,z_m,side,w_m,h_m\n2,0.5,starboard,1,0.5\n";
+  const ExperimentConfig c = parse_config(
+      "hull: plate.txt\nprior-defects: survey.csv\ntruth-defects: survey.csv\nframe-spacing: 0.5\n",
+      "c.yaml", dir);
+  ASSERT_TRUE(c.maps.prior && c.maps.truth);
+  int corroded = 0;
+  for (int i = 0; i < c.maps.prior->cells.size(); ++i) corroded += c.maps.prior->cells[i] == 1;
+  EXPECT_EQ(corroded, 2);  // x ∈ [0.5, 1.5) at row 0: columns 1 and 2
+  EXPECT_EQ(config_json(c)["prior_defects"], (dir / "survey.csv").string());
+  EXPECT_EQ(config_json(c)["frame_spacing"], 0.5);
+
+  try {
+    parse_config("hull: plate.txt\nprior: plate.txt\nprior-defects: survey.csv\n", "c.yaml", dir);
+    ADD_FAILURE() << "a prior given twice was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "c.yaml:3: prior-defects: give either prior or prior-defects, not both");
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ExperimentConfig, UnknownPresetListsTheKnownOnes) {
@@ -329,8 +375,8 @@ TEST(ExperimentConfig, UnknownPresetListsTheKnownOnes) {
 }
 
 TEST(ExperimentConfig, EveryBenchConfigLoadsAndExpands) {
-  // docs/beyond.md and docs/results.md quote commands on these configs; an option renamed or
-  // removed must fail here, not when a user runs them.
+  // docs/sweep-inspect.md, part-tsp.md and results.md quote commands on these configs; an option
+  // renamed or removed must fail here, not when a user runs them.
   const std::filesystem::path dir =
       std::filesystem::path(HULLINSPECT_SOURCE_DIR) / "bench" / "configs";
   std::vector<std::filesystem::path> files;
@@ -349,8 +395,8 @@ TEST(ExperimentConfig, EveryBenchConfigLoadsAndExpands) {
 }
 
 TEST(ExperimentConfig, TheTuningConfigOnFiftySeedsHoldsThePaperPresetsMissions) {
-  // docs/beyond.md reports issue 15's targets on the `paper` preset's cells and seeds as
-  // bench/configs/beyond_tuning_seeds.yaml run with `--instances 50`: every run of the preset
+  // docs/sweep-inspect.md reports Sweep-Inspect's targets on the `paper` preset's cells and seeds
+  // as bench/configs/beyond_tuning_seeds.yaml run with `--instances 50`: every run of the preset
   // (same cell, same seed, hence the same stable id) must be one of its runs.
   const ExperimentPlan paper(load_preset("paper"));
   ExperimentConfig config = load_config(std::filesystem::path(HULLINSPECT_SOURCE_DIR) / "bench" /

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 
 namespace hullinspect::experiment::testing {
 

@@ -104,9 +104,8 @@ TEST(ExperimentPlan, RunIdsAreStableAndUnique) {
                 "200;prior-statistics=true;prior-weights=false");
   EXPECT_EQ(a.runs()[0].id, stable_id(a.cells()[0].canonical + "|seed=11"));
   EXPECT_EQ(a.config().hull_hash, "5f6762874a04fea0");
-  // Effective options since the parameter system; changed on purpose when the lawnmower got the
-  // prior-aware partition options (issue 15; was ef3533719d160398) and when DARP got its work
-  // budget (issue 16; was 3e6eeea6eeb73ae0).
+  // The id hashes the effective options, defaults included, so it changes on purpose whenever an
+  // option is declared for the lawnmower or its partitioner: a new option names a new experiment.
   EXPECT_EQ(a.runs()[0].id, "d8c2fa84a8527fd1");
 }
 
@@ -207,7 +206,7 @@ TEST(Shard, FromSlurmJobArrays) {
 namespace hullinspect::experiment {
 namespace {
 
-// Issue 17 §2: every algorithm's effective options (defaults included) are what the plan, the
+// Every algorithm's effective options (defaults included) are what the plan, the
 // manifest and runs.csv record, so spelling out a default names the same experiment.
 TEST(ExperimentPlan, RecordsEffectiveOptionsWithDefaults) {
   const auto plan = plan_of(

@@ -41,22 +41,11 @@ const char* kPinConfig =
     "time_limit: 20000\n"
     "curve: {step: 5, end: 1500}\n";
 
-// Checked when pinned: main without the distance service (at 29fc5c7, with effective planner
-// options, failures and bounds in runs.csv) gave the same runs.csv field for field, plus the
-// unreachable_cells column here, all 0. Re-pinned for the partition_fallbacks column (issue 16:
-// DARP → transfer fallback counted per mission): runs.csv without that last column (all 0 here,
-// DARP converges for n = 4 and 8) still hashes to the previous pin, 611fedbc85bfeaf6.
-// Re-pinned for the prior-aware partition options (issue 15: `prior-weights`, `prior-statistics`
-// on the lawnmower and Part-TSP, off by default): they enter every cell's effective options, so
-// run_id, cell_id and planner_options change; with their declarations removed the same build
-// still hashes to the previous pin, 22f9e92fd86187aa (every number unchanged).
-// Re-pinned for Part-TSP's `share-work` option (issue 15 item 2, off by default): it enters the
-// effective options of part-tsp and part-tsp0; with its declaration removed the same build still
-// hashes to the previous pin, 96ab305fa9c1dea8 (every number unchanged).
-// Re-pinned for DARP's `work-budget` option (issue 16): it enters the effective options of every
-// partitioned planner; runs.csv without run_id, cell_id and planner_options is identical to the
-// previous build's (32 rows compared; n ≤ 8 on the default hull is below the budget's cap), whose
-// pin was ed855a114567bf92.
+// The pin covers every column, run_id, cell_id and planner_options included, so declaring a new
+// option (which enters the effective options) or a new column changes it even when no mission
+// does. Before re-pinning for such a change, check that runs.csv without run_id, cell_id,
+// planner_options and the new column is identical to the previous build's: only then is the
+// change the declaration alone.
 constexpr const char* kPinnedRunsHash = "d2672e1b856e5762";
 
 TEST(ResultsPin, ReducedPaperQuickRunsCsvIsUnchanged) {

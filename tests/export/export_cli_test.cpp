@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/io/geo_reference.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 #include "support/cli_runner.hpp"

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/io/export.hpp"
 #include "hullinspect/io/export_readers.hpp"
 #include "hullinspect/io/trace_reader.hpp"

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hullinspect/experiment/hash.hpp"
-#include "hullinspect/io/atomic_file.hpp"
+#include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/io/export_readers.hpp"
 #include "hullinspect/io/ship_frame.hpp"
 #include "hullinspect/io/trace_reader.hpp"

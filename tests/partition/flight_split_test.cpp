@@ -70,7 +70,7 @@ partition::Partition split(const partition::PartitionRequest& request, const std
   return ::testing::AssertionSuccess();
 }
 
-// The default hull with a full-height wall at x = 100 (the issue-12 repro).
+// The default hull with a full-height wall at x = 100 (a wall that cuts the flight space in two).
 NoFlyMask wall_at_100() {
   NoFlyMask m(world::default_hull().width(), world::default_hull().height(), 0);
   no_fly_box(m, 100, 0, 100, 29);
@@ -100,7 +100,7 @@ TEST(FlightSplit, WallWithUavsOnBothSidesInUnequalNumbers) {
   }
 }
 
-TEST(FlightSplit, TheIssueReproGivesNoRegionAcrossTheWall) {
+TEST(FlightSplit, AFullHeightWallGivesNoRegionAcrossIt) {
   const auto& hull = world::default_hull();
   world::MissionParams params;
   params.uavs = 4;

@@ -223,6 +223,28 @@ TEST_F(PartitionCli, FallbackExitsWithThreeAndStillWritesTheMask) {
   EXPECT_EQ(rows[4], "1.......");  // the walled-in UAV keeps just its start
 }
 
+TEST_F(PartitionCli, UsesTheMissionsFallbackAndSaysWhichPartitionerProducedIt) {
+  // Four starts 3 cells apart: DARP does not converge (docs/partition.md), transfer balances them.
+  const std::string starts =
+      "--uavs 4 --start 30,2 --start 33,2 --start 36,2 --start 39,2 -O iteration-limit=200";
+  const auto r = run(starts + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["partitioner"], "darp");
+  EXPECT_EQ(j["produced_by"], "transfer");
+  EXPECT_TRUE(j["converged"]);
+  const auto text = run(starts);
+  EXPECT_NE(text.out.find("partition produced by transfer (darp did not converge"),
+            std::string::npos)
+      << text.out;
+
+  const auto own = run(starts + " --no-fallback --json");
+  EXPECT_EQ(own.status, 3);
+  const auto k = nlohmann::json::parse(own.out);
+  EXPECT_EQ(k["produced_by"], "darp");
+  EXPECT_FALSE(k["converged"]);
+}
+
 TEST_F(PartitionCli, BadInputIsOneLineAndExitTwo) {
   const grid::Cell snapped = world::default_hull().snap({1, 1});
   const std::vector<std::pair<std::string, std::string>> cases = {

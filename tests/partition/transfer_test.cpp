@@ -43,7 +43,7 @@ world::HullMask text_hull(const std::string& rows) {
 }
 
 // Converged: connected, holding the starts, and every region within one cell of its desired size
-// (the goal is ±1 cell or ±0.5 %, whichever is larger; this is the stricter one).
+// (the documented goal is ±1 cell or ±0.5 %, whichever is larger; this is the stricter one).
 void expect_balanced(const PartitionRequest& request, const Partition& p) {
   EXPECT_TRUE(p.converged) << (p.warnings.empty() ? "" : p.warnings[0]);
   EXPECT_TRUE(p.warnings.empty());

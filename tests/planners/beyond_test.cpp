@@ -1,5 +1,6 @@
-// Beyond the paper (docs/beyond.md): failures seen by whole missions, the oracle against the
-// analytic lower bound, and Sweep-Inspect's completion, truth-blindness and work sharing.
+// Beyond the paper (docs/sweep-inspect.md, docs/failures.md, docs/model.md §11): failures seen by
+// whole missions, the oracle against the analytic lower bound, and Sweep-Inspect's completion,
+// truth-blindness and work sharing.
 
 #include <gtest/gtest.h>
 
@@ -277,13 +278,13 @@ TEST(SweepInspect, IsTruthBlind) {
   }
 }
 
-// The session-8 options, each switched off alone against all on, on the imperfect prior (where
-// they matter), s2 = 7 and 11, n = 4 and 8, seeds 1–3: every mission completes under the checker,
-// and, summed over the missions, following clusters at z = 1 lowers T_c, and dropping a prior the
-// statistics call wrong (fewer than prior-trust = 80 % of its cells expected corroded here) lowers
-// T_c. (trim-strip-ends lowered T_m here too until session 14; since the approach trims the bands
-// at one edge and the partition balances the planned flights, its effect on these missions is
-// within their noise: docs/beyond.md, ablation.)
+// follow-clusters and trust-statistics, each switched off alone against all on, on the imperfect
+// prior (where they matter), s2 = 7 and 11, n = 4 and 8, seeds 1–3: every mission completes under
+// the checker, and, summed over the missions, following clusters at z = 1 lowers T_c, and
+// dropping a prior the statistics call wrong (fewer than prior-trust = 80 % of its cells expected
+// corroded here) lowers T_c. (trim-strip-ends is not asserted here: since the approach trims the
+// bands at one edge and the partition balances the planned flights, its effect on these missions
+// is within their noise; docs/sweep-inspect.md, ablation.)
 TEST(SweepInspect, TheBandOptionsEachLowerTheirTime) {
   const auto& hull = world::default_hull();
   for (const OptionMap& off :
@@ -478,8 +479,7 @@ TEST(SweepInspect, SlabPartitionFallsBackWhereSlabsAreNotConnected) {
 // the combined scenario's dense front sweeps them at z = 2 with the rest of its slab, instead of a
 // whole z = 1 pass (and two plane changes) for them. Summed over s2 = 7, 9, 11, n = 4 and 8, seeds
 // 1–10, T_c and T_m are lower than with 0 (never), every mission complete under the checker:
-// 13 454 against 13 501 s and 14 137 against 14 171 s (session 20; the gain was larger before a
-// z = 1 sweep planned anew kept its detections, and before own-band-first). (With column slabs:
+// 13 454 against 13 501 s and 14 137 against 14 171 s. (With column slabs:
 // the band partition's pieces end where the dense columns' band grid begins, so the option has no
 // effect on this hull's default partition; the times are identical.)
 TEST(SweepInspect, ANarrowDenseStripIsSweptWithTheRest) {
@@ -564,7 +564,7 @@ TEST(SweepInspect, ApproachAndBalancedFlightsEndACleanSweepSooner) {
 // instead of waiting for the helpers. With s2 = 11 (h2 = 5, h1 = 2) three rows at each end of
 // every column band are such cells. On the imperfect and combined scenarios, s2 = 7 and 11,
 // n = 4 and 8, seeds 1–3, the cells inspected by UAVs in help mode are fewer with the option (27
-// against 81) and T_c summed is lower (4 831 against 4 898 s; session 20), every mission complete
+// against 81) and T_c summed is lower (4 831 against 4 898 s), every mission complete
 // under the checker.
 class HelpInspectionCounter final : public MissionObserver, public AnnotationSink {
  public:
@@ -609,9 +609,9 @@ class HelpInspectionCounter final : public MissionObserver, public AnnotationSin
 // A z = 1 sweep planned anew (after its approach, replan-rejoin) keeps the detections in its
 // columns: the z = 2 footprint of a UAV that descends there detects cells around it, and when
 // the plan dropped every observed cell those were left out of its bands and waited for the
-// helpers (combined, s2 = 11, n = 4, seed 1 000 006: T_c 279 s without the fix, 234 s with it;
-// session 19). On the combined scenario, s2 = 9 and 11, n = 4 and 8, seeds 1–5, UAVs in help mode
-// inspect 24 cells with the fix (session 20; 189 without it in session 19).
+// helpers (combined, s2 = 11, n = 4, seed 1 000 006: T_c 279 s that way, 234 s keeping them).
+// On the combined scenario, s2 = 9 and 11, n = 4 and 8, seeds 1–5, UAVs in help mode inspect
+// 24 cells in all (189 when the plan drops them), at most 40 asserted.
 TEST(SweepInspect, ALowSweepPlannedAgainKeepsItsDetections) {
   int help_inspections = 0;
   for (int s2 : {9, 11}) {
@@ -651,7 +651,7 @@ TEST(SweepInspect, InspectBandEndsLeavesLessForTheHelpers) {
 // from a straight leg: some detected, uninspected cell in its footprint is abreast (within h1
 // along the leg) or one the leg comes no nearer to — never only cells the leg is still flying
 // towards (before the fix this check failed on several of these missions). With the fix,
-// T_c summed over them was 2 578 s (2 715 s before; session 15).
+// T_c summed over them is 2 578 s (2 715 s when "along" is the bands' axis).
 class EarlyDescentCounter final : public MissionObserver, public AnnotationSink {
  public:
   void on_start(const sim::Simulator& sim, const Planner&) override { remember(sim); }
@@ -884,8 +884,8 @@ TEST(SweepInspect, InspectViewpointsTakeInABlockInFewerMoves) {
 
 // Whole missions: over the imperfect scenario, s2 = 7 and 11, n = 4 and 8, seeds 1-3, every
 // mission complete under the checker, fewer such moves in sum (1 364 against 1 413). T_c is
-// recorded, not asserted: on these 12 missions it differs by 3 s in sum (docs/beyond.md gives
-// the tuning seeds' paired change).
+// recorded, not asserted: on these 12 missions it differs by 3 s in sum (docs/sweep-inspect.md
+// gives the ablation on the tuning seeds).
 TEST(SweepInspect, InspectViewpointsTakeInMoreAStep) {
   const auto sums = sums_with_and_without<InspectMoveCounter>(
       "inspect-viewpoints", {"imperfect"}, [](const InspectMoveCounter& c) { return c.moves; });
@@ -900,7 +900,7 @@ TEST(SweepInspect, InspectViewpointsTakeInMoreAStep) {
 // skip-seen-bands at z = 1 too: on the combined scenario, where the front zone is swept at z = 1,
 // the UAVs skip the bands of a low sweep that others (helpers, a neighbour's inspections) have
 // already observed and inspected; summed over s2 = 7, 9 and 11, n = 4 and 8, seeds 1–3, T_c and
-// T_m are lower with the option than without (3 746 / 3 932 against 3 757 / 3 938 s; session 20),
+// T_m are lower with the option than without (3 746 / 3 932 against 3 757 / 3 938 s),
 // every mission complete under the checker.
 TEST(SweepInspect, SkipSeenBandsLowersCombinedTimes) {
   const auto with = summed_times("combined", {{"skip-seen-bands", "true"}}, {7, 9, 11});
@@ -930,7 +930,7 @@ TEST(SweepInspect, PlannedPriorToursEndSooner) {
 // the dense half were shrunk for tours their neighbours then shared, and their sweeps ended
 // early. On the inhomogeneous scenario with n = 4 (s2 = 7, 9, 11, seeds 1-4) T_m summed over the
 // missions drops, every mission complete under the checker (with n = 8 it changes T_m by -1 to
-// +4 s a mission on the tuning seeds: docs/beyond.md, item 1).
+// +4 s a mission on the tuning seeds).
 TEST(SweepInspect, AQuarterWeightForToursEndsTheSweepsTogether) {
   const auto quarter =
       summed_times("inhomogeneous", {{"prior-tour-weight", "0.25"}}, {7, 9, 11}, {4}, 4);

@@ -85,9 +85,9 @@ TEST(CoopFrontierAssigner, HeldTargetsReduceUtilitiesFirst) {
 TEST(CoopFrontierAssigner, AdjacentRobotsGoToDifferentFrontiersThroughEquation17) {
   // Robots at (0, 0) and (1, 0); frontiers A = (2, 0) with U = 1 and B = (20, 0) with U = 0.9;
   // β = 1, s2 = 7.
-  // Round 1: r0: A 1 + 1/2 = 1.5, B 0.9 + 1/20 = 0.95; r1: A 1 + 1/1 = 2.0, B 0.9 + 1/19.
+  // First pick: r0: A 1 + 1/2 = 1.5, B 0.9 + 1/20 = 0.95; r1: A 1 + 1/1 = 2.0, B 0.9 + 1/19.
   //   → (r1, A), score 2. Reduction: A · P(0) = 0; B is 18 ≥ 14 away: unchanged.
-  // Round 2: r0: A 0 + 1/2 = 0.5, B 0.9 + 1/20 = 0.95 → (r0, B).
+  // Second pick: r0: A 0 + 1/2 = 0.5, B 0.9 + 1/20 = 0.95 → (r0, B).
   const std::array<Cell, 2> frontiers{Cell{2, 0}, Cell{20, 0}};
   const std::array<double, 2> utility{1.0, 0.9};
   const std::array<Cell, 2> robots{Cell{0, 0}, Cell{1, 0}};
@@ -103,8 +103,8 @@ TEST(CoopFrontierAssigner, AdjacentRobotsGoToDifferentFrontiersThroughEquation17
   EXPECT_EQ(a.picks()[1].robot, 0);
   EXPECT_DOUBLE_EQ(a.picks()[1].score, 0.95);
 
-  // A partial reduction: B = (8, 0) is 6 from A, so after round 1 U_B = 0.9 · 6/14 = 0.3857;
-  // round 2: r0: A 0.5, B 0.3857 + 1/8 = 0.5107 → B still, with that exact score.
+  // A partial reduction: B = (8, 0) is 6 from A, so after the first pick U_B = 0.9 · 6/14 = 0.3857;
+  // second pick: r0: A 0.5, B 0.3857 + 1/8 = 0.5107 → B still, with that exact score.
   const std::array<Cell, 2> near{Cell{2, 0}, Cell{8, 0}};
   a.assign(near, utility, {}, robots, chosen);
   EXPECT_EQ(chosen[0], 1);

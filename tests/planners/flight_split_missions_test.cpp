@@ -72,8 +72,8 @@ sim::MissionResult expect_completes(const Mission& m, const std::string& algorit
 
 class FlightSplitMissions : public ::testing::TestWithParam<std::string> {};
 
-// The issue-12 repro: the default hull, 4 default starts, a full-height wall at x = 100 between
-// UAV 1 (86, 15) and UAV 2 (143, 15).
+// A wall that cuts the flight space: the default hull, 4 default starts, a full-height wall at x =
+// 100 between UAV 1 (86, 15) and UAV 2 (143, 15).
 TEST_P(FlightSplitMissions, WallAcrossTheDefaultHull) {
   Mission m;
   m.hull = &world::default_hull();

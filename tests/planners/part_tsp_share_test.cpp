@@ -1,4 +1,4 @@
-// Work sharing in Part-TSP (share-work, docs/beyond.md "Work sharing in Part-TSP"): hand-overs
+// Work sharing in Part-TSP (share-work, docs/part-tsp.md "Work sharing"): hand-overs
 // keep the local maps' counts exact, the split is balanced and deterministic, and whole missions
 // complete under the shared MissionChecker — with failures too, which plain Part-TSP never does.
 

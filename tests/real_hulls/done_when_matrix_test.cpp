@@ -1,4 +1,4 @@
-// Issue 12's "Done when" as one test matrix (docs/hulls.md): the default hull, the DTC and a Wigley
+// Real hulls end to end as one test matrix (docs/hulls.md): the default hull, the DTC and a Wigley
 // hull each run every registered planner to completion — in process under the shared
 // MissionChecker, from the CLI (`hullinspect run`, its trace checked against the no-fly zones) and
 // from a YAML config (`hullinspect experiment`) — with and without no-fly zones, and with the

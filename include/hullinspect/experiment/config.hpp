@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -67,6 +68,10 @@ struct ExperimentConfig {
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
   nlohmann::json no_fly_spec;
   std::string prior_path, truth_path;   ///< the user's C′ and C ("prior:", "truth:"), resolved
+  /// The same as defects in ship coordinates ("prior-defects:", "truth-defects:"), resolved, and
+  /// the frame spacing for defects placed by frame ("frame-spacing:").
+  std::string prior_defects_path, truth_defects_path;
+  std::optional<double> frame_spacing;
   world::UserMaps maps;                 ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
   int s1 = 5;

@@ -4,6 +4,8 @@
 // and manifest.json. The same code finalises a run, a resumed run and a merge, so a merge of shards
 // is byte-identical to the unsharded result.
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <string>
 #include <unordered_map>
@@ -28,9 +30,17 @@ struct StoredRuns {
   std::vector<std::string> notes;
 };
 
-/// Reads the journals in `dir` (missing files hold no rows). A row whose id is not a run of `plan`
-/// is an InputError: the directory holds another experiment's results.
-StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPlan& plan);
+/// The plan of the experiment whose results are in `dir`, from its manifest; an InputError when the
+/// manifest's config does not reproduce its fingerprint.
+ExperimentPlan results_plan(const std::filesystem::path& dir, const nlohmann::json& manifest);
+
+/// Reads the journals in `dir` (missing files hold no rows). Every row passes the row checks
+/// (run_row_check.hpp): a row whose id is not a run of `plan` (another experiment's results), a
+/// run twice, or a row its run cannot have produced is an InputError naming the file and line.
+/// `finished` results (written whole by a finished run or merge) may hold no torn line and no
+/// unfinished run; otherwise those are dropped and noted.
+StoredRuns read_stored_runs(const std::filesystem::path& dir, const ExperimentPlan& plan,
+                            bool finished = false);
 
 /// The records' lines per journal, in canonical order (plan position).
 struct OrderedLines {

@@ -22,7 +22,7 @@ struct SummaryRow {
   int runs = 0;
   int incomplete = 0;  ///< missions that hit the time limit
   TimeStats t_c, t_m;
-  /// Mean analytic lower bounds over the runs (docs/beyond.md); count 0 when runs.csv has none.
+  /// Mean analytic lower bounds over the runs (docs/model.md §11); count 0 when runs.csv has none.
   TimeStats bound_t_c, bound_t_m;
 };
 

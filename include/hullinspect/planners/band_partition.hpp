@@ -1,6 +1,6 @@
 #pragma once
-// Sweep-Inspect's band partition (docs/beyond.md, band-partition): the hull's column bands flown as
-// one boustrophedon, cut into n consecutive pieces of equal expected work. A piece ends in the
+// Sweep-Inspect's band partition (docs/sweep-inspect.md, "Regions"): the hull's column bands flown
+// as one boustrophedon, cut into n consecutive pieces of equal expected work. A piece ends in the
 // middle of a band (its lower or upper rows), so no UAV pays a whole pass of the hull's height for
 // a band its slab only clips — which column slabs of arbitrary width do at each slab's edge.
 

@@ -1,6 +1,7 @@
 #pragma once
-// The detection-plane sweep of Sweep-Inspect (docs/beyond.md): a boustrophedon over one UAV's cells
-// in bands of s cells, flown along each band's centre line only as far as the footprint needs.
+// The detection-plane sweep of Sweep-Inspect (docs/sweep-inspect.md, "The sweep"): a boustrophedon
+// over one UAV's cells in bands of s cells, flown along each band's centre line only as far as the
+// footprint needs.
 
 #include <cstdint>
 #include <span>

@@ -14,7 +14,7 @@ struct LawnmowerOptions {
   std::string partitioner{partition::kDefaultPartitioner};  ///< by name
   OptionMap partitioner_options;
   std::uint64_t partition_seed = 0;  ///< seed of the partitioner (not of the instance)
-  // Beyond the paper, off by default (prior_weights.hpp, docs/beyond.md).
+  // Beyond the paper, off by default (prior_weights.hpp, docs/model.md §5.5).
   bool prior_weights = false;    ///< partition weighted by the expected work per cell
   bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
 };

@@ -1,6 +1,7 @@
 #pragma once
-// The order in which Sweep-Inspect visits the prior's cells at z = 1 (docs/beyond.md, item 2): an
-// open tour from the UAV over points it must see with a footprint, improved by local search.
+// The order in which Sweep-Inspect visits the prior's cells at z = 1 (docs/sweep-inspect.md, "The
+// prior"): an open tour from the UAV over points it must see with a footprint, improved by local
+// search.
 
 #include <span>
 

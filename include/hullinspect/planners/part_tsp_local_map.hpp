@@ -54,7 +54,7 @@ class LocalMaps {
   /// Applies UAV k's readings of one step to M^k (the model.md §3 table, cells of R_k only).
   LocalEvents ingest(int k, std::span<const sim::Reading> readings);
 
-  /// Work sharing (docs/beyond.md, "Work sharing in Part-TSP"): the hull cells `cells` (flat
+  /// Work sharing (docs/part-tsp.md, "Work sharing"): the hull cells `cells` (flat
   /// indices, owned by any UAV) join R_to with what their owner's map knew of them — the value and
   /// whether they were seen from z = 2 — or, with `forget`, with what every UAV knew at the start
   /// (the value before any reading: the prior's 2s, the no-fly write-offs; not seen). Counts move

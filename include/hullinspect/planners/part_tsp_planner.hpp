@@ -36,11 +36,11 @@ struct PartTspOptions {
   // Refinements beyond the paper, off by default (their measured effect: docs/part-tsp.md).
   bool skip_resolved = false;  ///< drop plan segments whose targets are all resolved already
   bool trim_ends = false;      ///< fly segments between ends pulled in by the footprint half-width
-  // Beyond the paper, off by default (prior_weights.hpp, docs/beyond.md).
+  // Beyond the paper, off by default (prior_weights.hpp, docs/model.md §5.5).
   bool prior_weights = false;    ///< partition weighted by the expected work per cell
   bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
   /// A UAV that is done takes over a failed UAV's region, else part of the most loaded UAV's
-  /// remaining work (docs/beyond.md, "Work sharing in Part-TSP").
+  /// remaining work (docs/part-tsp.md, "Work sharing").
   bool share_work = false;
 };
 
@@ -55,7 +55,7 @@ class PartTspPlanner final : public Planner {
   bool sees_truth() const override { return options_.oracle; }
   const partition::Partition* partition() const override { return partition_.get(); }
   /// Every working UAV is done (nothing left in its local map): without communication nobody takes
-  /// over a failed UAV's region, so the mission ends there (docs/beyond.md). With share-work, not
+  /// over a failed UAV's region, so the mission ends there (docs/failures.md). With share-work, not
   /// while a failed UAV's region has work left that a working UAV can fly to.
   bool idle(const sim::PlannerView& view) const override;
   /// Per UAV: mode (cover-z2, inspect-z1, cover-z1, descending, ascending, done, failed), the next

@@ -1,5 +1,5 @@
 #pragma once
-// Work sharing in Part-TSP (docs/beyond.md, "Work sharing in Part-TSP"; the paper's future work 2):
+// Work sharing in Part-TSP (docs/part-tsp.md, "Work sharing"; the paper's future work 2):
 // what a UAV that is done takes over from another. Only at hand-over events, never per step: the
 // remaining cells of a region are collected by a scan of that region's column range, the split
 // reads two distance fields.

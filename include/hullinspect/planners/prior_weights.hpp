@@ -1,5 +1,5 @@
 #pragma once
-// The prior-aware partition (docs/model.md §5.5, issue 15 future work 1): DARP weighted by the
+// The prior-aware partition (docs/model.md §5.5, the paper's future work 1): DARP weighted by the
 // expected work of each hull cell — its coverage at z = 2 plus the z = 1 inspection the prior
 // predicts there — so a region with many expected corroded cells gets fewer cells. One option pair
 // for every partitioned planner (lawnmower, Part-TSP, Sweep-Inspect): `prior-weights` switches it

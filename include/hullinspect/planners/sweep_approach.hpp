@@ -1,6 +1,6 @@
 #pragma once
-// Sweep-Inspect's approach to its sweep (docs/beyond.md, approach-edge): the flight from where a
-// UAV is to the first band of its sweep observes cells too. Flown along the middle of the bands
+// Sweep-Inspect's approach to its sweep (docs/sweep-inspect.md, "The sweep"): the flight from where
+// a UAV is to the first band of its sweep observes cells too. Flown along the middle of the bands
 // (the x-then-y rule from a start cell in mid-region) it sees cells the bands will fly over
 // again; flown along the region's edge row, it sees the bands' ends there, which the bands then
 // need not fly to.

@@ -1,9 +1,9 @@
 #pragma once
-// Sweep-Inspect (docs/beyond.md): a planner of this project, beyond the paper. Each UAV sweeps its
-// region (a piece of one boustrophedon over the hull's column bands, of equal expected work; a
-// column slab or a DARP region where pieces or slabs are not connected) at the detection plane
-// z = 2 in bands of s2 rows or columns (band_sweep.hpp; so it observes at the rate bound's s2 new
-// cells per step), descends once a detected corroded cell of the shared map lies abreast of it
+// Sweep-Inspect (docs/sweep-inspect.md): a planner of this project, beyond the paper. Each UAV
+// sweeps its region (a piece of one boustrophedon over the hull's column bands, of equal expected
+// work; a column slab or a DARP region where pieces or slabs are not connected) at the detection
+// plane z = 2 in bands of s2 rows or columns (band_sweep.hpp; so it observes at the rate bound's s2
+// new cells per step), descends once a detected corroded cell of the shared map lies abreast of it
 // (no longer ahead on its leg), inspects the detected cells near that point at z = 1 (nearest
 // first), climbs back and resumes its sweep where it left it, or plans it anew from there when
 // that is the shorter flight. A UAV whose sweep is done helps: it takes the nearest unclaimed
@@ -121,7 +121,7 @@ struct SweepInspectOptions {
   /// With share-prior, in the band partition, a prior cell toured first counts its weight's
   /// excess over 1 this many times: share-prior re-splits the tours among neighbours after the
   /// partition, so a piece that the partition shrank for its tour would end its sweep early
-  /// (0.25: tuning seeds, docs/beyond.md item 1). Without share-prior it counts once.
+  /// (0.25: tuning seeds, docs/sweep-inspect.md, "Regions"). Without share-prior it counts once.
   double prior_tour_weight = 0.25;
   /// While sweeping, also descend for a detected cell within the footprint (but not abreast)
   /// that the current leg of the flight comes no nearer to: beyond a band's trimmed end, or

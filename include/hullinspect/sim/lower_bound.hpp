@@ -1,5 +1,5 @@
 #pragma once
-// Analytic lower bounds on T_c and T_m for one instance (docs/beyond.md, "Bounds"): no planner —
+// Analytic lower bounds on T_c and T_m for one instance (docs/model.md §11): no planner —
 // not even one that knows C — can finish earlier. Two arguments, the larger wins:
 //  * rate: every observed cell lies in the z = 2 square around a position some UAV visited (the
 //    z = 1 footprint is inside it), and each move grows that union by at most s2 cells, so the

@@ -37,7 +37,7 @@ struct MissionResult {
   int steps = 0;              ///< last simulated t
   int failed_uavs = 0;        ///< UAVs that failed during the mission
   bool stopped_idle = false;  ///< ended incomplete because no working UAV had anything left to do
-  int bound_t_c = 0;          ///< analytic lower bound on T_c for this instance (docs/beyond.md)
+  int bound_t_c = 0;          ///< analytic lower bound on T_c for this instance (model §11)
   int bound_t_m = 0;          ///< analytic lower bound on T_m
   /// Hull cells counted in m(t): those that can reach their final state (all of them without
   /// no-fly zones; docs/model.md).

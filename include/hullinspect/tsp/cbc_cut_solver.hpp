@@ -5,8 +5,8 @@
 // graph, at every node and at every integer solution CBC finds. CBC starts from the heuristic's
 // tour as its incumbent. CBC can still accept an integer point with subtours without asking the
 // generator; then those subtours' constraints become rows and CBC runs again (reruns()). Kept as
-// the issue-16 bake-off's contender against "exact" (our own dual simplex and branch-and-cut):
-// docs/results.md.
+// the bake-off's contender (docs/results.md) against "exact" (our own dual simplex and
+// branch-and-cut): docs/results.md.
 
 #include "hullinspect/tsp/segment_tsp.hpp"
 

@@ -1,7 +1,7 @@
 // OutputSet: outputs never destroy an input, never replace a device or directory, and a command
 // that fails before commit() leaves nothing behind.
 
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/socket.h>
@@ -14,8 +14,8 @@
 #include <string>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
 #include "support/cli_runner.hpp"
 
 namespace hullinspect::io {

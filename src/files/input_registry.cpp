@@ -1,4 +1,4 @@
-#include "hullinspect/io/input_registry.hpp"
+#include "hullinspect/files/input_registry.hpp"
 
 #include <sys/stat.h>
 

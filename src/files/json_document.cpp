@@ -1,4 +1,4 @@
-#include "hullinspect/io/json_document.hpp"
+#include "hullinspect/files/json_document.hpp"
 
 #include <fmt/format.h>
 

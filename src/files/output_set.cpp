@@ -1,4 +1,4 @@
-#include "hullinspect/io/output_set.hpp"
+#include "hullinspect/files/output_set.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -12,7 +12,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
-#include "hullinspect/io/input_registry.hpp"
+#include "hullinspect/files/input_registry.hpp"
 
 namespace hullinspect::io {
 

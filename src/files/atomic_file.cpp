@@ -1,5 +1,5 @@
-#include "hullinspect/io/atomic_file.hpp"
-#include "hullinspect/io/bounded_read.hpp"
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/files/bounded_read.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -11,7 +11,7 @@
 #include <cstring>
 
 #include "hullinspect/core/errors.hpp"
-#include "hullinspect/io/input_registry.hpp"
+#include "hullinspect/files/input_registry.hpp"
 
 namespace hullinspect::io {
 

@@ -1,0 +1,209 @@
+#include "hullinspect/experiment/run_row_check.hpp"
+
+#include <fmt/format.h>
+
+#include <optional>
+#include <unordered_map>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
+#include "hullinspect/experiment/csv.hpp"
+#include "hullinspect/experiment/run_record.hpp"
+
+namespace hullinspect::experiment {
+
+namespace {
+
+/// The position of each runs.csv column (built once: every stored row is looked up through it).
+const std::unordered_map<std::string, std::size_t>& runs_columns() {
+  static const auto columns = [] {
+    std::unordered_map<std::string, std::size_t> out;
+    const auto header = runs_header();
+    for (std::size_t k = 0; k < header.size(); ++k) out.emplace(header[k], k);
+    return out;
+  }();
+  return columns;
+}
+
+/// A runs.csv row's outcome fields by column name, once each is known to be an integer in range.
+class Outcome {
+ public:
+  explicit Outcome(const std::vector<std::string>& fields) : fields_(fields) {}
+  const std::string& text(const std::string& name) const {
+    return fields_[runs_columns().at(name)];
+  }
+  /// The field parsed in [0, max]; an empty optional field (T_c, T_m) gives nothing.
+  std::optional<long long> parse(const std::string& name, long long max) const {
+    const std::string& v = text(name);
+    if (v.empty() && (name == "T_c" || name == "T_m")) return std::nullopt;
+    try {
+      return parse_integer<long long>(v, 0, max);
+    } catch (const NumberError& e) {
+      throw Error(fmt::format("{} {}", name, e.what()));
+    }
+  }
+  long long get(const std::string& name, long long max = kMaxStoredCount) const {
+    return *parse(name, max);
+  }
+
+ private:
+  const std::vector<std::string>& fields_;
+};
+
+/// The outcome checks: ranges first, then the relations the simulator guarantees (SPEC §4: the
+/// mission stops at T_m, T_c and T_m are first times, every UAV spends each step on one action).
+std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const Outcome& o) {
+  const auto& c = plan.config();
+  const Cell& cell = plan.cells()[static_cast<std::size_t>(run.cell)];
+  const long long uavs = c.uavs[static_cast<std::size_t>(cell.uavs)];
+  const long long limit = c.time_limit;
+  const long long hull = c.hull_cells;
+
+  const bool complete = o.get("complete", 1) == 1;
+  const auto t_c = o.parse("T_c", limit);
+  const auto t_m = o.parse("T_m", limit);
+  const long long steps = o.get("steps", limit);
+  const long long hull_cells = o.get("hull_cells", hull);
+  const long long corroded = o.get("corroded_cells", hull);
+  (void)o.get("unreachable_cells", hull);
+  (void)o.get("failed_uavs", uavs);
+  for (const char* counter :
+       {"detections", "observations", "redundant_observations", "moves", "hovers", "plane_changes",
+        "steps_z1", "steps_z2", "steps_transit", "tsp_solves", "tsp_unproven", "tsp_fallbacks",
+        "replans", "assignments", "bound_T_c", "bound_T_m", "partition_fallbacks"}) {
+    (void)o.get(counter);
+  }
+
+  if (complete != t_m.has_value()) {
+    return complete ? "complete is 1 but T_m is empty (a complete mission has a T_m)"
+                    : fmt::format("complete is 0 but T_m is {} (a mission with a T_m is complete)",
+                                  *t_m);
+  }
+  if (t_m && steps != *t_m) {
+    return fmt::format("steps is {} but a complete mission stops at T_m = {}", steps, *t_m);
+  }
+  if (t_c && t_m && *t_c > *t_m) {
+    return fmt::format(
+        "T_c is {} but T_m is {} (every corroded cell is inspected once the hull is "
+        "known)",
+        *t_c, *t_m);
+  }
+  if (complete && !t_c) return "complete is 1 but T_c is empty (a complete mission has a T_c)";
+  if (t_c && *t_c > steps) {
+    return fmt::format("T_c is {} but the mission ended at steps = {}", *t_c, steps);
+  }
+  if (corroded > hull_cells) {
+    return fmt::format("corroded_cells is {} but hull_cells is only {}", corroded, hull_cells);
+  }
+  if (o.get("redundant_observations") > o.get("observations")) {
+    return fmt::format("redundant_observations is {} but observations is {}",
+                       o.get("redundant_observations"), o.get("observations"));
+  }
+  if (o.get("tsp_unproven") > o.get("tsp_solves") || o.get("tsp_fallbacks") > o.get("tsp_solves")) {
+    return fmt::format("tsp_unproven ({}) and tsp_fallbacks ({}) cannot exceed tsp_solves ({})",
+                       o.get("tsp_unproven"), o.get("tsp_fallbacks"), o.get("tsp_solves"));
+  }
+  // Each step of each working UAV is one of: a move, a hover, or a step in transit (the first
+  // of which is the plane change); a step that does not end in transit ends on plane 1 or 2.
+  const long long uav_steps = uavs * steps;
+  const long long actions = o.get("moves") + o.get("hovers") + o.get("steps_transit");
+  if (actions > uav_steps) {
+    return fmt::format("moves + hovers + steps_transit is {} but {} UAVs × {} steps is only {}",
+                       actions, uavs, steps, uav_steps);
+  }
+  const long long planes = o.get("steps_z1") + o.get("steps_z2");
+  if (planes > uav_steps) {
+    return fmt::format("steps_z1 + steps_z2 is {} but {} UAVs × {} steps is only {}", planes, uavs,
+                       steps, uav_steps);
+  }
+  if (o.get("plane_changes") > o.get("steps_transit")) {
+    return fmt::format("plane_changes is {} but steps_transit is only {}", o.get("plane_changes"),
+                       o.get("steps_transit"));
+  }
+  if (o.get("bound_T_c") > o.get("bound_T_m")) {
+    return fmt::format("bound_T_c is {} but bound_T_m is only {}", o.get("bound_T_c"),
+                       o.get("bound_T_m"));
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::string_view line) {
+  const auto fields = split_csv_line(line);
+  static const auto header = runs_header();
+  if (!fields || fields->size() != header.size()) return "malformed row";
+  const auto expected = run_parameter_fields(plan, run);
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    if ((*fields)[k] != expected[k]) {
+      return fmt::format("{} is '{}' but run {} of this experiment has '{}'", header[k],
+                         escape_for_message((*fields)[k]), run.id, escape_for_message(expected[k]));
+    }
+  }
+  const Outcome outcome(*fields);
+  const auto expected_failures = run_failures_field(plan, run);
+  if (outcome.text("failures") != expected_failures) {
+    return fmt::format("failures is '{}' but run {} of this experiment has '{}'",
+                       escape_for_message(outcome.text("failures")), run.id,
+                       escape_for_message(expected_failures));
+  }
+  try {
+    return outcome_problem(plan, run, outcome);
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
+std::string samples_row_problem(const ExperimentPlan& plan, const RunKey& run,
+                                std::string_view runs_line, std::string_view samples_line) {
+  const auto fields = split_csv_line(samples_line);
+  const auto times = plan.config().curve.times();
+  if (!fields || fields->size() != 1 + 2 * times.size()) return "malformed row";
+  if ((*fields)[0] != run.id) {
+    return fmt::format("run_id is '{}', expected '{}'", (*fields)[0], run.id);
+  }
+  const auto run_fields = *split_csv_line(runs_line);
+  const Outcome o(run_fields);
+  const auto t_c = o.parse("T_c", kMaxStoredCount);
+  const auto t_m = o.parse("T_m", kMaxStoredCount);
+  const long long hull_cells = o.get("hull_cells");
+  const long long corroded = o.get("corroded_cells");
+  // One series per half of the row: inspected corroded cells, then known hull cells. Each only
+  // grows, stays below its total before its first time (T_c, T_m) and equals it from then on.
+  struct Series {
+    std::size_t first;
+    long long total;
+    std::optional<long long> reached;
+    const char* first_time;
+    const char* column;
+  };
+  for (const Series s : {Series{1, corroded, t_c, "T_c", "inspected"},
+                         Series{1 + times.size(), hull_cells, t_m, "T_m", "known"}}) {
+    long long previous = 0;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      // The column's name (samples_header's), made only for a message.
+      const auto name = [&] { return fmt::format("{}_{}", s.column, times[i]); };
+      long long v = 0;
+      try {
+        v = parse_integer<long long>((*fields)[s.first + i], 0, s.total);
+      } catch (const NumberError& e) {
+        return fmt::format("{} {}", name(), e.what());
+      }
+      if (v < previous) {
+        return fmt::format("{} is {} but the count was already {} (it never decreases)", name(), v,
+                           previous);
+      }
+      previous = v;
+      const bool after = s.reached && times[i] >= *s.reached;
+      if (after != (v == s.total)) {
+        return after ? fmt::format("{} is {} but from {} = {} on it is {}", name(), v, s.first_time,
+                                   *s.reached, s.total)
+                     : fmt::format("{} is {}, the total, but {} is {}", name(), v, s.first_time,
+                                   s.reached ? std::to_string(*s.reached) : "empty");
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace hullinspect::experiment
