@@ -48,6 +48,7 @@ std::vector<Command> commands() {
   const Option no_fly{Role::kInput, "nofly.txt", ""};
   const Option geo{Role::kInput, "geo.yaml", ""};
   const Option trace{Role::kInput, "trace.json", ""};
+  const Option defects{Role::kInput, "defects.csv", ""};
   const Option out_file{Role::kOutputFile, "", ""};
   const Option export_dir{Role::kOutputDir, "", "uav0.csv"};
   return {
@@ -56,6 +57,8 @@ std::vector<Command> commands() {
        {{"--hull", hull},
         {"--prior", mask},
         {"--truth", mask},
+        {"--prior-defects", defects},
+        {"--truth-defects", defects},
         {"--no-fly", no_fly},
         {"--geo", geo},
         {"--trace", out_file},
@@ -66,6 +69,8 @@ std::vector<Command> commands() {
        {{"--hull", hull},
         {"--prior", mask},
         {"--truth", mask},
+        {"--prior-defects", defects},
+        {"--truth-defects", defects},
         {"--no-fly", no_fly},
         {"--geo", geo},
         {"--trace", out_file},
@@ -143,6 +148,7 @@ class InputOutputWalk : public ::testing::Test {
     put(f / "mask.txt", "X.......\n........\n....X...\n........\n");
     put(f / "nofly.txt", "........\n........\n.......X\n........\n");
     put(f / "geo.yaml", "origin: [50, 8, 0]\nheading: 30\n");
+    put(f / "defects.csv", "x_m,z_m,side,w_m,h_m\n1.0,0.5,starboard,1.0,0.5\n");
     put(f / "config.yaml", "name: tiny\nhull: " + (f / "hull.txt").string() +
                                "\ns1: 1\ns2: 3\nuavs: 1\nalgorithms: [lawnmower]\ninstances: 1\n"
                                "curve: {step: 10, end: 100}\n");
@@ -219,6 +225,12 @@ TEST_F(InputOutputWalk, NoOutputOptionCanOverwriteAnyInput) {
           ++runs;
           EXPECT_EQ(r.status, 2) << r.err;
           EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+          // Refused for the collision, not for some other problem of the arguments: a results
+          // directory that already holds a file is refused as not empty before any input is read.
+          EXPECT_TRUE(
+              r.err.find("is the same file as") != std::string::npos ||
+              (out.dir_entry == "runs.csv" && r.err.find("is not empty") != std::string::npos))
+              << r.err;
           EXPECT_EQ(snapshot(dir), before) << "the command changed its directory";
           fs::remove_all(dir);
         }
