@@ -234,8 +234,8 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
   c.hull_hash =
       stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
-  if (const auto g = root["grid"];
-      c.hull->geometry() && g && g["cell_size"] && c.cell_size != c.hull->geometry()->cell_size) {
+  if (const auto g = root["grid"]; c.hull->geometry() && g && g["cell_size"] &&
+                                   c.cell_size != c.hull->geometry()->cell_size) {
     f.fail(g["cell_size"], "grid.cell_size",
            fmt::format("is {} but the hull's geometry has cells of {} m", c.cell_size,
                        c.hull->geometry()->cell_size));

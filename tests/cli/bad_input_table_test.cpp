@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "support/cli_runner.hpp"
+#include "support/dir_snapshot.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -66,31 +67,6 @@ std::vector<Row> load_rows() {
     rows.push_back(std::move(r));
   }
   return rows;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Every entry under `dir` (recursively) with its kind and, for files, its bytes.
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string rel = fs::relative(e.path(), dir).string();
-    if (e.is_symlink()) {
-      out[rel] = "symlink:" + fs::read_symlink(e.path()).string();
-    } else if (e.is_regular_file()) {
-      out[rel] = "file:" + slurp(e.path());
-    } else if (e.is_directory()) {
-      out[rel] = "dir";
-    } else {
-      out[rel] = "other";
-    }
-  }
-  return out;
 }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {

@@ -10,18 +10,12 @@
 #include <string>
 
 #include "support/cli_runner.hpp"
+#include "support/dir_snapshot.hpp"
 
 namespace hullinspect::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Runs the CLI with `cwd` as the working directory.
 CliResult run_in(const fs::path& cwd, const std::vector<std::string>& args) {
