@@ -1,7 +1,9 @@
-// DARP on the default hull with the default start cells (model.md §1), n = 2, 4, 6, 8 UAVs: time per
-// partition and, as counters, the iterations, whether it converged and the largest imbalance.
+// DARP on the default hull with the default start cells (model.md §1), n = 2, 4, 6, 8, 12, 16 UAVs:
+// time per partition and, as counters, the iterations, whether it converged and the largest
+// imbalance; the `transfer` partitioner on the same hull and starts beside it.
 //
-//   build/release/darp_bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+//   build/release/bench/darp_bench --benchmark_repetitions=10
+//   --benchmark_report_aggregates_only=true
 //
 // Each repetition uses a fresh partition seed (seed = repetition number) so the median covers the
 // spread of the random factors, not one lucky draw.
@@ -12,6 +14,7 @@
 #include <cmath>
 
 #include "hullinspect/partition/darp_partitioner.hpp"
+#include "hullinspect/partition/transfer_partitioner.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/mission_params.hpp"
 
@@ -19,7 +22,8 @@ namespace {
 
 using namespace hullinspect;
 
-void BM_DarpDefaultHull(benchmark::State& state) {
+template <typename PartitionerType>
+void BM_DefaultHull(benchmark::State& state) {
   const auto& hull = world::default_hull();
   world::MissionParams params;
   params.uavs = static_cast<int>(state.range(0));
@@ -28,10 +32,10 @@ void BM_DarpDefaultHull(benchmark::State& state) {
   request.starts = world::start_cells(params, hull);
   static std::uint64_t repetition = 0;  // advances once per repetition
   request.seed = repetition++;
-  const partition::DarpPartitioner darp;
+  const PartitionerType partitioner;
   partition::Partition result;
   for (auto _ : state) {
-    result = darp.partition(request);
+    result = partitioner.partition(request);
     benchmark::DoNotOptimize(result.owner.values().data());
   }
   double imbalance = 0;
@@ -43,7 +47,18 @@ void BM_DarpDefaultHull(benchmark::State& state) {
   state.counters["imbalance"] = imbalance;
 }
 
-BENCHMARK(BM_DarpDefaultHull)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
+void fleet_sizes(benchmark::internal::Benchmark* b) {
+  for (int n : {2, 4, 6, 8, 12, 16}) b->Arg(n);
+}
+
+BENCHMARK(BM_DefaultHull<partition::DarpPartitioner>)
+    ->Name("BM_DarpDefaultHull")
+    ->Apply(fleet_sizes)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DefaultHull<partition::TransferPartitioner>)
+    ->Name("BM_TransferDefaultHull")
+    ->Apply(fleet_sizes)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

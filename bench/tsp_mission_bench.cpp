@@ -37,15 +37,14 @@
 #include "hullinspect/world/instance.hpp"
 #include "hullinspect/world/scenario.hpp"
 
+#include "bench_support.hpp"
+
 namespace {
 
 using namespace hullinspect;
 
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
-}
+using bench::split;
+using bench::thread_cpu_seconds;
 
 /// The mission's solver, recording every instance it is given.
 class RecordingSolver final : public tsp::TspSolver {
@@ -65,15 +64,6 @@ class RecordingSolver final : public tsp::TspSolver {
   std::unique_ptr<tsp::TspSolver> inner_;
   std::vector<tsp::SegmentTsp>& out_;
 };
-
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, sep);) {
-    if (!item.empty()) out.push_back(item);
-  }
-  return out;
-}
 
 std::vector<int> ints(const std::string& text) {
   std::vector<int> out;

@@ -11,6 +11,10 @@ pkg_check_modules(CBC REQUIRED IMPORTED_TARGET cbc)
 # Geodesy for waypoint exports (libgeographiclib-dev ships its Find module here).
 list(APPEND CMAKE_MODULE_PATH /usr/share/cmake/geographiclib)
 find_package(GeographicLib REQUIRED)
+# Flight files: DJI's KMZ is a zip (libzip-dev), KML and WPML are XML (libpugixml-dev).
+# (through pkg-config: Debian's libzip CMake config also demands the zipcmp tools)
+pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
+find_package(pugixml REQUIRED)
 if(HULLINSPECT_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -1,11 +1,23 @@
 # The library is one static library per module: hullinspect_<module> holds src/<module>/*.cpp (its
 # public headers are include/hullinspect/<module>/) and links only the modules it declares with
 # USES, so the linker sees each module before the ones below it. hullinspect_check_layers (below)
-# fails the build on an #include "hullinspect/<module>/..." of a module that is not below the includer. The declarations
-# are the one dependency table: hullinspect_module records each in the global property
-# HULLINSPECT_LAYERS ("module=use1,use2") that the check passes to tools/check_layers.py.
+# fails the build on an #include "hullinspect/<module>/..." of a module that is not below the
+# includer. The declarations are the one dependency table: hullinspect_module records each in the
+# global property HULLINSPECT_LAYERS ("module=use1,use2") that the check passes to
+# tools/check_layers.py.
 #
 #   hullinspect_module(NAME [USES module...] [SOURCES generated.cpp...])
+
+# The Python module (python/) links the library into a shared object, so its static libraries are
+# compiled as position-independent code then; -fno-semantic-interposition keeps GCC inlining
+# across them as it does for the executable's -fPIE.
+function(hullinspect_linkable_into_python target)
+  if(HULLINSPECT_WITH_PYTHON)
+    set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    target_compile_options(${target} PRIVATE -fno-semantic-interposition)
+  endif()
+endfunction()
+
 function(hullinspect_module name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "USES;SOURCES")
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/${name}/*.cpp)
@@ -16,13 +28,7 @@ function(hullinspect_module name)
     endif()
     target_link_libraries(hullinspect_${name} PUBLIC hullinspect_${used})
   endforeach()
-  # The Python module (python/) links the library into a shared object, so it is compiled as
-  # position-independent code then; -fno-semantic-interposition keeps GCC inlining across it as
-  # it does for the executable's -fPIE.
-  if(HULLINSPECT_WITH_PYTHON)
-    set_target_properties(hullinspect_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
-    target_compile_options(hullinspect_${name} PRIVATE -fno-semantic-interposition)
-  endif()
+  hullinspect_linkable_into_python(hullinspect_${name})
   list(JOIN arg_USES "," uses)
   set_property(GLOBAL APPEND PROPERTY HULLINSPECT_LAYERS "${name}=${uses}")
 endfunction()

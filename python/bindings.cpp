@@ -8,8 +8,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <optional>
 
 #include "../apps/hullinspect/mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
@@ -18,7 +21,10 @@
 #include "hullinspect/experiment/plan.hpp"
 #include "hullinspect/experiment/presets.hpp"
 #include "hullinspect/experiment/runner.hpp"
+#include "hullinspect/files/output_set.hpp"
 #include "hullinspect/io/result_json.hpp"
+#include "hullinspect/io/trace_reader.hpp"
+#include "hullinspect/io/traced_mission.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
@@ -26,6 +32,7 @@
 #include "hullinspect/world/user_maps.hpp"
 #include "mission_args.hpp"
 #include "planner_bridge.hpp"
+#include "python_calls.hpp"
 #include "session.hpp"
 
 namespace py = pybind11;
@@ -76,19 +83,47 @@ py::dict result_dict(const planners::MissionSpec& spec, const sim::MissionResult
   return out;
 }
 
-/// `hullinspect run --json WORDS` without printing: the result JSON and c(t), m(t).
-py::dict run_mission(const std::vector<std::string>& words, const HullPtr& hull_arg) {
+/// The files a mission reads, which its trace must not replace.
+void add_mission_inputs(io::OutputSet& outputs, const cli::MissionArgs& args) {
+  if (args.hull != "default") outputs.add_input(args.hull, "hull");
+  if (!args.prior.empty()) outputs.add_input(args.prior, "prior");
+  if (!args.truth.empty()) outputs.add_input(args.truth, "truth");
+  if (!args.no_fly.empty()) outputs.add_input(args.no_fly, "no_fly");
+}
+
+/// `hullinspect run --json WORDS` without printing: the result JSON and c(t), m(t); with
+/// `trace_path` the trace is written there too (as `run --trace`), with `keep_trace` it is
+/// returned as JSON text under "trace".
+py::dict run_mission(const std::vector<std::string>& words, const HullPtr& hull_arg,
+                     const std::string& trace_path, bool keep_trace) {
   sim::MissionResult result;
   planners::MissionSpec spec;
+  std::string trace_text;
   {
     py::gil_scoped_release release;  // Python planners take it back in start/decide
     const cli::MissionArgs args = python::parse_mission_words(words);
+    io::OutputSet outputs;
+    add_mission_inputs(outputs, args);
+    outputs.add_output(trace_path, "trace");
+    outputs.check();
     const HullPtr hull = mission_hull(hull_arg, args);
     spec = cli::build_spec(args, *hull);
     planners::validate(spec, *hull);
-    result = planners::run_mission(spec, *hull);
+    if (trace_path.empty() && !keep_trace) {
+      result = planners::run_mission(spec, *hull);
+    } else {
+      auto traced = io::run_traced_mission(spec, *hull);
+      result = std::move(traced.result);
+      trace_text = traced.trace.dump();
+      if (!trace_path.empty()) {
+        outputs.write(trace_path, trace_text + "\n");
+        outputs.commit();
+      }
+    }
   }
-  return result_dict(spec, result);
+  py::dict out = result_dict(spec, result);
+  if (keep_trace) out["trace"] = trace_text;
+  return out;
 }
 
 /// C′ for a Session: None (no expected corrosion), a map file, or an array [y][x] over the hull.
@@ -99,28 +134,35 @@ grid::Grid<std::int8_t> session_prior(const py::object& prior, const world::Hull
   if (py::isinstance<py::str>(prior)) {
     return world::load_corrosion_map(prior.cast<std::string>(), hull).cells;
   }
-  const auto a = py::array_t<std::int8_t, py::array::c_style | py::array::forcecast>::ensure(prior);
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(prior);
   if (!a || a.ndim() != 2 || a.shape(0) != hull.height() || a.shape(1) != hull.width()) {
     throw Error(
         fmt::format("prior: expected a path or an array of shape ({}, {}) [y][x] like the "
                     "hull's mask",
                     hull.height(), hull.width()));
   }
+  // 1 expected corrosion, 0 none, -1 (make_instance's marker) off the hull only.
   for (int y = 0; y < hull.height(); ++y) {
     for (int x = 0; x < hull.width(); ++x) {
-      const bool corroded = a.at(y, x) == 1;
-      if (corroded && !hull.is_hull(x, y)) {
+      const double v = a.at(y, x);
+      const bool on_hull = hull.is_hull(x, y);
+      if (!(v == 0 || v == 1 || (v == -1 && !on_hull))) {
+        throw Error(fmt::format("prior[{}][{}]: expected {} (got {})", y, x,
+                                on_hull ? "0 or 1 on a hull cell" : "-1, 0 or 1", v));
+      }
+      if (v == 1 && !on_hull) {
         throw Error(
             fmt::format("prior: cell ({}, {}) is marked corroded but is not a hull cell", x, y));
       }
-      if (hull.is_hull(x, y)) out(x, y) = corroded ? 1 : 0;
+      if (on_hull) out(x, y) = v == 1 ? 1 : 0;
     }
   }
   return out;
 }
 
 std::unique_ptr<python::Session> make_session(const std::vector<std::string>& words,
-                                              const HullPtr& hull_arg, const py::object& prior) {
+                                              const HullPtr& hull_arg, const py::object& prior,
+                                              bool keep_trace) {
   const cli::MissionArgs args = python::parse_mission_words(words);
   if (!args.truth.empty() || !args.fail.empty() || args.fail_rate != 0 ||
       args.fail_one_within != 0 || !args.prior.empty()) {
@@ -132,11 +174,15 @@ std::unique_ptr<python::Session> make_session(const std::vector<std::string>& wo
   planners::MissionSpec spec = cli::build_spec(args, *hull);
   auto prior_grid = session_prior(prior, *hull);
   py::gil_scoped_release release;
-  return std::make_unique<python::Session>(hull, std::move(spec), std::move(prior_grid));
+  return std::make_unique<python::Session>(hull, std::move(spec), std::move(prior_grid),
+                                           keep_trace);
 }
 
 std::vector<python::CellReading> readings_from(const py::iterable& items) {
   std::vector<python::CellReading> out;
+  const py::module_ numpy = py::module_::import("numpy");
+  const py::object numpy_bool = numpy.attr("bool_");
+  const py::object numpy_integer = numpy.attr("integer");
   std::size_t j = 0;
   for (const auto& item : items) {
     const auto seq = py::reinterpret_borrow<py::sequence>(item);
@@ -144,9 +190,23 @@ std::vector<python::CellReading> readings_from(const py::iterable& items) {
       throw Error(fmt::format("readings[{}]: expected (x, y, plane, corroded), got {}", j,
                               py::repr(item).cast<std::string>()));
     }
+    // True/False (Python or numpy bools) or the integers 0/1: text such as 'no' is refused
+    // rather than read as corroded.
+    const py::handle corroded = seq[3];
+    const bool is_bool =
+        py::isinstance<py::bool_>(corroded) || py::isinstance(corroded, numpy_bool);
+    const bool is_integer =
+        py::isinstance<py::int_>(corroded) || py::isinstance(corroded, numpy_integer);
+    const bool is_01 =
+        is_integer && (py::int_(py::reinterpret_borrow<py::object>(corroded)).equal(py::int_(0)) ||
+                       py::int_(py::reinterpret_borrow<py::object>(corroded)).equal(py::int_(1)));
+    if (!is_bool && !is_01) {
+      throw Error(fmt::format("readings[{}]: corroded must be True or False, got {}", j,
+                              py::repr(corroded).cast<std::string>()));
+    }
     try {
       out.push_back({seq[0].cast<int>(), seq[1].cast<int>(), seq[2].cast<int>(),
-                     PyObject_IsTrue(seq[3].ptr()) == 1});
+                     PyObject_IsTrue(corroded.ptr()) == 1});
     } catch (const py::cast_error&) {
       throw Error(fmt::format("readings[{}]: x, y and plane must be integers, got {}", j,
                               py::repr(item).cast<std::string>()));
@@ -197,13 +257,28 @@ experiment::ExperimentConfig load_experiment(const std::string& kind, const std:
   return experiment::parse_config(value, "<config>", std::filesystem::current_path());
 }
 
-void run_experiment(const std::string& kind, const std::string& value, int jobs,
-                    const std::string& out) {
-  py::gil_scoped_release release;  // worker threads running Python planners take it in turn
-  const experiment::ExperimentPlan plan(load_experiment(kind, value));
-  experiment::RunnerOptions options;
-  options.jobs = jobs;
-  experiment::run_experiment(plan, out, options);
+void run_experiment(const std::string& kind, const std::string& value, const py::handle& jobs_arg,
+                    const std::string& out, bool resume) {
+  const int jobs =
+      python::integer_in(jobs_arg, "jobs", py::int_(0), py::int_(experiment::kMaxJobs)).cast<int>();
+  std::optional<experiment::ExperimentPlan> loaded;
+  try {
+    loaded.emplace(load_experiment(kind, value));
+  } catch (const ParameterError& e) {  // a preset is run_experiment's `config`
+    if (e.name() != "preset") throw;
+    throw ParameterError("config", e.problem());
+  }
+  const experiment::ExperimentPlan& plan = *loaded;
+  // Worker threads fly the missions; Python planners' calls and Ctrl-C are served on this thread.
+  python::serve_python_calls([&](const std::atomic<bool>& stopped) {
+    experiment::RunnerOptions options;
+    options.jobs = jobs;
+    options.resume = resume;
+    options.on_progress = [&stopped](const experiment::Progress&) {
+      if (stopped) throw Error("interrupted");
+    };
+    experiment::run_experiment(plan, out, options);
+  });
 }
 
 }  // namespace
@@ -211,13 +286,15 @@ void run_experiment(const std::string& kind, const std::string& value, int jobs,
 PYBIND11_MODULE(_core, m) {
   m.doc() = "hullinspect's C++ library (use the hullinspect package, not this module)";
 
-  // Bad input is ValueError with the CLI's one-line message; a broken model rule (a planner bug)
-  // is RuntimeError.
+  // Bad input is ValueError with the CLI's one-line message, naming the Python keyword where the
+  // CLI names its option; a broken model rule (a planner bug) is RuntimeError.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const LogicError& e) {
       PyErr_SetString(PyExc_RuntimeError, user_message(e).c_str());
+    } catch (const ParameterError& e) {
+      PyErr_SetString(PyExc_ValueError, python::keyword_message(e).c_str());
     } catch (const Error& e) {
       PyErr_SetString(PyExc_ValueError, user_message(e).c_str());
     }
@@ -252,8 +329,9 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "make_instance",
-      [](const HullPtr& hull_arg, std::uint64_t seed, const std::string& scenario,
+      [](const HullPtr& hull_arg, const py::object& seed_arg, const std::string& scenario,
          const OptionMap& scenario_options) {
+        const std::uint64_t seed = python::seed_value(seed_arg);
         const HullPtr hull = hull_or_default(hull_arg);
         world::CorrosionParams corrosion;
         try {
@@ -271,9 +349,16 @@ PYBIND11_MODULE(_core, m) {
   m.def("mission_words", &python::mission_words, py::arg("algorithm"), py::arg("uavs"),
         py::arg("s2"), py::arg("seed"), py::arg("scenario"), py::arg("hull_path"),
         py::arg("options"), py::arg("params"));
-  m.def("run_mission", &run_mission, py::arg("words"), py::arg("hull"));
+  m.def("run_mission", &run_mission, py::arg("words"), py::arg("hull"), py::arg("trace_path"),
+        py::arg("keep_trace"));
+  m.def(
+      "read_trace", [](const std::string& path) { return io::read_trace(path).dump(); },
+      py::arg("path"), "The trace file as JSON text, checked as `hullinspect view` checks it");
+  m.def("mission_defaults", &python::mission_defaults,
+        "The defaults of `hullinspect run`'s options, from the same declarations");
   m.def("run_experiment", &run_experiment, py::arg("kind"), py::arg("value"), py::arg("jobs"),
-        py::arg("out"));
+        py::arg("out"), py::arg("resume"));
+  m.attr("__version__") = HULLINSPECT_VERSION;
   m.def(
       "catalog", [](const std::string& kind) { return experiment::catalog_json(kind).dump(); },
       py::arg("kind") = "");
@@ -282,7 +367,9 @@ PYBIND11_MODULE(_core, m) {
         py::arg("description"));
 
   py::class_<python::Session>(m, "Session")
-      .def(py::init(&make_session), py::arg("words"), py::arg("hull"), py::arg("prior"))
+      .def(py::init(&make_session), py::arg("words"), py::arg("hull"), py::arg("prior"),
+           py::arg("keep_trace"))
+      .def("trace", [](const python::Session& s) { return s.trace().dump(); })
       .def(
           "step",
           [](python::Session& s, const py::iterable& readings, const std::vector<int>& failed) {

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "../apps/hullinspect/number_options.hpp"
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/experiment/runner.hpp"
 
 namespace hullinspect::python {
 
@@ -81,9 +83,59 @@ cli::MissionArgs parse_mission_words(const std::vector<std::string>& words) {
   try {
     parser.app.parse(reversed);
   } catch (const CLI::ParseError& e) {
-    throw Error(cli::parse_error_message(e));
+    // "--uavs: 'x' is not a valid value (see --help)": name the keyword, not the option.
+    std::string message = cli::parse_error_message(e);
+    const std::string help = " (see --help)";
+    if (message.ends_with(help)) message.resize(message.size() - help.size());
+    const auto colon = message.find(": ");
+    if (message.rfind("--", 0) == 0 && colon != std::string::npos) {
+      throw ParameterError(message.substr(2, colon - 2), message.substr(colon + 2));
+    }
+    throw Error(message);
   }
   return parser.args;
+}
+
+std::string python_keyword(const std::string& name) {
+  std::string out = name;
+  if (const auto dot = out.rfind('.'); dot != std::string::npos) out = out.substr(dot + 1);
+  if (out.rfind("--", 0) == 0) out = out.substr(2);
+  std::replace(out.begin(), out.end(), '-', '_');
+  if (out == "start") return "starts";
+  return out;
+}
+
+std::string keyword_message(const ParameterError& error) {
+  return python_keyword(error.name()) + ": " + error.problem();
+}
+
+py::int_ integer_in(const py::handle& value, const std::string& keyword, const py::int_& min,
+                    const py::int_& max) {
+  if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
+    const auto number = py::reinterpret_borrow<py::int_>(value);
+    if (number >= min && number <= max) return number;
+  }
+  throw ParameterError(
+      keyword,
+      fmt::format("must be an integer in [{}, {}] (got {})", py::repr(min).cast<std::string>(),
+                  py::repr(max).cast<std::string>(), py::repr(value).cast<std::string>()));
+}
+
+std::uint64_t seed_value(const py::handle& seed) {
+  return integer_in(seed, "seed", py::int_(0), py::int_(std::numeric_limits<std::uint64_t>::max()))
+      .cast<std::uint64_t>();
+}
+
+py::dict mission_defaults() {
+  const cli::MissionArgs args;
+  py::dict out;
+  out["algorithm"] = args.algorithm;
+  out["uavs"] = args.uavs;
+  out["s2"] = args.s2;
+  out["seed"] = args.seed;
+  out["scenario"] = args.scenario;
+  out["jobs"] = experiment::RunnerOptions{}.jobs;
+  return out;
 }
 
 }  // namespace hullinspect::python

@@ -5,10 +5,12 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "../apps/hullinspect/mission_options.hpp"
+#include "hullinspect/core/errors.hpp"
 
 namespace hullinspect::python {
 
@@ -21,8 +23,24 @@ std::vector<std::string> mission_words(const std::string& algorithm, const pybin
                                        const std::string& scenario, const std::string& hull_path,
                                        const pybind11::dict& options, const pybind11::dict& params);
 
-/// Parses `words` as `hullinspect run` does. Throws ParameterError with the CLI's message for
-/// anything its parser refuses ("--uavs: 'x' is not a valid value (see --help)").
+/// Parses `words` as `hullinspect run` does. Throws ParameterError naming the option for anything
+/// its parser refuses (the CLI's "--uavs: 'x' is not a valid value (see --help)" becomes
+/// ParameterError("uavs", "'x' is not a valid value")).
 cli::MissionArgs parse_mission_words(const std::vector<std::string>& words);
+
+/// The Python keyword of a parameter or CLI option: "part-tsp.r1" → "r1", "--p-tp" → "p_tp".
+std::string python_keyword(const std::string& name);
+/// A ParameterError as Python shows it: "keyword: problem".
+std::string keyword_message(const ParameterError& error);
+
+/// `value` if it is a Python int (not a bool) in [min, max]; ParameterError(keyword, …) otherwise.
+pybind11::int_ integer_in(const pybind11::handle& value, const std::string& keyword,
+                          const pybind11::int_& min, const pybind11::int_& max);
+/// A seed given from Python: an int in [0, 2^64 - 1]; ParameterError("seed", …) otherwise.
+std::uint64_t seed_value(const pybind11::handle& seed);
+
+/// The defaults of the mission keywords (algorithm, uavs, s2, seed, scenario) from MissionArgs, the
+/// declarations `hullinspect run` reads, and of run_experiment's jobs from RunnerOptions.
+pybind11::dict mission_defaults();
 
 }  // namespace hullinspect::python

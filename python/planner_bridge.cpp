@@ -7,6 +7,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "python_calls.hpp"
 
 namespace hullinspect::python {
 
@@ -45,6 +46,15 @@ class PythonPlanner final : public planners::Planner {
   }
 
   void start(const planners::PlannerContext& context) override {
+    run_python_call([&] { start_in_python(context); });
+  }
+
+  void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override {
+    run_python_call([&] { decide_in_python(view, actions); });
+  }
+
+ private:
+  void start_in_python(const planners::PlannerContext& context) {
     py::gil_scoped_acquire gil;
     const auto& hull = context.hull.mask();
     py::array_t<bool> mask({hull.height(), hull.width()});
@@ -64,7 +74,7 @@ class PythonPlanner final : public planners::Planner {
     instance_.attr("start")(ctx);
   }
 
-  void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override {
+  void decide_in_python(const sim::PlannerView& view, std::span<sim::Action> actions) {
     py::gil_scoped_acquire gil;
     py::list uavs;
     for (const auto& u : view.uavs) {
@@ -87,7 +97,6 @@ class PythonPlanner final : public planners::Planner {
     }
   }
 
- private:
   std::string name_;
   py::object instance_;
   py::object prior_;
@@ -111,9 +120,12 @@ void register_python_planner(const std::string& name, py::object cls,
   });
   planners::planners().add(make_entry<planners::Planner, NoOptions>(
       name, description, Params<NoOptions>(name), [name, holder](const NoOptions&) {
-        py::gil_scoped_acquire gil;
-        return std::unique_ptr<planners::Planner>(
-            std::make_unique<PythonPlanner>(name, (*holder)()));
+        std::unique_ptr<planners::Planner> planner;
+        run_python_call([&] {
+          py::gil_scoped_acquire gil;
+          planner = std::make_unique<PythonPlanner>(name, (*holder)());
+        });
+        return planner;
       }));
 }
 

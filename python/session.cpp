@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/io/result_json.hpp"
 
 namespace hullinspect::python {
 
@@ -25,7 +26,7 @@ std::uint8_t plane_bit(int plane) {
 }  // namespace
 
 Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionSpec spec,
-                 grid::Grid<std::int8_t> prior)
+                 grid::Grid<std::int8_t> prior, bool record_trace)
     : hull_(std::move(hull)), spec_(std::move(spec)) {
   planners::validate(spec_, *hull_);
   const int cells = hull_->width() * hull_->height();
@@ -62,6 +63,7 @@ Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionS
   const auto t0 = Clock::now();
   planner_->start(context);
   planner_seconds_ += seconds_since(t0);
+  if (record_trace) recorder_.emplace(instance_, io::spec_json(spec_, hull_->source()));
 }
 
 std::vector<std::array<int, 3>> Session::expected_readings(const std::vector<int>& failed) const {
@@ -174,9 +176,11 @@ std::vector<sim::Action> Session::step(const std::vector<CellReading>& readings,
   }
   if (!sim_) {
     sim_.emplace(*hull_, instance_, spec_.params);
+    if (recorder_) recorder_->on_start(*sim_, *planner_);
   } else {
     for (int k : failed) sim_->fail_uav_at(k, sim_->time());
     sim_->step(pending_);
+    if (recorder_) recorder_->on_step(*sim_, *planner_);
     if (!sim_->finished() && planner_->idle(sim_->view())) stopped_idle_ = true;
   }
   if (finished()) return {};
@@ -194,6 +198,11 @@ sim::MissionResult Session::result() const {
   r.planner_seconds = planner_seconds_;
   r.planner = planner_->stats();
   return r;
+}
+
+nlohmann::json Session::trace() const {
+  if (!recorder_) throw Error("trace: this Session records no trace (pass keep_trace=True)");
+  return recorder_->finish(result());
 }
 
 }  // namespace hullinspect::python

@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/sim/simulator.hpp"
@@ -31,8 +32,9 @@ struct CellReading {
 class Session {
  public:
   /// `prior`: C′ over the hull (-1 not hull, 0, 1). Validates the spec and starts the planner.
+  /// With `record_trace`, every step is recorded as `hullinspect run --trace` records a mission.
   Session(std::shared_ptr<const world::HullMask> hull, planners::MissionSpec spec,
-          grid::Grid<std::int8_t> prior);
+          grid::Grid<std::int8_t> prior, bool record_trace = false);
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
@@ -57,6 +59,9 @@ class Session {
   const world::HullMask& hull() const { return *hull_; }
   /// The mission so far as a MissionResult (T_c and c(t) count only the corrosion reported).
   sim::MissionResult result() const;
+  /// The trace of the mission so far (docs/trace-format.md; its truth is the readings). Error
+  /// unless the session records one and has started.
+  nlohmann::json trace() const;
 
  private:
   void check_readings(const std::vector<CellReading>& readings, const std::vector<int>& failed);
@@ -72,6 +77,7 @@ class Session {
   planners::DirectPartitionSource partitions_;
   std::unique_ptr<planners::Planner> planner_;
   std::optional<sim::Simulator> sim_;
+  std::optional<io::TraceRecorder> recorder_;
   grid::Grid<std::int8_t> initial_map_;
   std::vector<sim::UavState> initial_uavs_;
   std::vector<sim::Action> pending_;

@@ -1,12 +1,12 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Refuses an #include of a module that is not below the including module.
 
 The modules and what each uses are declared once, in CMakeLists.txt (hullinspect_module(NAME USES
 ...)); every build of the library passes that table here as NAME=USE1,USE2 arguments
 (cmake/Modules.cmake). A file of module M (src/M/ or include/hullinspect/M/) may include
-"hullinspect/X/..." only when X is M or a module M uses, directly or through the modules it uses. Every folder under src/ and include/hullinspect/
-must be a declared module. Prints one line per problem (file:line: what and why) and exits 1 if
-there is any, 0 otherwise.
+"hullinspect/X/..." only when X is M or a module M uses, directly or through the modules it uses,
+and no path with '..'. Every folder under src/ and include/hullinspect/ must be a declared module.
+Prints one line per problem (file:line: what and why) and exits 1 if there is any, 0 otherwise.
 
   tools/check_layers.py --source DIR core= files=core grid=core world=grid,files ...
 """
@@ -17,6 +17,7 @@ import re
 import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]hullinspect/([^/">]+)/')
+RELATIVE = re.compile(r'^\s*#\s*include\s*[<"][^">]*\.\./')
 SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".inl"}
 
 
@@ -71,6 +72,10 @@ def problems(source, table):
             continue
         with open(path, encoding="utf-8", errors="replace") as f:
             for number, line in enumerate(f, start=1):
+                if RELATIVE.match(line):
+                    found.append(f"{shown}:{number}: includes a path with '..', which can reach "
+                                 f"any module (write \"hullinspect/<module>/...\")")
+                    continue
                 match = INCLUDE.match(line)
                 if not match:
                     continue

@@ -2,8 +2,8 @@
 """Tests of tools/check_layers.py (run by CTest as check_layers_tool).
 
 A made-up checkout of three modules, low <- mid <- high: includes downwards, directly or through a
-used module, pass; an include upwards, of an undeclared module, or a folder that is not a declared
-module is reported with its file and line.
+used module, pass; an include upwards, of an undeclared module or through '..', or a folder that
+is not a declared module is reported with its file and line.
 """
 
 import sys
@@ -58,6 +58,11 @@ class CheckLayers(unittest.TestCase):
         found = problems({"src/left/a.cpp": '#include "hullinspect/right/r.hpp"\n'}, table)
         self.assertEqual(len(found), 1)
         self.assertIn("module 'left' includes module 'right'", found[0])
+
+    def test_a_relative_include_out_of_the_folder_is_reported(self):
+        found = problems({"src/low/a.cpp": '#include "../mid/private.hpp"\n'})
+        self.assertEqual(len(found), 1)
+        self.assertIn("src/low/a.cpp:1: includes a path with '..'", found[0])
 
     def test_undeclared_modules_are_reported(self):
         found = problems({"src/extra/a.cpp": "",

@@ -27,6 +27,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import beyond_targets  # noqa: E402
+import plot_report  # noqa: E402
 
 plt.rcParams.update({
     "font.size": 9,
@@ -39,13 +40,10 @@ plt.rcParams.update({
 
 T_C_TARGET = 0.8
 FAILURE_TARGET = 1.3
-# The report's colours (tools/plot_report.py: tab10 in the preset's order of algorithms), so that
-# Sweep-Inspect, the oracle and the paper planners look the same in every figure; a missed target
-# is red, the targets black.
-MISSED = "tab:red"
-COLOUR = {"lawnmower": "tab:blue", "part-tsp": "tab:orange", "part-tsp0": "tab:green",
-          "coop-frontier": "tab:red", "part-tsp-share": "tab:purple", "sweep-inspect": "tab:brown",
-          "oracle-part-tsp": "tab:pink"}
+# The report's colours (tools/plot_report.py's PLANNER_COLOURS, colour-blind safe), so that every
+# planner looks the same in every figure; a missed target is grey, the targets black.
+COLOUR = plot_report.PLANNER_COLOURS
+MISSED = "#999999"
 MET = COLOUR["sweep-inspect"]
 FAILURE_PLANNERS = ["lawnmower", "part-tsp", "part-tsp0", "coop-frontier", "part-tsp-share",
                     beyond_targets.OURS]

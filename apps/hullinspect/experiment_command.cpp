@@ -149,7 +149,7 @@ void add_experiment_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--out,-o", args->out, "Results directory (new or empty, or with --resume)")
       ->type_name("DIR");
   cmd->add_option("--jobs,-j", args->jobs, "Worker threads (0: every core)")
-      ->check(integer_in(0, 4096))
+      ->check(integer_in(0, experiment::kMaxJobs))
       ->capture_default_str();
   cmd->add_flag("--resume", args->resume,
                 "Continue the experiment in DIR: keep finished runs, run the missing ones");

@@ -28,11 +28,13 @@ int export_trace(const ExportCommandArgs& args) {
   const auto uavs = trace.at("frames").at(0).at("u").size() / 5;  // 5 fields per UAV (checked)
   declare_export_files(outputs, *request, static_cast<int>(uavs));
   outputs.check();
-  const auto names = write_export(trace, *request, outputs);
+  const auto written = write_export(trace, *request, outputs);
   outputs.commit();
-  std::cout << fmt::format("wrote {} {} file{} to {}: {}\n", names.size(), args.output.format,
+  const auto& names = written.names;
+  std::cout << fmt::format("wrote {} {} file{} to {}: {}\n", names.size(), format_list(*request),
                            names.size() == 1 ? "" : "s", request->dir.string(),
                            fmt::join(names, ", "));
+  for (const auto& note : written.notes) std::cout << "note: " << note << "\n";
   return 0;
 }
 
@@ -42,7 +44,8 @@ void add_export_command(CLI::App& app, CommandAction& action) {
   auto args = std::make_shared<ExportCommandArgs>();
   CLI::App* cmd = app.add_subcommand(
       "export",
-      "Write a mission trace's trajectories as waypoints (csv, qgc, wpl, path), one file per UAV");
+      "Write a mission trace's trajectories as flight files (csv, qgc, wpl, path, litchi, dji-kmz, "
+      "kml)");
   cmd->footer(
       "Exit status: 0 written, 2 invalid input (nothing written), 1 other failure.\n"
       "Example: hullinspect export mission.json --format qgc --origin 53.54,9.97,0 --heading 90 "

@@ -3,6 +3,7 @@
 #include "number_options.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
 #include <set>
@@ -10,6 +11,9 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/files/bounded_read.hpp"
+
+#include <algorithm>
+#include <sstream>
 
 namespace hullinspect::cli {
 
@@ -19,10 +23,13 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
   cmd.add_option(dir_option, a.dir,
                  "Write each UAV's waypoints into DIR (created if missing; see docs/export.md)")
       ->type_name("DIR");
-  cmd.add_option("--format", a.format,
-                 "Waypoint format: csv, qgc (QGroundControl .plan), wpl (QGC WPL 110), path "
-                 "(nav_msgs/Path YAML)")
-      ->capture_default_str();
+  cmd.add_option("--format", a.formats,
+                 "Waypoint format, repeatable: csv, qgc (QGroundControl .plan), wpl (QGC WPL 110), "
+                 "path (nav_msgs/Path YAML), litchi (Litchi CSV mission), dji-kmz (DJI WPML "
+                 "wayline), kml (Google Earth preview), or all")
+      ->default_str(std::string(io::to_string(kDefaultExportFormat)))
+      ->allow_extra_args(false)
+      ->type_name("FORMAT");
   cmd.add_option(
          "--origin", a.origin,
          "Geo-reference: WGS-84 latitude, longitude (degrees) and ellipsoidal height (m) of "
@@ -35,6 +42,26 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
   cmd.add_option("--geo", a.geo_file,
                  "Geo-reference from a YAML file: origin: [LAT, LON, ALT], heading: DEG")
       ->type_name("FILE");
+  cmd.add_option("--launch", a.launch,
+                 "Launch site at grid position X,Y (a non-hull or edge cell), repeatable; each UAV "
+                 "flies one sortie from the nearest site (default: it takes off below its start)")
+      ->type_name("X,Y");
+  cmd.add_option("--max-waypoints", a.max_waypoints,
+                 "Split a sortie into mission files of at most N waypoints (default: litchi 99, "
+                 "dji-kmz 200, others no cap)")
+      ->type_name("N");
+  cmd.add_option("--simplify", a.simplify,
+                 "Merge legs whose waypoints lie within TOL metres of a straight line, keeping "
+                 "coverage (refused, naming the first cell lost, if it would not)")
+      ->check(real_in(0.0, 1e3))
+      ->type_name("TOL_M");
+  cmd.add_option("--firmware", a.firmware, "Flight controller of qgc/wpl missions: px4, ardupilot")
+      ->capture_default_str();
+  cmd.add_option("--finish", a.finish,
+                 "After the last waypoint: land (at the home point) or rtl (return to launch)")
+      ->capture_default_str();
+  cmd.add_option("--drone", a.drone, "DJI aircraft of dji-kmz files: m350, m300, m30, m30t, m3e")
+      ->capture_default_str();
   cmd.add_flag("--force", a.force,
                "Write into the directory even if it already holds files (files of the same names "
                "are replaced, others are left as they are)");
@@ -92,12 +119,34 @@ io::GeoReference geo_from_yaml(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+grid::Cell parse_launch_site(const std::string& text) {
+  grid::Cell c;
+  char comma = 0;
+  std::istringstream in(text);
+  if (!(in >> c.x >> comma >> c.y) || comma != ',' || !(in >> std::ws).eof()) {
+    throw ParameterError("launch",
+                         fmt::format("expects X,Y, a grid position in cells (got '{}')", text));
+  }
+  return c;
+}
+
+}  // namespace
+
 std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::string& dir_option) {
   const std::string name = dir_option.substr(2);
   if (a.dir.empty()) {
+    const ExportArgs defaults;
     for (const auto& [set, option] :
-         {std::pair{!a.origin.empty(), "origin"}, std::pair{a.heading.has_value(), "heading"},
-          std::pair{!a.geo_file.empty(), "geo"}, std::pair{a.force, "force"}}) {
+         {std::pair{!a.formats.empty(), "format"}, std::pair{!a.origin.empty(), "origin"},
+          std::pair{a.heading.has_value(), "heading"}, std::pair{!a.geo_file.empty(), "geo"},
+          std::pair{!a.launch.empty(), "launch"},
+          std::pair{a.max_waypoints.has_value(), "max-waypoints"},
+          std::pair{a.simplify.has_value(), "simplify"},
+          std::pair{a.firmware != defaults.firmware, "firmware"},
+          std::pair{a.finish != defaults.finish, "finish"},
+          std::pair{a.drone != defaults.drone, "drone"}, std::pair{a.force, "force"}}) {
       if (set)
         throw ParameterError(option, fmt::format("has no effect without {} DIR", dir_option));
     }
@@ -105,7 +154,32 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
   }
   ExportRequest r;
   r.dir = a.dir;
-  r.format = io::parse_export_format(a.format);
+  if (!a.formats.empty()) r.formats = io::parse_export_formats(a.formats);
+  if (a.firmware == "ardupilot") {
+    r.settings.firmware = io::Firmware::kArduPilot;
+  } else if (a.firmware != "px4") {
+    throw ParameterError("firmware", fmt::format("'{}' is not a firmware (expected px4 or "
+                                                 "ardupilot)",
+                                                 a.firmware));
+  }
+  if (a.finish == "rtl") {
+    r.settings.finish = io::FinishAction::kRtl;
+  } else if (a.finish != "land") {
+    throw ParameterError("finish",
+                         fmt::format("'{}' is not a finish (expected land or rtl)", a.finish));
+  }
+  r.settings.drone = io::parse_dji_drone(a.drone);
+  for (const auto& text : a.launch) r.settings.launch_sites.push_back(parse_launch_site(text));
+  if (a.max_waypoints) {
+    if (*a.max_waypoints < io::kMinWaypointCap) {
+      throw ParameterError("max-waypoints",
+                           fmt::format("{} is below the {} waypoints a mission file needs (the "
+                                       "point it starts from and one to fly to)",
+                                       *a.max_waypoints, io::kMinWaypointCap));
+    }
+    r.settings.max_waypoints = *a.max_waypoints;
+  }
+  if (a.simplify) r.settings.simplify_m = *a.simplify;
   if (!a.geo_file.empty()) {
     if (!a.origin.empty() || a.heading) {
       throw ParameterError("geo", "give either --geo FILE or --origin and --heading, not both");
@@ -117,10 +191,13 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
     if (!a.heading) throw ParameterError("heading", "--origin needs --heading DEG too");
     r.geo = io::GeoReference(io::parse_geo_origin(a.origin), *a.heading);
   }
-  if ((r.format == io::ExportFormat::kQgc || r.format == io::ExportFormat::kWpl) && !r.geo) {
-    throw ParameterError("origin", fmt::format("the {} format needs a geo-reference: give --origin "
-                                               "LAT,LON,ALT and --heading DEG (or --geo FILE)",
-                                               a.format));
+  for (const auto f : r.formats) {
+    if (io::needs_geo_reference(f) && !r.geo) {
+      throw ParameterError("origin", fmt::format("the {} format needs a geo-reference: give "
+                                                 "--origin LAT,LON,ALT and --heading DEG (or --geo "
+                                                 "FILE)",
+                                                 io::to_string(f)));
+    }
   }
   r.option = name;
   r.geo_file = a.geo_file;
@@ -135,20 +212,66 @@ void declare_export_dir(io::OutputSet& outputs, const ExportRequest& request) {
   outputs.add_output_dir(request.dir, request.option, !request.force);
 }
 
+namespace {
+std::vector<std::string> declared_names(const ExportRequest& request, int uavs) {
+  std::vector<std::string> names;
+  for (const auto f : request.formats) {
+    for (auto& n : io::export_file_names(f, uavs, request.geo.has_value())) {
+      names.push_back(std::move(n));
+    }
+  }
+  return names;
+}
+}  // namespace
+
 void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, int uavs) {
-  for (const auto& name : io::export_file_names(request.format, uavs, request.geo.has_value())) {
+  for (const auto& name : declared_names(request, uavs)) {
     outputs.add_output(request.dir / name, request.option);
   }
 }
 
-std::vector<std::string> write_export(const nlohmann::json& trace, const ExportRequest& request,
-                                      io::OutputSet& outputs) {
-  std::vector<std::string> names;
-  for (const auto& f : io::export_files(io::export_plan(trace), request.format, request.geo)) {
-    outputs.write(request.dir / f.name, f.content);
-    names.push_back(f.name);
+ExportWritten write_export(const nlohmann::json& trace, const ExportRequest& request,
+                           io::OutputSet& outputs) {
+  const auto plan = io::export_plan(trace);
+  const auto declared = declared_names(request, static_cast<int>(plan.uavs.size()));
+  ExportWritten written;
+  std::vector<io::ExportFile> files;
+  std::vector<std::string> dropped;
+  for (const auto f : request.formats) {
+    for (auto& file : io::export_files(plan, f, request.geo, request.settings)) {
+      files.push_back(std::move(file));
+    }
+    if (!plan.no_fly.empty() && io::drops_no_fly(f)) dropped.emplace_back(io::to_string(f));
   }
-  return names;
+  if (!dropped.empty()) {
+    written.notes.push_back(fmt::format(
+        "the no-fly positions are not in the {} files: {} no vertical obstacle, and a horizontal "
+        "fence would also forbid the legal flight past them (the kml preview draws them)",
+        fmt::join(dropped, ", "), dropped.size() == 1 ? "the format has" : "these formats have"));
+  }
+  // Part files of split sorties are known only now: declare and check them before writing.
+  bool added = false;
+  for (const auto& f : files) {
+    if (std::find(declared.begin(), declared.end(), f.name) == declared.end()) {
+      outputs.add_output(request.dir / f.name, request.option);
+      added = true;
+    }
+  }
+  if (added) outputs.check();
+  for (const auto& f : files) {
+    outputs.write(request.dir / f.name, f.content);
+    written.names.push_back(f.name);
+  }
+  return written;
+}
+
+std::string format_list(const ExportRequest& request) {
+  std::vector<std::string> names;
+  for (const auto f : request.formats) names.emplace_back(io::to_string(f));
+  if (names.size() == 1) return names.front();
+  const std::string last = names.back();
+  names.pop_back();
+  return fmt::format("{} and {}", fmt::join(names, ", "), last);
 }
 
 }  // namespace hullinspect::cli

@@ -21,21 +21,29 @@ inline constexpr io::ExportFormat kDefaultExportFormat = io::ExportFormat::kCsv;
 
 struct ExportArgs {
   std::string dir;
-  std::string format{io::to_string(kDefaultExportFormat)};
+  std::vector<std::string> formats;  ///< empty: kDefaultExportFormat
   std::string origin;
   std::optional<double> heading;
   std::string geo_file;
+  std::vector<std::string> launch;  ///< X,Y grid positions
+  std::optional<int> max_waypoints;
+  std::optional<double> simplify;  ///< metres
+  std::string firmware = "px4";
+  std::string finish = "land";
+  std::string drone = "m350";
   bool force = false;
 };
 
-/// Adds --format, --origin, --heading, --geo, --force and the directory option `dir_option`
-/// ("--out" for `export`, "--export" for run and plan).
+/// Adds --format (repeatable, or all), --origin, --heading, --geo, --launch, --max-waypoints,
+/// --firmware, --finish, --drone, --force and the directory option `dir_option` ("--out" for `export`,
+/// "--export" for run and plan).
 void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_option);
 
 /// A checked export request.
 struct ExportRequest {
   std::filesystem::path dir;
-  io::ExportFormat format = kDefaultExportFormat;
+  std::vector<io::ExportFormat> formats{kDefaultExportFormat};
+  io::ExportSettings settings;
   std::optional<io::GeoReference> geo;
   std::string option;    ///< the directory option without dashes ("out", "export"), for messages
   std::string geo_file;  ///< --geo FILE, an input of the command; empty without one
@@ -55,9 +63,19 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& args, const std::s
 void declare_export_dir(io::OutputSet& outputs, const ExportRequest& request);
 void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, int uavs);
 
-/// Writes the export of `trace` into the declared outputs (committed by the command). Returns the
-/// file names.
-std::vector<std::string> write_export(const nlohmann::json& trace, const ExportRequest& request,
-                                      io::OutputSet& outputs);
+/// What write_export wrote: the file names, and what a format could not carry (one sentence
+/// each, for the command to print).
+struct ExportWritten {
+  std::vector<std::string> names;
+  std::vector<std::string> notes;
+};
+
+/// Writes the export of `trace` into the declared outputs (committed by the command); a sortie
+/// split into parts declares its part files here.
+ExportWritten write_export(const nlohmann::json& trace, const ExportRequest& request,
+                           io::OutputSet& outputs);
+
+/// "csv", "qgc and wpl": the formats of a request, for the commands' summary lines.
+std::string format_list(const ExportRequest& request);
 
 }  // namespace hullinspect::cli

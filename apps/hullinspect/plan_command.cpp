@@ -1,17 +1,24 @@
 // hullinspect plan: the mission as planned before take-off. The planner flies a world whose truth
 // is the prior (the only corrosion known before take-off), so the result is the plan it would fly
-// if the prior were right, with its expected T_c and T_m (docs/export.md).
+// if the prior were right, with its expected T_c and T_m (docs/export.md). The prior is the
+// user's --prior; without one it is empty (pure coverage) unless a synthetic scenario is asked
+// for by name (--scenario or its parameters).
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 
 #include "commands.hpp"
 #include "export_options.hpp"
+#include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/output_set.hpp"
+#include "hullinspect/io/preflight_report.hpp"
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
@@ -26,7 +33,20 @@ struct PlanArgs {
   bool json = false;
   std::string trace_path;
   ExportArgs output;
+  std::string report_dir;  // --report DIR: the pre-flight report of the export
+  bool synthetic = false;  // --scenario or a scenario parameter was given
 };
+
+// The options that ask for a synthetic corrosion scenario.
+constexpr std::array<const char*, 7> kScenarioOptions = {
+    "--scenario", "--p-c", "--p-tp", "--p-fp", "--front-p-c", "--l-c", "--front-l-c"};
+
+// What the prior of the plan is, for its summary line.
+std::string prior_source(const PlanArgs& args) {
+  if (!args.mission.prior.empty()) return "the prior " + args.mission.prior;
+  if (args.synthetic) return "a synthetic prior (scenario " + args.mission.scenario + ")";
+  return "an empty prior (pure coverage: no corrosion expected)";
+}
 
 int plan(const PlanArgs& args) {
   io::OutputSet outputs;
@@ -34,6 +54,15 @@ int plan(const PlanArgs& args) {
   outputs.add_output(args.trace_path, "trace");
   const auto export_request = resolve_export(args.output, "--export");
   if (export_request) declare_export_dir(outputs, *export_request);
+  const std::filesystem::path report_dir = args.report_dir;
+  if (!args.report_dir.empty()) {
+    if (!export_request)
+      throw ParameterError("report", "needs --export DIR (it reports the export)");
+    outputs.add_output_dir(report_dir, "report");
+    for (const char* name : {"preflight.md", "preflight.json", "preflight.svg"}) {
+      outputs.add_output(report_dir / name, "report");
+    }
+  }
   outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
@@ -44,7 +73,17 @@ int plan(const PlanArgs& args) {
   }
   auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
   world::apply(spec.maps, instance);  // the user's --prior, if given
-  instance.truth = instance.prior;    // the world as known before take-off
+  if (args.mission.prior.empty() && !args.synthetic) {
+    // No corrosion is known before take-off: clean hull cells, never a random map.
+    for (int y = 0; y < instance.prior.height(); ++y) {
+      for (int x = 0; x < instance.prior.width(); ++x) {
+        if (instance.prior(x, y) > 0) instance.prior(x, y) = 0;
+      }
+    }
+    instance.prior_true_positive_centres = 0;
+    instance.prior_false_positive_centres = 0;
+  }
+  instance.truth = instance.prior;  // the world as known before take-off
   auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   io::TraceRecorder recorder(instance, io::spec_json(spec, hull.source()));
   planners::MissionOptions options;
@@ -54,12 +93,22 @@ int plan(const PlanArgs& args) {
       planners::run_mission(hull, instance, spec.params, *planner, options);
   const auto trace = recorder.finish(result);
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
-  std::vector<std::string> written;
+  ExportWritten written;
   if (export_request) written = write_export(trace, *export_request, outputs);
+  if (!args.report_dir.empty()) {
+    const auto plan_data = io::export_plan(trace);
+    const auto report = io::preflight_report(trace, plan_data, export_request->formats,
+                                             export_request->settings, export_request->geo);
+    outputs.write(report_dir / "preflight.json", report.dump(1) + "\n");
+    outputs.write(report_dir / "preflight.md", io::preflight_markdown(report));
+    outputs.write(report_dir / "preflight.svg",
+                  io::preflight_svg(trace, plan_data, export_request->settings));
+  }
   outputs.commit();
   if (args.json) {
     auto j = io::result_json(spec, result);
     j["planned_on"] = "prior";
+    j["prior"] = !args.mission.prior.empty() ? "file" : args.synthetic ? "synthetic" : "empty";
     std::cout << j.dump() << "\n";
     return result.complete ? 0 : 3;
   }
@@ -67,9 +116,9 @@ int plan(const PlanArgs& args) {
     return t ? fmt::format("{} s", *t) : std::string("—");
   };
   const auto total = result.totals();
-  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: planned on the prior{}\n",
+  std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: planned on {}{}\n",
                            spec.algorithm, plural(spec.params.uavs, "UAV"), spec.params.s1,
-                           spec.params.s2, spec.seed,
+                           spec.params.s2, spec.seed, prior_source(args),
                            result.complete ? "" : " — INCOMPLETE (time limit reached)");
   std::cout << fmt::format(
       "  expected T_c = {}   T_m = {}   ({} prior-corroded of {} hull cells)\n", time(result.t_c),
@@ -77,8 +126,13 @@ int plan(const PlanArgs& args) {
   std::cout << fmt::format("  moves {}, plane changes {}, hovers {}\n", total.moves,
                            total.plane_changes, total.hovers);
   if (export_request) {
-    std::cout << fmt::format("  wrote {} {} file{} to {}\n", written.size(), args.output.format,
-                             written.size() == 1 ? "" : "s", export_request->dir.string());
+    std::cout << fmt::format("  wrote {} {} file{} to {}\n", written.names.size(),
+                             format_list(*export_request), written.names.size() == 1 ? "" : "s",
+                             export_request->dir.string());
+    for (const auto& note : written.notes) std::cout << "  note: " << note << "\n";
+  }
+  if (!args.report_dir.empty()) {
+    std::cout << fmt::format("  wrote the pre-flight report to {}\n", args.report_dir);
   }
   return result.complete ? 0 : 3;
 }
@@ -100,7 +154,15 @@ void add_plan_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--trace", args->trace_path, "Write the planned mission's trace (JSON) to FILE")
       ->type_name("FILE");
   add_export_options(*cmd, args->output, "--export");
-  cmd->callback([args, &action] { action = [args] { return plan(*args); }; });
+  cmd->add_option("--report", args->report_dir,
+                  "Write the export's pre-flight report into DIR: preflight.md, .json and .svg "
+                  "(sorties, waypoints, flight times, unreachable and unseen cells, warnings)")
+      ->type_name("DIR");
+  cmd->callback([args, cmd, &action] {
+    args->synthetic = std::any_of(kScenarioOptions.begin(), kScenarioOptions.end(),
+                                  [cmd](const char* o) { return cmd->count(o) > 0; });
+    action = [args] { return plan(*args); };
+  });
 }
 
 }  // namespace hullinspect::cli

@@ -125,6 +125,31 @@ void draw_figures(const ReportArgs& a, const fs::path& staging) {
   }
 }
 
+/// The caption of a figure drawn by plot_report.py (the figures carry no titles), from its name.
+std::string figure_caption(const std::string& name, std::size_t instances) {
+  const std::string over = plural(static_cast<long long>(instances), "instance");
+  const auto after = [&](std::string_view prefix) { return name.substr(prefix.size()); };
+  if (name.starts_with("fig6_")) {
+    return fmt::format(
+        "Scenario {}: inspection time T_c (top) and mission time T_m (bottom), mean over {} with "
+        "its 95 % bootstrap interval, by fleet size n, one column per s2; \"k inc.\" counts "
+        "missions stopped by the time limit.",
+        after("fig6_"), over);
+  }
+  if (name.starts_with("fig7_")) {
+    const std::string rest = after("fig7_");
+    const auto n = rest.rfind("_n");
+    return fmt::format(
+        "Scenario {}, n = {}: mean c(t) (top) and m(t) (bottom) over {} with a ±1 standard "
+        "deviation band, one column per s2.",
+        rest.substr(0, n), n == std::string::npos ? "?" : rest.substr(n + 2), over);
+  }
+  return fmt::format(
+      "{}: mean c(t) over {} under each single-parameter sweep (line style = swept value) and in "
+      "each plain scenario, colour = algorithm, one time axis for all panels.",
+      name, over);
+}
+
 std::string report_markdown(const ReportInput& in, const ReportArgs& a, const std::string& tables,
                             const std::string& paired, const std::vector<std::string>& figures) {
   const auto& m = in.manifest;
@@ -173,7 +198,7 @@ std::string report_markdown(const ReportInput& in, const ReportArgs& a, const st
         "## Figures\n\n{}, as {}. Redraw them with `/usr/bin/python3 plot_report.py`.\n\n", list,
         joined(a.formats));
     for (const auto& f : figures) {
-      md += fmt::format("### {}\n\n", f);
+      md += fmt::format("### {}\n\n{}\n\n", f, figure_caption(f, config.at("seeds").size()));
       if (first == "pdf") {
         md += fmt::format("[{}](figures/{}.pdf)\n\n", f, f);
       } else {

@@ -10,6 +10,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
+#include "hullinspect/experiment/paired.hpp"
 
 namespace hullinspect::experiment {
 
@@ -27,6 +28,10 @@ TimeStats stats(const std::vector<double>& v) {
     for (double x : v) sq += (x - s.mean) * (x - s.mean);
     s.std = std::sqrt(sq / static_cast<double>(v.size() - 1));
   }
+  const PairedOptions report;  // the report's bootstrap: its resamples and seed
+  const BootstrapMean interval = bootstrap_mean(v, report.resamples, report.seed);
+  s.ci_low = interval.low;
+  s.ci_high = interval.high;
   return s;
 }
 
@@ -132,21 +137,37 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
 }
 
 std::string summary_csv(const std::vector<SummaryRow>& rows) {
-  std::string out = csv_line({"scenario", "sweep", "sweep_value", "s2", "uavs", "algorithm", "runs",
-                              "incomplete", "T_c_count", "T_c_mean", "T_c_std", "T_m_count",
-                              "T_m_mean", "T_m_std", "bound_T_c_mean", "bound_T_m_mean"}) +
-                    "\n";
+  std::string out =
+      csv_line({"scenario",       "sweep",      "sweep_value", "s2",         "uavs",
+                "algorithm",      "runs",       "incomplete",  "T_c_count",  "T_c_mean",
+                "T_c_std",        "T_m_count",  "T_m_mean",    "T_m_std",    "bound_T_c_mean",
+                "bound_T_m_mean", "T_c_ci_low", "T_c_ci_high", "T_m_ci_low", "T_m_ci_high"}) +
+      "\n";
   auto number = [](const TimeStats& t, double v) {
     return t.count == 0 ? std::string() : fmt::format("{:.3f}", v);
   };
   for (const auto& r : rows) {
-    out +=
-        csv_line({r.scenario, r.sweep, r.sweep_value, std::to_string(r.s2), std::to_string(r.uavs),
-                  r.algorithm, std::to_string(r.runs), std::to_string(r.incomplete),
-                  std::to_string(r.t_c.count), number(r.t_c, r.t_c.mean), number(r.t_c, r.t_c.std),
-                  std::to_string(r.t_m.count), number(r.t_m, r.t_m.mean), number(r.t_m, r.t_m.std),
-                  number(r.bound_t_c, r.bound_t_c.mean), number(r.bound_t_m, r.bound_t_m.mean)}) +
-        "\n";
+    out += csv_line({r.scenario,
+                     r.sweep,
+                     r.sweep_value,
+                     std::to_string(r.s2),
+                     std::to_string(r.uavs),
+                     r.algorithm,
+                     std::to_string(r.runs),
+                     std::to_string(r.incomplete),
+                     std::to_string(r.t_c.count),
+                     number(r.t_c, r.t_c.mean),
+                     number(r.t_c, r.t_c.std),
+                     std::to_string(r.t_m.count),
+                     number(r.t_m, r.t_m.mean),
+                     number(r.t_m, r.t_m.std),
+                     number(r.bound_t_c, r.bound_t_c.mean),
+                     number(r.bound_t_m, r.bound_t_m.mean),
+                     number(r.t_c, r.t_c.ci_low),
+                     number(r.t_c, r.t_c.ci_high),
+                     number(r.t_m, r.t_m.ci_low),
+                     number(r.t_m, r.t_m.ci_high)}) +
+           "\n";
   }
   return out;
 }

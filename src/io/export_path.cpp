@@ -16,13 +16,14 @@ std::string stamp(int seconds) {
 }
 }  // namespace
 
-std::string write_path_yaml(const ExportPlan& plan, const UavWaypoints& uav) {
+std::string write_path_yaml(const ExportPlan& plan, const MissionPart& part) {
   (void)plan;
   std::string out = fmt::format(
-      "# nav_msgs/Path of UAV {}: stamps are seconds since take-off; frame hull = ship frame\n"
+      "# nav_msgs/Path of UAV {}: stamps are seconds since {}; frame hull = ship frame\n"
       "header:\n  stamp: {}\n  frame_id: hull\nposes:\n",
-      uav.uav, stamp(0));
-  for (const auto& w : uav.waypoints) {
+      part.sortie->uav,
+      part.sortie->given_site ? "the plan's start (negative before it)" : "take-off", stamp(0));
+  for (const auto& w : part.waypoints) {
     const auto& p = w.pose;
     out += fmt::format(
         "  - header: {{stamp: {}, frame_id: hull}}  # {} plane {}\n"

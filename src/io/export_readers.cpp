@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "hullinspect/core/errors.hpp"
@@ -12,6 +14,8 @@
 namespace hullinspect::io {
 
 namespace {
+
+constexpr int kNavWaypoint = 16;  // MAV_CMD_NAV_WAYPOINT
 
 std::vector<std::string_view> split(std::string_view line, char sep) {
   std::vector<std::string_view> out;
@@ -114,22 +118,41 @@ ReadPlan read_qgc_plan(std::string_view text, const std::string& source) {
   plan.cruise_speed = speed.get<double>();
   const auto& items = need(mission, "items", "mission.");
   if (!items.is_array()) throw InputError(source, 0, "mission.items: expected an array");
+  if (auto f = mission.find("firmwareType"); f != mission.end() && f->is_number_integer()) {
+    plan.firmware = f->get<int>();
+  }
   for (std::size_t i = 0; i < items.size(); ++i) {
     const auto where = fmt::format("mission.items[{}].", i);
     const auto& params = need(items[i], "params", where);
-    if (need(items[i], "command", where) != 16) {
-      throw InputError(source, 0, where + "command: expected 16 (NAV_WAYPOINT)");
+    const auto& command = need(items[i], "command", where);
+    if (!command.is_number_integer()) {
+      throw InputError(source, 0, where + "command: expected a MAVLink command number");
     }
     if (!params.is_array() || params.size() != 7) {
       throw InputError(source, 0, where + "params: expected 7 numbers");
     }
-    for (const auto& p : params) {
-      if (!p.is_number()) throw InputError(source, 0, where + "params: expected 7 numbers");
+    ReadItem item;
+    item.command = command.get<int>();
+    if (auto f = items[i].find("frame"); f != items[i].end() && f->is_number_integer()) {
+      item.frame = f->get<int>();
     }
+    for (std::size_t j = 0; j < 7; ++j) {
+      const auto& p = params[j];
+      // QGroundControl writes an unset parameter (NaN) as null.
+      if (p.is_null()) {
+        item.params[j] = std::numeric_limits<double>::quiet_NaN();
+      } else if (p.is_number()) {
+        item.params[j] = p.get<double>();
+      } else {
+        throw InputError(source, 0, where + "params: expected 7 numbers");
+      }
+    }
+    plan.items.push_back(item);
+    if (item.command != kNavWaypoint) continue;
     ReadWaypoint w;
-    w.hold_s = params[0].get<double>();
-    w.yaw_deg = params[3].get<double>();
-    w.geo = {params[4].get<double>(), params[5].get<double>(), params[6].get<double>()};
+    w.hold_s = item.params[0];
+    w.yaw_deg = item.params[3];
+    w.geo = {item.params[4], item.params[5], item.params[6]};
     plan.waypoints.push_back(w);
   }
   return plan;
@@ -148,8 +171,12 @@ ReadPlan read_wpl(std::string_view text, const std::string& source) {
       throw InputError(source, line,
                        fmt::format("expected 12 tab-separated fields, got {}", f.size()));
     double v[12];
-    for (std::size_t j = 0; j < 12; ++j)
-      v[j] = number(f[j], source, line, fmt::format("field {}", j + 1));
+    for (std::size_t j = 0; j < 12; ++j) {
+      // An unset parameter (P1–P4) is written nan.
+      v[j] = j >= 4 && j < 8 && f[j] == "nan"
+                 ? std::numeric_limits<double>::quiet_NaN()
+                 : number(f[j], source, line, fmt::format("field {}", j + 1));
+    }
     if (v[0] != static_cast<double>(i - 1)) {
       throw InputError(source, line,
                        fmt::format("index {} is out of sequence (expected {})", f[0], i - 1));
@@ -158,6 +185,12 @@ ReadPlan read_wpl(std::string_view text, const std::string& source) {
       plan.home = {v[8], v[9], v[10]};
       continue;
     }
+    ReadItem item;
+    item.command = static_cast<int>(std::clamp(v[3], -1e9, 1e9));
+    item.frame = static_cast<int>(std::clamp(v[2], -1e9, 1e9));
+    std::copy(v + 4, v + 11, item.params.begin());
+    plan.items.push_back(item);
+    if (item.command != kNavWaypoint) continue;
     ReadWaypoint w;
     w.hold_s = v[4];
     w.yaw_deg = v[7];

@@ -5,7 +5,8 @@
 namespace hullinspect::io {
 
 namespace {
-constexpr std::array<std::string_view, 4> kActionNames = {"start", "move", "plane-change", "hold"};
+constexpr std::array<std::string_view, 5> kActionNames = {"start", "move", "plane-change", "hold",
+                                                          "transit"};
 }  // namespace
 
 std::string_view to_string(WaypointAction action) {

@@ -1,6 +1,6 @@
 #include "hullinspect/planners/mission.hpp"
 
-#include <chrono>
+#include <ctime>
 
 #include "hullinspect/partition/fallback.hpp"
 #include "hullinspect/sim/lower_bound.hpp"
@@ -8,9 +8,18 @@
 namespace hullinspect::planners {
 
 namespace {
-using Clock = std::chrono::steady_clock;
+/// CPU time of the calling thread (MissionResult::planner_seconds is the planner's CPU time: on a
+/// shared machine wall time measures the other jobs as well).
+struct Clock {
+  using time_point = double;
+  static double now() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+  }
+};
 double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
+  return Clock::now() - t0;
 }
 }  // namespace
 

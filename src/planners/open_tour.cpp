@@ -124,10 +124,7 @@ bool or_opt_pass(const Nodes& node, const OpenTourCost& cost) {
   return improved;
 }
 
-}  // namespace
-
-void plan_open_tour(grid::Cell from, std::span<grid::Cell> points, const OpenTourCost& cost) {
-  nearest_neighbour(from, points, cost);
+void improve_passes(grid::Cell from, std::span<grid::Cell> points, const OpenTourCost& cost) {
   const Nodes node{from, points};
   // Each pass that changes the tour shortens it by at least 1; the cap only bounds the time on
   // pathological inputs.
@@ -136,6 +133,22 @@ void plan_open_tour(grid::Cell from, std::span<grid::Cell> points, const OpenTou
     const bool two = two_opt_pass(node, cost);
     const bool or_ = or_opt_pass(node, cost);
     if (!two && !or_) break;
+  }
+}
+
+}  // namespace
+
+void plan_open_tour_exhaustive(grid::Cell from, std::span<grid::Cell> points,
+                               const OpenTourCost& cost) {
+  nearest_neighbour(from, points, cost);
+  improve_passes(from, points, cost);
+}
+
+void plan_open_tour(grid::Cell from, std::span<grid::Cell> points, const OpenTourCost& cost) {
+  if (points.size() <= kExhaustiveTourPoints) {
+    plan_open_tour_exhaustive(from, points, cost);
+  } else {
+    plan_open_tour_neighbours(from, points, cost);
   }
 }
 

@@ -174,8 +174,8 @@ Params<SweepInspectOptions> sweep_inspect_params() {
             "the z = 2 footprint has seen the rows beyond it (false: within s1/2 ahead)")
       .flag("plan-prior-tour", &SweepInspectOptions::plan_prior_tour,
             "visit the prior's cells in the order of a planned tour (nearest neighbour, 2-opt, "
-            "Or-opt), planned again when its next cell was seen (false: the nearest cell at "
-            "every step)")
+            "Or-opt), planned again when its next cell was seen while it has at most 100 cells, "
+            "else kept with the seen cells dropped (false: the nearest cell at every step)")
       .flag("approach-edge", &SweepInspectOptions::approach_edge,
             "fly to the sweep's first band along the region's edge row when that shortens the "
             "whole flight (the bands passed are flown only over the cells not yet seen)")

@@ -31,22 +31,39 @@ bool SweepInspectPlanner::hand_over_prior(const sim::PlannerView& view) {
           best = static_cast<int>(k);
         }
       }
-      if (best >= 0) prior_[static_cast<std::size_t>(best)].push_back(i);
+      if (best < 0) continue;
+      prior_[static_cast<std::size_t>(best)].push_back(i);
+      forget_tour(best);
     }
     prior_[j].clear();
   }
   return handed;
 }
 
-int SweepInspectPlanner::first_of_planned_tour(grid::Cell from, std::span<const int> cells) {
+int SweepInspectPlanner::next_of_tour(int k, grid::Cell from, std::span<const int> cells,
+                                      const sim::PlannerView& view) {
+  Uav& p = uavs_[static_cast<std::size_t>(k)];
+  if (cells.size() > kReplannedTourCells) {
+    // A long tour is repaired when its cells are seen, not planned again: they leave it (a prior
+    // cell leaves `cells` exactly when it is no longer a detection to inspect) and the rest keep
+    // their order. Planning it anew each time the cell flown to was seen made the planning time
+    // grow with the cube of the hull.
+    while (p.tour_next < p.tour.size() && view.map[p.tour[p.tour_next]] != sim::kCorrosionSeen)
+      ++p.tour_next;
+    if (p.tour_next < p.tour.size()) return p.tour[p.tour_next];
+  }
   tour_points_.clear();
+  // A short tour (or one forgotten) is planned anew from here: the rest may be ordered better
+  // from where it is.
   for (const int i : cells) tour_points_.push_back(hull_cell(i));
   // The tour's end is free: pulling it towards the nearer end of the sweep after it (half the
   // flight there added to its cost) lowered T_m by 1.2 s and raised T_c by 0.9 s on the tuning
   // seeds.
   plan_open_tour(from, tour_points_, {.reach = h1_});
-  const grid::Cell first = tour_points_.front();
-  return first.y * width_ + first.x;
+  p.tour.clear();
+  for (const grid::Cell c : tour_points_) p.tour.push_back(c.y * width_ + c.x);
+  p.tour_next = 0;
+  return p.tour.front();
 }
 
 int SweepInspectPlanner::tour_steps(grid::Cell from, std::span<const int> cells) {
@@ -153,6 +170,8 @@ bool SweepInspectPlanner::take_prior_share(int k, grid::Cell pos) {
   if (t == 0 || later + (2 * h2_ + 1) > giver_steps) return false;
   prior_[ku].assign(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(t));
   cells.erase(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(t));
+  forget_tour(k);
+  forget_tour(giver);
   return true;
 }
 
@@ -187,6 +206,8 @@ void SweepInspectPlanner::balance_prior_tours(std::span<const grid::Cell> starts
       if (later >= now) continue;
       cells_a.assign(split_cells_.begin(), split_cells_.begin() + static_cast<std::ptrdiff_t>(t));
       cells_b.assign(split_cells_.begin() + static_cast<std::ptrdiff_t>(t), split_cells_.end());
+      forget_tour(a);
+      forget_tour(b);
     }
   }
 }
@@ -218,11 +239,13 @@ std::optional<sim::Action> SweepInspectPlanner::prior_tour_step(int k, const sim
   } else {
     if (u.z == 2) return sim::Action::kChangePlane;
     if (options_.plan_prior_tour) {
-      // Plan anew when the cell it flew to was seen (on the way, or by another UAV) or went to
-      // another UAV (share-prior): the rest of the tour may be ordered better from here.
-      if (p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen ||
-          std::find(cells.begin(), cells.end(), p.target_cell) == cells.end())
-        p.target_cell = first_of_planned_tour(u.pos, cells);
+      // On when the cell it flew to was seen (on the way, or by another UAV) or went to another
+      // UAV (share-prior); a long tour also when its cells were re-assigned (forget_tour).
+      const bool seen = p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen;
+      const bool mine = cells.size() > kReplannedTourCells
+                            ? p.tour_next < p.tour.size() && p.tour[p.tour_next] == p.target_cell
+                            : std::find(cells.begin(), cells.end(), p.target_cell) != cells.end();
+      if (seen || !mine) p.target_cell = next_of_tour(k, u.pos, cells, view);
       p.target = reach_position(k, u.pos, view.map.cell(p.target_cell), h1_);
       return step(k, u.pos, p.target);
     }

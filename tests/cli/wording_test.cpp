@@ -14,7 +14,8 @@ TEST(Wording, OneUavIsSingular) {
   const auto plan = run_cli({"plan", "--uavs", "1", "--seed", "1"});
   ASSERT_EQ(plan.status, 0) << plan.err;
   EXPECT_EQ(plan.out.substr(0, plan.out.find('\n')),
-            "lawnmower with 1 UAV, s1 = 5, s2 = 7, seed 1: planned on the prior");
+            "lawnmower with 1 UAV, s1 = 5, s2 = 7, seed 1: planned on an empty prior (pure "
+            "coverage: no corrosion expected)");
   const auto starts = run_cli({"run", "--uavs", "1", "--start", "1,1", "--start", "2,2"});
   EXPECT_EQ(starts.status, 2);
   EXPECT_EQ(starts.err, "hullinspect: --start: gives 2 start cells for 1 UAV\n");

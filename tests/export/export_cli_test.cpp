@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+#include <sstream>
 
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/io/geo_reference.hpp"
@@ -54,8 +56,24 @@ TEST_P(ExportBadInput, OneLineExitTwoNothingWritten) {
 INSTANTIATE_TEST_SUITE_P(
     Table, ExportBadInput,
     ::testing::Values(
-        BadExport{{"--format", "kml"},
-                  "hullinspect: --format: 'kml' is not a format (expected csv, qgc, wpl or path)"},
+        BadExport{{"--format", "kmz"},
+                  "hullinspect: --format: 'kmz' is not a format (expected csv, qgc, wpl, path, "
+                  "litchi, dji-kmz, kml or all)"},
+        BadExport{{"--format", "csv", "--format", "litchi"},
+                  "hullinspect: --origin: the litchi format needs a geo-reference: give --origin "
+                  "LAT,LON,ALT and --heading DEG (or --geo FILE)"},
+        BadExport{{"--max-waypoints", "1"},
+                  "hullinspect: --max-waypoints: 1 is below the 2 waypoints a mission file needs "
+                  "(the point it starts from and one to fly to)"},
+        BadExport{{"--launch", "3"},
+                  "hullinspect: --launch: expects X,Y, a grid position in cells (got '3')"},
+        BadExport{{"--launch", "500,0"},
+                  "hullinspect: --launch: 500,0 is outside the 230 × 30 grid"},
+        BadExport{{"--launch", "100,15"},
+                  "hullinspect: --launch: 100,15 is a hull cell inside the grid; expected a "
+                  "non-hull cell or a cell on the grid's edge"},
+        BadExport{{"--firmware", "apm"},
+                  "hullinspect: --firmware: 'apm' is not a firmware (expected px4 or ardupilot)"},
         BadExport{{"--format", "qgc"},
                   "hullinspect: --origin: the qgc format needs a geo-reference: give --origin "
                   "LAT,LON,ALT and --heading DEG (or --geo FILE)"},
@@ -168,7 +186,7 @@ TEST_F(ExportCli, RejectsATraceThatCannotBePlacedInMetres) {
   EXPECT_FALSE(fs::exists(dir_ + "/never"));
 }
 
-TEST_F(ExportCli, NoFlyPositionsBecomeGeofenceExclusionPolygons) {
+TEST_F(ExportCli, NoFlyPositionsAreNeverAFenceAndTheKmlDrawsThemAsBoxes) {
   auto trace = io::read_trace(trace_);
   const int width = trace["grid"]["width"].get<int>();
   std::vector<std::string> rows(trace["grid"]["height"].get<std::size_t>(),
@@ -178,31 +196,50 @@ TEST_F(ExportCli, NoFlyPositionsBecomeGeofenceExclusionPolygons) {
   trace["no_fly"] = rows;
   const std::string path = dir_ + "/nofly.json";
   io::write_file_atomic(path, trace.dump());
-  const auto r = run_cli({"export", path, "--format", "qgc", "--origin", "10,20,0", "--heading",
-                          "30", "--out", dir_ + "/fence"});
+  const auto r = run_cli({"export", path, "--format", "qgc", "--format", "kml", "--origin",
+                          "10,20,0", "--heading", "30", "--out", dir_ + "/fence"});
   ASSERT_EQ(r.status, 0) << r.err;
+  // A horizontal fence polygon would also forbid the flight above and below the obstacle: none,
+  // and the command says so.
   const auto plan = nlohmann::json::parse(io::read_file(dir_ + "/fence/uav0.plan"));
-  const auto& polygons = plan["geoFence"]["polygons"];
-  ASSERT_EQ(polygons.size(), 2u);
-  // Back in the ship frame: the cell's extent along the hull, the band from half a cell inside
-  // the close-up plane to half a cell beyond the detection plane (starboard: y < 0).
+  EXPECT_TRUE(plan["geoFence"]["polygons"].empty());
+  EXPECT_NE(r.out.find("note: the no-fly positions are not in the qgc files"), std::string::npos)
+      << r.out;
+  // The KML preview draws each as a box: back in the ship frame, the cell's extent along the hull
+  // and in height, the band from half a cell inside the close-up plane to half a cell beyond the
+  // detection plane (starboard: y < 0).
+  pugi::xml_document kml;
+  ASSERT_TRUE(kml.load_file((dir_ + "/fence/mission.kml").c_str()));
   const io::GeoReference geo({10, 20, 0}, 30);
   const std::vector<std::pair<int, int>> cells = {{10, 4}, {200, 7}};
-  for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(polygons[i]["inclusion"], false);
-    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-    for (const auto& corner : polygons[i]["polygon"]) {
-      double x = 0, y = 0, z = 0;
-      geo.from_wgs84({corner[0].get<double>(), corner[1].get<double>(), 0}, x, y, z);
-      xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y),
-      ymax = std::max(ymax, y);
+  std::size_t i = 0;
+  for (const auto folder : kml.child("kml").child("Document").children("Folder")) {
+    if (std::string(folder.child_value("name")) != "No-fly zones") continue;
+    for (const auto box : folder.children("Placemark")) {
+      ASSERT_LT(i, cells.size());
+      double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+      for (const auto face : box.child("MultiGeometry").children("Polygon")) {
+        std::istringstream corners(
+            face.child("outerBoundaryIs").child("LinearRing").child_value("coordinates"));
+        for (std::string corner; corners >> corner;) {
+          double lon = 0, lat = 0, height = 0;
+          char c1 = 0, c2 = 0;
+          std::istringstream(corner) >> lon >> c1 >> lat >> c2 >> height;
+          double x = 0, y = 0, z = 0;
+          geo.from_wgs84({lat, lon, 0}, x, y, z);
+          xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y),
+          ymax = std::max(ymax, y);
+        }
+      }
+      const double x0 = cells[i].first * 0.5;
+      EXPECT_NEAR(xmin, x0, 1e-3);
+      EXPECT_NEAR(xmax, x0 + 0.5, 1e-3);
+      EXPECT_NEAR(ymax, -1.25 + 0.25, 1e-3);
+      EXPECT_NEAR(ymin, -1.75 - 0.25, 1e-3);
+      ++i;
     }
-    const double x0 = cells[i].first * 0.5;
-    EXPECT_NEAR(xmin, x0, 1e-3);
-    EXPECT_NEAR(xmax, x0 + 0.5, 1e-3);
-    EXPECT_NEAR(ymax, -1.25 + 0.25, 1e-3);
-    EXPECT_NEAR(ymin, -1.75 - 0.25, 1e-3);
   }
+  EXPECT_EQ(i, cells.size());
 }
 
 TEST_F(ExportCli, WritesOneFilePerUavAndSaysSo) {
@@ -286,15 +323,16 @@ TEST_F(ExportCli, PlanFliesThePriorAndExportsItsWaypoints) {
   const auto flown = nlohmann::json::parse(run_cli(run_args).out);
   EXPECT_NE(flown["corroded_cells"], planned["corroded_cells"]);
   // With a perfect prior the plan is the flight.
-  const auto perfect_plan =
-      nlohmann::json::parse(run_cli({"plan", "--json", "-n", "2", "--seed", "3"}).out);
+  const auto perfect_plan = nlohmann::json::parse(
+      run_cli({"plan", "--json", "-n", "2", "--seed", "3", "--scenario", "perfect"}).out);
   const auto perfect_run =
       nlohmann::json::parse(run_cli({"run", "--json", "-n", "2", "--seed", "3"}).out);
   EXPECT_EQ(perfect_plan["T_m"], perfect_run["T_m"]);
   EXPECT_EQ(perfect_plan["T_c"], perfect_run["T_c"]);
   // The text summary names the expected times.
-  const auto text = run_cli({"plan", "-n", "2", "--seed", "3"});
-  EXPECT_NE(text.out.find("planned on the prior"), std::string::npos) << text.out;
+  const auto text = run_cli({"plan", "-n", "2", "--seed", "3", "--scenario", "perfect"});
+  EXPECT_NE(text.out.find("planned on a synthetic prior (scenario perfect)"), std::string::npos)
+      << text.out;
   EXPECT_NE(text.out.find("expected T_c = " + std::to_string(perfect_run["T_c"].get<int>()) + " s"),
             std::string::npos)
       << text.out;

@@ -141,9 +141,19 @@ TEST_P(ExportRoundTrip, EveryFormatReproducesTheTrace) {
         const auto text = io::read_file(name);
         const auto plan =
             format == "qgc" ? io::read_qgc_plan(text, name) : io::read_wpl(text, name);
-        EXPECT_NEAR(plan.home.lat, kOrigin.lat, 1e-9);
-        EXPECT_NEAR(plan.home.lon, kOrigin.lon, 1e-9);
-        EXPECT_NEAR(plan.home.alt, kOrigin.alt, 1e-4);
+        // Home is below the UAV's start on plane 2, at the grid's bottom edge (no --launch).
+        const auto start = frame.pose(states[static_cast<std::size_t>(k)][0].pos, 2);
+        const auto home = geo.to_wgs84(start.x, start.y, frame.spec().z0);
+        EXPECT_NEAR(plan.home.lat, home.lat, 1e-9);
+        EXPECT_NEAR(plan.home.lon, home.lon, 1e-9);
+        EXPECT_NEAR(plan.home.alt, home.alt, 1e-4);
+        // A complete mission: take-off at home, the speed, ..., landing at home.
+        ASSERT_GE(plan.items.size(), 4u) << what;
+        EXPECT_EQ(plan.items.front().command, 22) << what;
+        EXPECT_NEAR(plan.items.front().params[4], home.lat, 1e-9) << what;
+        EXPECT_EQ(plan.items[1].command, 178) << what;
+        EXPECT_EQ(plan.items.back().command, 21) << what;
+        EXPECT_NEAR(plan.items.back().params[5], home.lon, 1e-9) << what;
         if (format == "qgc") {
           EXPECT_DOUBLE_EQ(plan.cruise_speed, speed);
         }

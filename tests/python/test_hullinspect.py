@@ -1,6 +1,6 @@
 """The Python module against the CLI: same inputs, same results; errors as ValueError with the
-CLI's message; Python planners registered and run like built-in ones; a live Session fed with
-readings of a known truth replays the simulated mission step for step."""
+CLI's message (naming the Python keyword); Python planners registered and run like built-in ones;
+a live Session fed with readings of a known truth replays the simulated mission step for step."""
 
 import csv
 import json
@@ -12,6 +12,7 @@ import unittest
 import numpy as np
 
 import hullinspect
+from cli_messages import python_message
 
 CLI = os.environ.get("HULLINSPECT_CLI", "hullinspect")
 TIMING_KEYS = {"planner_seconds", "tsp_seconds", "tsp_max_seconds"}
@@ -59,9 +60,9 @@ class RunMission(unittest.TestCase):
         self.check_equal_to_cli(["-a", "part-tsp", "--seed", "3", "--scenario", "imperfect"],
                                 algorithm="part-tsp", seed=3, scenario="imperfect")
 
-    def test_defaults_are_part_tsp_with_four_uavs(self):
-        result = self.check_equal_to_cli(["-a", "part-tsp", "-n", "4", "--s2", "7", "--seed", "1"])
-        self.assertEqual(result.summary["algorithm"], "part-tsp")
+    def test_defaults_are_the_cli_defaults(self):
+        result = self.check_equal_to_cli([])
+        self.assertEqual(result.summary["algorithm"], "lawnmower")
 
     def test_options_and_params_equal_cli(self):
         self.check_equal_to_cli(
@@ -82,8 +83,9 @@ class RunMission(unittest.TestCase):
             with open(path, "w") as f:
                 f.write(("X" * 40 + "\n") * 12)
             args = ["-a", "part-tsp", "-n", "2", "--hull", path, "--seed", "4"]
-            self.check_equal_to_cli(args, uavs=2, hull=path, seed=4)
-            self.check_equal_to_cli(args, uavs=2, hull=hullinspect.Hull.load(path), seed=4)
+            self.check_equal_to_cli(args, algorithm="part-tsp", uavs=2, hull=path, seed=4)
+            self.check_equal_to_cli(args, algorithm="part-tsp", uavs=2,
+                                    hull=hullinspect.Hull.load(path), seed=4)
 
     def test_errors_are_value_errors_with_the_cli_message(self):
         cases = [
@@ -101,14 +103,15 @@ class RunMission(unittest.TestCase):
                 message = cli_error("run", *args)
                 with self.assertRaises(ValueError) as caught:
                     hullinspect.run_mission(**kwargs)
-                self.assertEqual(str(caught.exception), message)
+                self.assertEqual(str(caught.exception), python_message(message))
 
     def test_unknown_algorithm_lists_the_registered_python_planners_too(self):
         message = cli_error("run", "-a", "part_tsp")
         self.assertTrue(message.endswith(")"), message)
         with self.assertRaises(ValueError) as caught:
             hullinspect.run_mission(algorithm="part_tsp")
-        self.assertTrue(str(caught.exception).startswith(message[:-1] + ", test-go-east, "),
+        self.assertTrue(str(caught.exception).startswith(python_message(message)[:-1] +
+                                                         ", test-go-east, "),
                         str(caught.exception))
 
 
@@ -146,7 +149,7 @@ class HullsAndInstances(unittest.TestCase):
         message = cli_error("run", "--p-c", "2")
         with self.assertRaises(ValueError) as caught:
             hullinspect.make_instance(hullinspect.Hull.default(), 5, p_c=2)
-        self.assertEqual(str(caught.exception), message)
+        self.assertEqual(str(caught.exception), python_message(message))
 
     def test_load_hull_file(self):
         with tempfile.TemporaryDirectory() as tmp:
@@ -213,10 +216,12 @@ class Experiments(unittest.TestCase):
         self.assertEqual(set(frame["algorithm"]), {"lawnmower", "part-tsp"})
 
     def test_preset_name(self):
-        message = cli_error("experiment", "--preset", "no-such-preset", "--out", "/tmp/x")
+        with tempfile.TemporaryDirectory() as tmp:
+            message = cli_error("experiment", "--preset", "no-such-preset", "--out",
+                                os.path.join(tmp, "out"))
         with self.assertRaises(ValueError) as caught:
             hullinspect.run_experiment("no-such-preset")
-        self.assertEqual(str(caught.exception), message)
+        self.assertEqual(str(caught.exception), python_message(message, keyword="config"))
 
     def test_jobs_do_not_change_results(self):
         one = hullinspect.run_experiment(SMALL, jobs=1)
@@ -458,7 +463,7 @@ class LiveSession(unittest.TestCase):
         message = cli_error("run", "-a", "part-tsp", "--s2", "4")
         with self.assertRaises(ValueError) as caught:
             hullinspect.Session("part-tsp", s2=4)
-        self.assertEqual(str(caught.exception), message)
+        self.assertEqual(str(caught.exception), python_message(message))
 
 
 if __name__ == "__main__":

@@ -19,8 +19,11 @@ struct Progress {
   double elapsed = 0;    ///< seconds since this invocation started running missions
 };
 
+/// The most worker threads an experiment may ask for.
+inline constexpr int kMaxJobs = 4096;
+
 struct RunnerOptions {
-  int jobs = 0;         ///< worker threads; 0 = every core
+  int jobs = 0;         ///< worker threads (0 = every core), at most kMaxJobs
   bool resume = false;  ///< continue the experiment in a non-empty output directory
   Shard shard;          ///< the part of the runs to do
   /// Called after every finished run (and once before the first), serialised, from a worker

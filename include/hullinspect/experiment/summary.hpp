@@ -10,9 +10,12 @@
 namespace hullinspect::experiment {
 
 struct TimeStats {
-  int count = 0;     ///< missions that reached it
-  double mean = 0;   ///< over those missions, seconds
-  double std = 0;    ///< sample standard deviation (0 with fewer than two)
+  int count = 0;    ///< missions that reached it
+  double mean = 0;  ///< over those missions, seconds
+  double std = 0;   ///< sample standard deviation (0 with fewer than two)
+  /// 95 % percentile-bootstrap interval of the mean, as the paired comparisons compute theirs
+  /// (bootstrap_mean, 2000 resamples, seed 1); the figures' error bars.
+  double ci_low = 0, ci_high = 0;
 };
 
 struct SummaryRow {
@@ -31,7 +34,9 @@ struct SummaryRow {
 std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& source);
 
 /// summary.csv: scenario, sweep, sweep_value, s2, uavs, algorithm, runs, incomplete, T_c_count,
-/// T_c_mean, T_c_std, T_m_count, T_m_mean, T_m_std, bound_T_c_mean, bound_T_m_mean.
+/// T_c_mean, T_c_std, T_m_count, T_m_mean, T_m_std, bound_T_c_mean, bound_T_m_mean, T_c_ci_low,
+/// T_c_ci_high, T_m_ci_low, T_m_ci_high (the interval columns last, so readers of the earlier
+/// columns by position are unaffected).
 std::string summary_csv(const std::vector<SummaryRow>& rows);
 
 /// Markdown: per scenario, a T_c table and a T_m table with one row per (s2, n) and one column per

@@ -1,8 +1,9 @@
 #pragma once
 // Waypoint export of a mission trace (docs/export.md): every UAV's flown trajectory compressed to
 // waypoints (io/waypoints.hpp), placed in the ship frame (io/ship_frame.hpp), optionally
-// geo-referenced (io/geo_reference.hpp) and written as csv, a QGroundControl .plan, a
-// `QGC WPL 110` file or a YAML nav_msgs/Path — one file per UAV.
+// geo-referenced (io/geo_reference.hpp), cut into sorties and mission files (io/sorties.hpp) and
+// written as csv, a QGroundControl .plan, a `QGC WPL 110` file, a YAML nav_msgs/Path, a Litchi
+// CSV mission, a DJI WPML wayline (KMZ) or a Google Earth KML preview.
 
 #include <nlohmann/json.hpp>
 
@@ -12,33 +13,61 @@
 
 #include "hullinspect/io/geo_reference.hpp"
 #include "hullinspect/io/ship_frame.hpp"
+#include "hullinspect/io/sorties.hpp"
 #include "hullinspect/io/waypoints.hpp"
 
 namespace hullinspect::io {
 
-enum class ExportFormat { kCsv, kQgc, kWpl, kPath };
+enum class ExportFormat { kCsv, kQgc, kWpl, kPath, kLitchi, kDjiKmz, kKml };
 
-/// "csv", "qgc", "wpl", "path"; throws ParameterError("format") for anything else.
+/// "csv", "qgc", "wpl", "path", "litchi", "dji-kmz", "kml"; throws ParameterError("format") for
+/// anything else.
 ExportFormat parse_export_format(const std::string& name);
 std::string_view to_string(ExportFormat format);
+/// The formats named by the (repeatable) --format values; "all" names every format. Duplicates
+/// are dropped, the order kept.
+std::vector<ExportFormat> parse_export_formats(const std::vector<std::string>& names);
+/// True for the flight formats that cannot carry no-fly positions truthfully (qgc, wpl, litchi,
+/// dji-kmz: none has a vertical obstacle, and a horizontal fence would also forbid the legal
+/// flight past it); kml draws them, csv and path list positions only.
+bool drops_no_fly(ExportFormat format);
+/// True for the formats that place waypoints on the Earth (they need a geo-reference).
+bool needs_geo_reference(ExportFormat format);
 
-struct ExportWaypoint {
-  GridWaypoint grid;
-  ShipPose pose;
+/// The flight controller a MAVLink mission (qgc, wpl) is written for.
+enum class Firmware { kPx4, kArduPilot };
+/// What a sortie does after its last waypoint: land at its home point, or return-to-launch.
+enum class FinishAction { kLand, kRtl };
+/// DJI aircraft a WPML wayline declares (droneInfo and payloadInfo).
+enum class DjiDrone { kM350, kM300, kM30, kM30T, kM3E };
+
+/// "m350", "m300", "m30", "m30t", "m3e"; throws ParameterError("drone").
+DjiDrone parse_dji_drone(const std::string& name);
+
+/// How the files are cut and what they ask of the vehicle.
+struct ExportSettings {
+  Firmware firmware = Firmware::kPx4;
+  FinishAction finish = FinishAction::kLand;
+  DjiDrone drone = DjiDrone::kM350;
+  std::vector<grid::Cell> launch_sites;  ///< empty: each UAV takes off below its start position
+  int max_waypoints = 0;                 ///< 0: each format's default cap
+  double simplify_m = 0;                 ///< 0: no simplification (io/simplify.hpp)
 };
 
-/// One UAV's waypoints.
-struct UavWaypoints {
-  int uav = 0;
-  std::vector<ExportWaypoint> waypoints;
-};
+/// The default waypoint cap of a format (0 = none): Litchi 99 (its mission limit), DJI 200 (a
+/// conservative limit for the remote controllers).
+int default_waypoint_cap(ExportFormat format);
 
 /// What every format writes: the frame, each UAV's waypoints and the mission's no-fly positions.
 struct ExportPlan {
   ShipFrame frame;
   int plane_change_steps = 1;
-  std::vector<UavWaypoints> uavs;
+  int width = 0;  ///< the grid
+  int height = 0;
+  std::vector<std::vector<ExportWaypoint>> uavs;  ///< per UAV, the trace's waypoints
   std::vector<grid::Cell> no_fly;
+  std::vector<std::string> hull_rows;  ///< the trace's truth rows ('.' = not hull)
+  bool is_hull(grid::Cell c) const;
 };
 
 /// Builds the plan of a validated trace.
@@ -49,15 +78,19 @@ struct ExportFile {
   std::string content;
 };
 
-/// The names of the files export_files writes for `uavs` UAVs, known before any mission runs (so
-/// a command can check its outputs first).
+/// The file of one mission part: `uav<k>.<ext>`, or `uav<k>-part<p>.<ext>` when a sortie was
+/// split. Extensions: csv, plan (qgc), waypoints (wpl), path.yaml, litchi.csv, kmz.
+std::string mission_file_name(ExportFormat format, const MissionPart& part);
+
+/// The names of the files written for `uavs` UAVs when no sortie is split (known before any
+/// mission runs, so a command can check its outputs first).
 std::vector<std::string> export_file_names(ExportFormat format, int uavs, bool geo_referenced);
 
-/// The files of one format: `uav<k>.csv`, `uav<k>.plan` (qgc), `uav<k>.waypoints` (wpl),
-/// `uav<k>.path.yaml` (path; plus `hull_to_map.yaml` when geo-referenced). qgc and wpl need a
-/// geo-reference: without one this throws ParameterError("origin").
+/// The files of one format. Every format but csv and path needs a geo-reference: without one
+/// this throws ParameterError("origin").
 std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format,
-                                     const std::optional<GeoReference>& geo);
+                                     const std::optional<GeoReference>& geo,
+                                     const ExportSettings& settings);
 
 /// The hold time (s) a flight controller waits at waypoint `w` so that a vehicle flying at
 /// `speed_mps` between waypoints arrives at the trace's times: the hold's duration, or the part of
@@ -66,5 +99,9 @@ double hold_seconds(const ExportWaypoint& w, const ExportWaypoint& previous, dou
 
 /// The cruise speed of an exported plan: one cell per second (model.md §1: a move takes one step).
 double cruise_speed_mps(const ExportPlan& plan);
+
+/// The distance between two photos that gives every cell a picture, as the model senses once per
+/// step: one cell (consecutive footprints of s_z cells overlap by 1 − 1/s_z).
+double photo_distance_m(const ExportPlan& plan);
 
 }  // namespace hullinspect::io

@@ -2,6 +2,7 @@
 // Readers of the exported waypoint files (docs/export.md), so tests (and users' tools) can check an
 // export against its trace. Each throws InputError(source, line, problem) on a malformed file.
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,10 +22,20 @@ struct ReadWaypoint {
   GeoPoint geo;                ///< qgc, wpl: lat, lon and the altitude relative to home
 };
 
+/// One MAVLink mission item (qgc, wpl): its command and seven parameters (NaN where the file
+/// leaves one unset).
+struct ReadItem {
+  int command = 0;
+  int frame = 0;
+  std::array<double, 7> params{};
+};
+
 struct ReadPlan {
-  std::vector<ReadWaypoint> waypoints;
-  GeoPoint home;            ///< qgc, wpl
-  double cruise_speed = 0;  ///< qgc
+  std::vector<ReadWaypoint> waypoints;  ///< qgc, wpl: the NAV_WAYPOINT items
+  std::vector<ReadItem> items;          ///< qgc, wpl: every item, in order
+  int firmware = 0;                     ///< qgc: mission.firmwareType
+  GeoPoint home;                        ///< qgc, wpl
+  double cruise_speed = 0;              ///< qgc
 };
 
 ReadPlan read_export_csv(std::string_view text, const std::string& source);

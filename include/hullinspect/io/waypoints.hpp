@@ -20,9 +20,10 @@ enum class WaypointAction {
   kMove,         ///< the end of a straight leg on one plane
   kPlaneChange,  ///< arrival on the other plane (the change took `duration` steps)
   kHold,         ///< the end of a hover of `duration` steps
+  kTransit,      ///< the end of a plane-2 leg between a launch site and the plan (exports only)
 };
 
-/// "start", "move", "plane-change", "hold".
+/// "start", "move", "plane-change", "hold", "transit".
 std::string_view to_string(WaypointAction action);
 /// The inverse of to_string; false for any other text.
 bool parse_waypoint_action(std::string_view text, WaypointAction& action);

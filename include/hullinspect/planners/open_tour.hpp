@@ -3,6 +3,7 @@
 // prior"): an open tour from the UAV over points it must see with a footprint, improved by local
 // search.
 
+#include <cstddef>
 #include <span>
 
 #include "hullinspect/grid/grid.hpp"
@@ -20,10 +21,25 @@ struct OpenTourCost {
   int of(grid::Cell from, std::span<const grid::Cell> points) const;
 };
 
-/// Orders `points` (in place) into a short open tour from `from`: nearest neighbour, then 2-opt
-/// (reversing a run) and Or-opt (moving a run of 1–3 points elsewhere, either way round) until no
-/// such move lowers the cost. Deterministic (ties keep the earlier point); O(m²) per pass, no
-/// allocation.
+/// Up to this many points every 2-opt and Or-opt move is tried; above, only moves that join a
+/// point to one of its nearest points.
+inline constexpr std::size_t kExhaustiveTourPoints = 150;
+
+/// Orders `points` (in place) into a short open tour from `from`: plan_open_tour_exhaustive up to
+/// kExhaustiveTourPoints points, plan_open_tour_neighbours above. Deterministic.
 void plan_open_tour(grid::Cell from, std::span<grid::Cell> points, const OpenTourCost& cost);
+
+/// Nearest neighbour, then 2-opt (reversing a run) and Or-opt (moving a run of 1–3 points
+/// elsewhere, either way round) until no such move lowers the cost. Ties keep the earlier point;
+/// O(m²) per pass, no allocation.
+void plan_open_tour_exhaustive(grid::Cell from, std::span<grid::Cell> points,
+                               const OpenTourCost& cost);
+
+/// The same construction and moves restricted to each point's 16 nearest points and its 4
+/// nearest in each quadrant around it (found through a grid of buckets), each point looked at
+/// again only when an edge at it changed (don't-look bits): about linear work in the points for
+/// points spread over a hull. Ties go to the earlier point.
+void plan_open_tour_neighbours(grid::Cell from, std::span<grid::Cell> points,
+                               const OpenTourCost& cost);
 
 }  // namespace hullinspect::planners

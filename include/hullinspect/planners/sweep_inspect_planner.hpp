@@ -132,8 +132,9 @@ struct SweepInspectOptions {
   /// as it is within h1 ahead).
   bool descend_when_level = true;
   /// Visit the prior's cells in the order of a planned open tour (open_tour.hpp: nearest
-  /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen (false:
-  /// the nearest cell at every step).
+  /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen while
+  /// it has at most kReplannedTourCells cells, repaired (seen cells dropped) above (false: the
+  /// nearest cell at every step).
   bool plan_prior_tour = true;
   /// Fly to the sweep's first band along the region's edge row (and a band's centre line) when
   /// that makes the whole flight shorter: the bands it passes are then flown only as far as the
@@ -175,6 +176,10 @@ class SweepInspectPlanner final : public Planner {
     bool other_part = false;          // its cells of the other plane are swept after these
     std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
     grid::Cell viewpoint{-1, -1};     // where it flies at z = 1 (inspect-viewpoints)
+    // plan-prior-tour: its prior cells in the planned order (empty: plan one), tour[tour_next]
+    // the first not yet seen when last looked.
+    std::vector<int> tour;
+    std::size_t tour_next = 0;
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Mode kPrior: UAV k's next move on its tour of the prior's cells at z = 1; nullopt when the
@@ -287,8 +292,19 @@ class SweepInspectPlanner final : public Planner {
   /// tours from `at` end together (kBalancePasses passes over the neighbour pairs).
   void balance_prior_tours(std::span<const grid::Cell> at, const sim::PlannerView* view = nullptr);
   static constexpr int kBalancePasses = 3;
-  /// plan-prior-tour: the first cell of a planned z = 1 tour from `from` over `cells`.
-  int first_of_planned_tour(grid::Cell from, std::span<const int> cells);
+  /// plan-prior-tour: the next cell of UAV k's planned z = 1 tour over its prior cells `cells`
+  /// that is still to be inspected; the tour is planned from `from` when it has none left or is
+  /// short (at most kReplannedTourCells cells).
+  int next_of_tour(int k, grid::Cell from, std::span<const int> cells,
+                   const sim::PlannerView& view);
+  /// A tour of more cells is repaired as its cells are seen, not planned anew: re-planning on
+  /// every cell seen costs the cube of the tour's cells.
+  static constexpr std::size_t kReplannedTourCells = 100;
+  /// UAV k's prior cells were re-assigned: its next tour is planned anew.
+  void forget_tour(int k) {
+    uavs_[static_cast<std::size_t>(k)].tour.clear();
+    uavs_[static_cast<std::size_t>(k)].tour_next = 0;
+  }
   /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells` (also with
   /// plan-prior-tour: the planned tour's own length, found by local search, cost 45 times the
   /// planner time in share-prior's bisections and balanced the tours no better on the tuning
@@ -337,8 +353,8 @@ class SweepInspectPlanner final : public Planner {
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
   // observed among the working UAVs (take-over-sweep; -1: nobody's).
   grid::Grid<std::int16_t> owner_;
-  std::vector<char> handed_over_;        // per UAV: its failure was handled
-  bool resplit_ = false;                 // owner_ is a failure's re-split
+  std::vector<char> handed_over_;  // per UAV: its failure was handled
+  bool resplit_ = false;           // owner_ is a failure's re-split
   // Per cell: detected and not yet inspected at a failure's re-split, which gave it to the share
   // whose sweep is to pass abreast of it (its finder may be the failed UAV).
   grid::Grid<std::uint8_t> resplit_detection_;
@@ -346,7 +362,7 @@ class SweepInspectPlanner final : public Planner {
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
   std::vector<int> tour_left_;           // scratch of tour_steps
-  std::vector<grid::Cell> tour_points_;  // scratch of first_of_planned_tour
+  std::vector<grid::Cell> tour_points_;  // scratch of next_of_tour
   std::vector<int> split_cells_;
   std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
   // Scratch of inspection_viewpoint: work cells per position of the window around the inspection,

@@ -1,0 +1,28 @@
+#pragma once
+// Small helpers shared by the benchmark programs that parse their own options and time themselves.
+
+#include <ctime>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hullinspect::bench {
+
+/// CPU time of the calling thread, seconds: on a shared machine wall time measures the other jobs.
+inline double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
+/// The non-empty items of `text` between `sep`s.
+inline std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, sep);) {
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+}  // namespace hullinspect::bench

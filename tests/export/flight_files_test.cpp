@@ -1,0 +1,438 @@
+// The flight files a crew loads (docs/export.md "Flight files"): every format read back and
+// checked against the trace's waypoints — DJI KMZ unzipped and parsed, Litchi column by column,
+// QGC/WPL item by item, KML with an XML parser — plus launch sites, sorties and waypoint caps.
+
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+#include <sstream>
+
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/io/export.hpp"
+#include "hullinspect/io/export_readers.hpp"
+#include "hullinspect/io/geo_reference.hpp"
+#include "hullinspect/io/trace_reader.hpp"
+#include "source_dir.hpp"
+#include "support/cli_runner.hpp"
+
+namespace hullinspect::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const io::GeoPoint kOrigin{53.5461, 9.9665, 3.0};
+constexpr double kHeading = 117;
+const std::vector<std::string> kGeo = {"--origin", "53.5461,9.9665,3", "--heading", "117"};
+
+// One planned mission with a no-fly box, shared by the tests of this file.
+class FlightFiles : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = make_temp_dir("flight-files");
+    trace_ = dir_ + "/trace.json";
+    const auto r = run_cli({"plan", "-a", "part-tsp", "-n", "3", "--seed", "2", "--no-fly-box",
+                            "60,3,64,9", "--trace", trace_});
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  // `export` of the shared trace into DIR/name with the geo-reference and `extra` options.
+  static std::string export_to(const std::string& name, std::vector<std::string> extra) {
+    const std::string out = dir_ + "/" + name;
+    std::vector<std::string> args = {"export", trace_, "--out", out};
+    args.insert(args.end(), kGeo.begin(), kGeo.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return out;
+  }
+  static io::ExportPlan plan() { return io::export_plan(io::read_trace(trace_)); }
+
+  static std::string dir_;
+  static std::string trace_;
+};
+std::string FlightFiles::dir_;
+std::string FlightFiles::trace_;
+
+// A point of a file back in the ship frame: WGS-84 position and a height above `home`.
+io::ShipPose ship_point(double lat, double lon, double height, const io::GeoPoint& home) {
+  const io::GeoReference geo(kOrigin, kHeading);
+  io::ShipPose p;
+  geo.from_wgs84({lat, lon, home.alt + height}, p.x, p.y, p.z);
+  return p;
+}
+
+// The home point of a sortie without --launch: below the UAV's start on plane 2, at the grid's
+// bottom edge.
+io::GeoPoint home_of(const io::ExportPlan& plan, int uav) {
+  const io::GeoReference geo(kOrigin, kHeading);
+  const auto p = plan.frame.pose(plan.uavs[static_cast<std::size_t>(uav)].front().grid.cell, 2);
+  return geo.to_wgs84(p.x, p.y, plan.frame.spec().z0);
+}
+
+void expect_at(const io::ShipPose& got, const io::ExportWaypoint& want, const std::string& what) {
+  EXPECT_LT(std::hypot(got.x - want.pose.x, got.y - want.pose.y, got.z - want.pose.z), 0.01)
+      << what << ": (" << got.x << ", " << got.y << ", " << got.z << ") vs (" << want.pose.x << ", "
+      << want.pose.y << ", " << want.pose.z << ")";
+}
+
+double compass_of(const io::ExportWaypoint& w) {
+  return io::GeoReference(kOrigin, kHeading).compass_deg(w.pose.yaw);
+}
+
+std::map<std::string, std::string> unzip(const std::string& path) {
+  std::map<std::string, std::string> entries;
+  int error = 0;
+  zip_t* archive = zip_open(path.c_str(), ZIP_RDONLY, &error);
+  if (!archive) {
+    ADD_FAILURE() << path << ": not a zip archive";
+    return entries;
+  }
+  for (zip_int64_t i = 0; i < zip_get_num_entries(archive, 0); ++i) {
+    zip_stat_t st;
+    zip_stat_index(archive, static_cast<zip_uint64_t>(i), 0, &st);
+    std::string content(st.size, '\0');
+    zip_file_t* f = zip_fopen_index(archive, static_cast<zip_uint64_t>(i), 0);
+    zip_fread(f, content.data(), st.size);
+    zip_fclose(f);
+    entries[st.name] = content;
+  }
+  zip_close(archive);
+  return entries;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  for (std::string f; std::getline(in, f, sep);) out.push_back(f);
+  return out;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+TEST_F(FlightFiles, DjiKmzFollowsWpmlAndTheTrace) {
+  const auto out = export_to("dji", {"--format", "dji-kmz", "--drone", "m30t", "--finish", "rtl",
+                                     "--max-waypoints", "1000"});
+  const auto p = plan();
+  for (int k = 0; k < 3; ++k) {
+    const auto entries = unzip(out + "/uav" + std::to_string(k) + ".kmz");
+    ASSERT_EQ(entries.size(), 2u);
+    ASSERT_TRUE(entries.count("wpmz/template.kml"));
+    ASSERT_TRUE(entries.count("wpmz/waylines.wpml"));
+    const auto& want = p.uavs[static_cast<std::size_t>(k)];
+    const auto home = home_of(p, k);
+    for (const auto& [name, content] : entries) {
+      const bool waylines = name == "wpmz/waylines.wpml";
+      pugi::xml_document doc;
+      ASSERT_TRUE(doc.load_string(content.c_str())) << name;
+      const auto kml = doc.child("kml");
+      EXPECT_STREQ(kml.attribute("xmlns:wpml").value(), "http://www.dji.com/wpmz/1.0.2");
+      const auto config = kml.child("Document").child("wpml:missionConfig");
+      for (const char* field : {"wpml:flyToWaylineMode", "wpml:finishAction", "wpml:exitOnRCLost",
+                                "wpml:takeOffSecurityHeight", "wpml:globalTransitionalSpeed"}) {
+        EXPECT_FALSE(config.child(field).empty()) << name << " " << field;
+      }
+      EXPECT_STREQ(config.child_value("wpml:finishAction"), "goHome");
+      EXPECT_STREQ(config.child("wpml:droneInfo").child_value("wpml:droneEnumValue"), "67");
+      EXPECT_STREQ(config.child("wpml:droneInfo").child_value("wpml:droneSubEnumValue"), "1");
+      EXPECT_STREQ(config.child("wpml:payloadInfo").child_value("wpml:payloadEnumValue"), "53");
+      const auto folder = kml.child("Document").child("Folder");
+      std::size_t i = 0;
+      int photo_groups = 0;
+      for (const auto pm : folder.children("Placemark")) {
+        ASSERT_LT(i, want.size()) << name;
+        EXPECT_EQ(pm.child("wpml:index").text().as_int(), static_cast<int>(i));
+        const auto lonlat = split(pm.child("Point").child_value("coordinates"), ',');
+        ASSERT_EQ(lonlat.size(), 2u);
+        const double height =
+            pm.child(waylines ? "wpml:executeHeight" : "wpml:height").text().as_double();
+        expect_at(ship_point(std::stod(lonlat[1]), std::stod(lonlat[0]), height, home), want[i],
+                  name + " placemark " + std::to_string(i));
+        const double heading = pm.child("wpml:waypointHeadingParam")
+                                   .child("wpml:waypointHeadingAngle")
+                                   .text()
+                                   .as_double();
+        EXPECT_NEAR(std::remainder(heading - compass_of(want[i]), 360), 0, 1e-3);
+        for (const auto g : pm.children("wpml:actionGroup")) {
+          const auto trigger = g.child("wpml:actionTrigger");
+          if (std::string(trigger.child_value("wpml:actionTriggerType")) == "multipleDistance") {
+            ++photo_groups;
+            EXPECT_DOUBLE_EQ(trigger.child("wpml:actionTriggerParam").text().as_double(),
+                             p.frame.spec().cell_m);
+            EXPECT_STREQ(g.child("wpml:action").child_value("wpml:actionActuatorFunc"),
+                         "takePhoto");
+            EXPECT_EQ(g.child("wpml:actionGroupEndIndex").text().as_int(),
+                      static_cast<int>(want.size()) - 1);
+          }
+        }
+        ++i;
+      }
+      EXPECT_EQ(i, want.size()) << name;
+      EXPECT_EQ(photo_groups, 1) << name;
+    }
+  }
+}
+
+TEST_F(FlightFiles, LitchiColumnByColumn) {
+  const auto out = export_to("litchi", {"--format", "litchi", "--max-waypoints", "1000"});
+  const auto p = plan();
+  for (int k = 0; k < 3; ++k) {
+    const auto rows = lines_of(io::read_file(out + "/uav" + std::to_string(k) + ".litchi.csv"));
+    const auto header = split(rows.at(0), ',');
+    ASSERT_EQ(header.size(), 8u + 30u + 8u);
+    EXPECT_EQ(header[0], "latitude");
+    EXPECT_EQ(header[2], "altitude(m)");
+    EXPECT_EQ(header[3], "heading(deg)");
+    EXPECT_EQ(header[7], "gimbalpitchangle");
+    EXPECT_EQ(header[8], "actiontype1");
+    EXPECT_EQ(header[37], "actionparam15");
+    EXPECT_EQ(header[38], "altitudemode");
+    EXPECT_EQ(header[39], "speed(m/s)");
+    EXPECT_EQ(header[45], "photo_distinterval");
+    const auto& want = p.uavs[static_cast<std::size_t>(k)];
+    ASSERT_EQ(rows.size(), want.size() + 1);
+    const auto home = home_of(p, k);
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      const auto f = split(rows[i + 1], ',');
+      ASSERT_EQ(f.size(), header.size());
+      const std::string what = "uav" + std::to_string(k) + " row " + std::to_string(i + 1);
+      expect_at(ship_point(std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), home), want[i], what);
+      EXPECT_NEAR(std::stod(f[3]), compass_of(want[i]), 1e-3) << what;
+      EXPECT_EQ(f[6], "2") << what;      // gimbal interpolated
+      EXPECT_EQ(f[7], "0.000") << what;  // a vertical side: a level camera
+      EXPECT_EQ(f[38], "0") << what;     // above the take-off point
+      EXPECT_EQ(std::stod(f[39]), p.frame.spec().cell_m) << what;
+      // A hold is a "stay" action of its milliseconds; the legs of the plan photograph.
+      const auto& w = want[i];
+      if (w.grid.action == io::WaypointAction::kHold) {
+        EXPECT_EQ(f[8], "0") << what;
+        EXPECT_EQ(std::stoi(f[9]), w.grid.duration * 1000) << what;
+      } else if (w.grid.action != io::WaypointAction::kPlaneChange) {
+        EXPECT_EQ(f[8], "-1") << what;
+      }
+      EXPECT_EQ(f[45], i + 1 < want.size() ? "0.5000" : "-1") << what;
+    }
+  }
+}
+
+TEST_F(FlightFiles, ArduPilotMissionTakesOffFromTheLaunchSiteAndReturns) {
+  const auto out = export_to("ardupilot", {"--format", "qgc", "--format", "wpl", "--firmware",
+                                           "ardupilot", "--finish", "rtl", "--launch", "0,0"});
+  const auto p = plan();
+  const io::GeoReference geo(kOrigin, kHeading);
+  const auto site = p.frame.pose({0, 0}, 2);
+  const auto home = geo.to_wgs84(site.x, site.y, p.frame.spec().z0);
+  for (int k = 0; k < 3; ++k) {
+    const auto name = out + "/uav" + std::to_string(k);
+    const auto qgc = io::read_qgc_plan(io::read_file(name + ".plan"), name);
+    const auto wpl = io::read_wpl(io::read_file(name + ".waypoints"), name);
+    EXPECT_EQ(qgc.firmware, 3);  // MAV_AUTOPILOT_ARDUPILOTMEGA
+    for (const auto* m : {&qgc, &wpl}) {
+      EXPECT_NEAR(m->home.lat, home.lat, 1e-9);
+      EXPECT_NEAR(m->home.lon, home.lon, 1e-9);
+      ASSERT_EQ(m->items.size(), qgc.items.size());
+      EXPECT_EQ(m->items.front().command, 22);
+      EXPECT_EQ(m->items[1].command, 178);
+      EXPECT_EQ(m->items[2].command, 205);  // the gimbal, level
+      EXPECT_EQ(m->items[2].params[0], 0);
+      EXPECT_EQ(m->items.back().command, 20);
+      // Every waypoint's heading is set by a CONDITION_YAW before it.
+      double yaw = -1;
+      int triggers = 0;
+      for (const auto& item : m->items) {
+        if (item.command == 115) yaw = item.params[0];
+        if (item.command == 16) {
+          EXPECT_EQ(item.params[3], yaw);
+        }
+        if (item.command == 206) ++triggers;
+      }
+      EXPECT_EQ(triggers, 2);  // on at the plan's start, off at its end
+      // The first and last waypoints are the site's plane-2 position; the plan lies between.
+      const auto first = ship_point(m->waypoints.front().geo.lat, m->waypoints.front().geo.lon,
+                                    m->waypoints.front().geo.alt, m->home);
+      const auto last = ship_point(m->waypoints.back().geo.lat, m->waypoints.back().geo.lon,
+                                   m->waypoints.back().geo.alt, m->home);
+      EXPECT_LT(std::hypot(first.x - site.x, first.y - site.y, first.z - site.z), 0.01);
+      EXPECT_LT(std::hypot(last.x - site.x, last.y - site.y, last.z - site.z), 0.01);
+      // No leg of the flight passes a no-fly position: every waypoint's cell is allowed and legs
+      // are straight along a row or column.
+      for (const auto& w : m->waypoints) {
+        const auto s = ship_point(w.geo.lat, w.geo.lon, w.geo.alt, m->home);
+        const auto c = p.frame.cell_at(s.x, s.z);
+        EXPECT_EQ(std::count(p.no_fly.begin(), p.no_fly.end(), c), 0);
+      }
+    }
+    // No geofence: a horizontal polygon would also forbid the legal flight past the box.
+    const auto doc = nlohmann::json::parse(io::read_file(name + ".plan"));
+    EXPECT_TRUE(doc["geoFence"]["polygons"].empty());
+  }
+  std::string command = "/usr/bin/python3 " HULLINSPECT_SOURCE_DIR "/tests/export/validate_plan.py";
+  for (int k = 0; k < 3; ++k) command += " " + out + "/uav" + std::to_string(k) + ".plan";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+}
+
+TEST_F(FlightFiles, CapSplitsASortieIntoFilesThatResumeWhereTheLastEnded) {
+  const auto whole = export_to("whole", {"--format", "litchi", "--max-waypoints", "1000"});
+  const auto split_dir = export_to("split", {"--format", "litchi", "--max-waypoints", "7"});
+  for (int k = 0; k < 3; ++k) {
+    const auto rows = lines_of(io::read_file(whole + "/uav" + std::to_string(k) + ".litchi.csv"));
+    std::vector<std::string> joined = {rows.front()};
+    int parts = 0;
+    for (int part = 1;; ++part) {
+      const auto name =
+          split_dir + "/uav" + std::to_string(k) + "-part" + std::to_string(part) + ".litchi.csv";
+      if (!fs::exists(name)) break;
+      ++parts;
+      const auto r = lines_of(io::read_file(name));
+      EXPECT_EQ(r.front(), rows.front());
+      ASSERT_GE(r.size(), 3u);
+      EXPECT_LE(r.size() - 1, 7u) << name;
+      // A part starts at the last waypoint of the one before (its photo and stay columns aside).
+      std::size_t from = 1;
+      if (part > 1) {
+        EXPECT_EQ(split(r[1], ',')[0], split(joined.back(), ',')[0]) << name;
+        EXPECT_EQ(split(r[1], ',')[1], split(joined.back(), ',')[1]) << name;
+        from = 2;
+      }
+      joined.insert(joined.end(), r.begin() + static_cast<long>(from), r.end());
+    }
+    EXPECT_EQ(parts, static_cast<int>((rows.size() - 2 + 5) / 6)) << "uav" << k;
+    ASSERT_EQ(joined.size(), rows.size());
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      EXPECT_EQ(split(joined[i], ',')[0], split(rows[i], ',')[0]);
+      EXPECT_EQ(split(joined[i], ',')[3], split(rows[i], ',')[3]);
+    }
+  }
+}
+
+TEST_F(FlightFiles, KmlDrawsEachSortieTheSitesAndTheNoFlyBoxes) {
+  const auto out = export_to("kml", {"--format", "kml", "--launch", "0,0", "--launch", "229,0"});
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file((out + "/mission.kml").c_str()));
+  const auto document = doc.child("kml").child("Document");
+  std::map<std::string, int> folders;
+  int faces = 0;
+  for (const auto folder : document.children("Folder")) {
+    int n = 0;
+    for (auto pm = folder.child("Placemark"); pm; pm = pm.next_sibling("Placemark")) ++n;
+    folders[folder.child_value("name")] = n;
+    if (std::string(folder.child_value("name")) == "No-fly zones") {
+      const auto box = folder.child("Placemark").child("MultiGeometry");
+      for (auto f = box.child("Polygon"); f; f = f.next_sibling("Polygon")) ++faces;
+    }
+  }
+  EXPECT_EQ(folders["Flights"], 3);
+  EXPECT_EQ(folders["Launch sites"], 2);
+  // The 5 × 7 box: one box per row of it, six faces each.
+  EXPECT_EQ(folders["No-fly zones"], 7);
+  EXPECT_EQ(faces, 6);
+}
+
+TEST_F(FlightFiles, AllFormatsInOneCommandStayUnderTheirCaps) {
+  const auto out = export_to("all", {"--format", "all", "--launch", "0,0", "--launch", "229,0"});
+  int kmz = 0, litchi = 0;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    const auto name = entry.path().filename().string();
+    if (name.ends_with(".litchi.csv")) {
+      ++litchi;
+      EXPECT_LE(lines_of(io::read_file(entry.path().string())).size() - 1, 99u) << name;
+    }
+    if (name.ends_with(".kmz")) {
+      ++kmz;
+      pugi::xml_document doc;
+      ASSERT_TRUE(doc.load_string(unzip(entry.path().string())["wpmz/waylines.wpml"].c_str()));
+      int placemarks = 0;
+      for (auto pm = doc.child("kml").child("Document").child("Folder").child("Placemark"); pm;
+           pm = pm.next_sibling("Placemark")) {
+        ++placemarks;
+      }
+      EXPECT_LE(placemarks, 200) << name;
+    }
+  }
+  EXPECT_GE(litchi, 3);
+  EXPECT_GE(kmz, 3);
+  for (const char* name : {"uav0.csv", "uav0.plan", "uav0.waypoints", "uav0.path.yaml",
+                           "hull_to_map.yaml", "mission.kml"}) {
+    EXPECT_TRUE(fs::exists(out + "/" + name)) << name;
+  }
+}
+
+TEST(PreflightReport, SortiesCellsAndWarningsMatchTheFiles) {
+  const auto dir = make_temp_dir("preflight");
+  std::vector<std::string> args = {"plan",   "-a",           "part-tsp",     "-n",
+                                   "2",      "--no-fly-box", "60,3,64,9",    "--launch",
+                                   "0,0",    "--export",     dir + "/files", "--format",
+                                   "litchi", "--format",     "qgc",          "--max-waypoints",
+                                   "9",      "--report",     dir + "/report"};
+  args.insert(args.end(), kGeo.begin(), kGeo.end());
+  const auto r = run_cli(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto report = nlohmann::json::parse(io::read_file(dir + "/report/preflight.json"));
+  ASSERT_EQ(report["sorties"].size(), 2u);
+  for (const auto& s : report["sorties"]) {
+    const int k = s["uav"].get<int>();
+    EXPECT_EQ(s["launch_site"], nlohmann::json::array({0, 0}));
+    // The capped files hold the sortie's waypoints, each later part repeating the last waypoint
+    // of the one before.
+    const auto prefix = dir + "/files/uav" + std::to_string(k);
+    const int litchi_parts = s["files"]["litchi"].get<int>();
+    const int qgc_parts = s["files"]["qgc"].get<int>();
+    EXPECT_EQ(litchi_parts, qgc_parts);
+    ASSERT_GT(litchi_parts, 1);
+    std::size_t rows = 0, items = 0;
+    for (int p = 1; p <= litchi_parts; ++p) {
+      const auto part = prefix + "-part" + std::to_string(p);
+      rows += lines_of(io::read_file(part + ".litchi.csv")).size() - 1;
+      items += io::read_qgc_plan(io::read_file(part + ".plan"), part).waypoints.size();
+    }
+    const auto repeated = static_cast<std::size_t>(litchi_parts - 1);
+    EXPECT_EQ(rows - repeated, s["waypoints"].get<std::size_t>());
+    EXPECT_EQ(items - repeated, s["waypoints"].get<std::size_t>());
+    // At one cell per second a sortie takes at least its distance over the cruise speed.
+    EXPECT_GE(s["flight_time_s"].get<double>(), s["distance_m"].get<double>() / 0.5 - 0.1);
+  }
+  EXPECT_EQ(report["cells"]["hull"], 6361);
+  EXPECT_EQ(report["cells"]["unseen"], 0);
+  const auto warnings = report["warnings"].dump();
+  EXPECT_NE(warnings.find("exceed the litchi cap of 9"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("35 no-fly positions are not in the litchi, qgc files"),
+            std::string::npos)
+      << warnings;
+  const auto md = io::read_file(dir + "/report/preflight.md");
+  EXPECT_NE(md.find("| UAV | sortie | launch site |"), std::string::npos);
+  pugi::xml_document svg;
+  EXPECT_TRUE(svg.load_file((dir + "/report/preflight.svg").c_str()));
+  int lines = 0;
+  for (auto l = svg.child("svg").child("polyline"); l; l = l.next_sibling("polyline")) ++lines;
+  EXPECT_EQ(lines, 2);
+  fs::remove_all(dir);
+}
+
+TEST(PlanPrior, WithoutPriorThePlanIsPureCoverageWhateverTheSeed) {
+  const auto one = nlohmann::json::parse(run_cli({"plan", "--json", "-n", "2", "--seed", "1"}).out);
+  const auto two = nlohmann::json::parse(run_cli({"plan", "--json", "-n", "2", "--seed", "2"}).out);
+  EXPECT_EQ(one["prior"], "empty");
+  EXPECT_EQ(one["corroded_cells"], 0);
+  EXPECT_EQ(one["T_m"], two["T_m"]);
+  const auto text = run_cli({"plan", "-n", "2"});
+  EXPECT_NE(text.out.find("planned on an empty prior (pure coverage"), std::string::npos)
+      << text.out;
+  // A synthetic scenario only when asked for.
+  const auto asked =
+      nlohmann::json::parse(run_cli({"plan", "--json", "-n", "2", "--scenario", "imperfect"}).out);
+  EXPECT_EQ(asked["prior"], "synthetic");
+  EXPECT_GT(asked["corroded_cells"].get<int>(), 0);
+}
+
+}  // namespace
+}  // namespace hullinspect::testing
