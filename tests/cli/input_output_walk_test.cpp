@@ -76,10 +76,12 @@ std::vector<Command> commands() {
        {{"--config", {Role::kInput, "config.yaml", ""}},
         {"--out", {Role::kOutputDir, "", "runs.csv"}}}},
   };
-  // plan reads what run reads and writes what run writes, but no HTML replay.
+  // plan reads what run reads and writes what run writes, but no HTML replay; it writes the
+  // export's pre-flight report.
   Command plan = all.front();
   plan.words = {"plan"};
   plan.options.erase("--html");
+  plan.options["--report"] = {Role::kOutputDir, "", "preflight.json"};
   all.push_back(plan);
   return all;
 }
@@ -123,6 +125,8 @@ class InputOutputWalk : public ::testing::Test {
     put(f / "nofly.txt", "........\n........\n.......X\n........\n");
     put(f / "geo.yaml", "origin: [50, 8, 0]\nheading: 30\n");
     put(f / "defects.csv", "x_m,z_m,side,w_m,h_m\n1.0,0.5,starboard,1.0,0.5\n");
+    put(f / "defects.json",
+        R"({"defects": [{"x_m": 1.0, "z_m": 0.5, "side": "starboard", "w_m": 1.0, "h_m": 0.5}]})");
     put(f / "config.yaml", "name: tiny\nhull: " + (f / "hull.txt").string() +
                                "\ns1: 1\ns2: 3\nuavs: 1\nalgorithms: [lawnmower]\ninstances: 1\n"
                                "curve: {step: 10, end: 100}\n");
@@ -164,7 +168,11 @@ TEST_F(InputOutputWalk, NoOutputOptionCanOverwriteAnyInput) {
           const fs::path input = out.role == Role::kOutputDir && variant == "same path"
                                      ? dir / "d" / out.dir_entry
                                      : dir / ("in-" + in.fixture);
-          put(input, slurp(fs::path(fixtures_) / in.fixture));
+          // A defects file is read as JSON when its name ends in .json (preflight.json).
+          const std::string fixture = in.fixture == "defects.csv" && input.extension() == ".json"
+                                          ? "defects.json"
+                                          : in.fixture;
+          put(input, slurp(fs::path(fixtures_) / fixture));
           // Where the output goes: the input itself, or a link to it.
           const fs::path link =
               out.role == Role::kOutputDir ? dir / "d" / out.dir_entry : dir / "link.json";
@@ -182,7 +190,7 @@ TEST_F(InputOutputWalk, NoOutputOptionCanOverwriteAnyInput) {
           add(args, out_name, out_path.string());
           // The other inputs a command needs: a trace for view and export, a hull, an export
           // directory for --geo, and --force so that an export directory holding the input is
-          // refused for the input, not for not being empty.
+          // refused for the input, not for not being empty; --report reports an export.
           if (c.options.contains("trace") && in_name != "trace") {
             add(args, "trace", (fs::path(fixtures_) / "trace.json").string());
           }
@@ -194,6 +202,7 @@ TEST_F(InputOutputWalk, NoOutputOptionCanOverwriteAnyInput) {
           }
           if (out.role == Role::kOutputDir && out.dir_entry == "uav0.csv")
             args.push_back("--force");
+          if (out_name == "--report") add(args, "--export", (dir / "e").string());
           const auto before = snapshot(dir);
           const CliResult r = run_cli(args);
           ++runs;
