@@ -19,8 +19,8 @@ struct ExportCommandArgs {
 };
 
 int export_trace(const ExportCommandArgs& args) {
+  io::OutputSet outputs;  // first: it guards every file read from here on (the --geo file too)
   const auto request = resolve_export(args.output, "--out");
-  io::OutputSet outputs;
   outputs.add_input(args.trace_path, "trace");
   declare_export_dir(outputs, *request);
   outputs.check();  // the directory, before reading the trace

@@ -6,8 +6,11 @@
 #include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
+#include <set>
+
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
+#include "hullinspect/files/bounded_read.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -61,19 +64,42 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
       ->capture_default_str();
   cmd.add_option("--drone", a.drone, "DJI aircraft of dji-kmz files: m350, m300, m30, m30t, m3e")
       ->capture_default_str();
+  cmd.add_flag("--force", a.force,
+               "Write into the directory even if it already holds files (files of the same names "
+               "are replaced, others are left as they are)");
 }
 
 namespace {
 
+// A geo-reference file is a few lines; anything larger is not one.
+constexpr std::size_t kMaxGeoFileBytes = std::size_t{1} << 20;
+
+// yaml-cpp keeps the first of two equal keys silently; a file that says `heading` twice is
+// ambiguous, so it is refused.
+void refuse_duplicate_keys(const YAML::Node& map, const std::string& path) {
+  std::set<std::string> seen;
+  for (const auto& entry : map) {
+    const std::string key = entry.first.Scalar();
+    if (!seen.insert(key).second) {
+      throw InputError(path, entry.first.Mark().line + 1,
+                       fmt::format("duplicate key '{}'", escape_for_message(key, 200)));
+    }
+  }
+}
+
 io::GeoReference geo_from_yaml(const std::string& path) {
+  // Read like every input (bounded, regular files only, registered against the outputs).
+  const std::string text = io::read_file(path, kMaxGeoFileBytes, "the geo-reference file");
   YAML::Node doc;
   try {
-    doc = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw InputError(path, 0, "cannot open the geo-reference file");
+    doc = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw InputError(path, e.mark.line + 1, "not YAML: " + e.msg);
+    throw InputError(path, e.mark.line + 1, "not YAML: " + escape_for_message(e.msg, 200));
   }
+  if (!doc.IsMap()) {
+    throw InputError(path, 0, "expected a YAML mapping with origin: [LAT, LON, ALT] and heading");
+  }
+  refuse_duplicate_keys(doc, path);
   const auto origin = doc["origin"];
   if (!origin || !origin.IsSequence() || origin.size() != 3) {
     throw InputError(path, origin ? origin.Mark().line + 1 : 0, "origin: expected [LAT, LON, ALT]");
@@ -130,7 +156,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
           std::pair{a.simplify.has_value(), "simplify"},
           std::pair{a.firmware != defaults.firmware, "firmware"},
           std::pair{a.finish != defaults.finish, "finish"},
-          std::pair{a.drone != defaults.drone, "drone"}}) {
+          std::pair{a.drone != defaults.drone, "drone"}, std::pair{a.force, "force"}}) {
       if (set)
         throw ParameterError(option, fmt::format("has no effect without {} DIR", dir_option));
     }
@@ -185,12 +211,15 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
   }
   r.option = name;
   r.geo_file = a.geo_file;
+  r.force = a.force;
   return r;
 }
 
 void declare_export_dir(io::OutputSet& outputs, const ExportRequest& request) {
   outputs.add_input(request.geo_file, "geo");
-  outputs.add_output_dir(request.dir, request.option);
+  // A new or empty directory, unless --force: files of an earlier export with more UAVs would
+  // otherwise stay beside the new ones and read as part of it.
+  outputs.add_output_dir(request.dir, request.option, !request.force);
 }
 
 namespace {

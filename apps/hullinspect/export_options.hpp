@@ -31,10 +31,11 @@ struct ExportArgs {
   std::string firmware = "px4";
   std::string finish = "land";
   std::string drone = "m350";
+  bool force = false;
 };
 
 /// Adds --format (repeatable, or all), --origin, --heading, --geo, --launch, --max-waypoints,
-/// --firmware, --finish, --drone and the directory option `dir_option` ("--out" for `export`,
+/// --firmware, --finish, --drone, --force and the directory option `dir_option` ("--out" for `export`,
 /// "--export" for run and plan).
 void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_option);
 
@@ -46,6 +47,7 @@ struct ExportRequest {
   std::optional<io::GeoReference> geo;
   std::string option;    ///< the directory option without dashes ("out", "export"), for messages
   std::string geo_file;  ///< --geo FILE, an input of the command; empty without one
+  bool force = false;    ///< write into a directory that already holds files
 };
 
 /// Checks the options (format, geo-reference) before anything runs; nullopt when no directory

@@ -30,12 +30,12 @@ std::string output_path(const std::string& out) {
 int import(const HullImportArgs& args) {
   if (args.out.empty()) throw ParameterError("out", "expects a file name");
   const std::string out = output_path(args.out);
-  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
-  const world::HullMask& hull = imported.hull;
-  const world::HullGeometry& g = *hull.geometry();
   io::OutputSet outputs;
   outputs.add_output(out, "out");
   outputs.check();
+  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
+  const world::HullMask& hull = imported.hull;
+  const world::HullGeometry& g = *hull.geometry();
   outputs.write(out, world::to_hull_json(hull));
   std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
                            imported.facing_facets, world::to_string(g.side));

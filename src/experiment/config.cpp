@@ -80,9 +80,15 @@ void read_mesh_hull(const YamlFields& f, const YAML::Node& h, const std::filesys
       o.waterline ? fmt::format("{}", *o.waterline) : std::string("none"), o.min_coverage,
       o.keep_largest);
   try {
-    c.hull = std::make_shared<const world::HullMask>(
-        named ? world::import_named_mesh_hull(mesh, o).hull
-              : world::import_mesh_file(resolved(mesh, base_dir), o).hull);
+    world::HullMask hull = named ? world::import_named_mesh_hull(mesh, o).hull
+                                 : world::import_mesh_file(resolved(mesh, base_dir), o).hull;
+    // The geometry records the mesh as the config names it, not as found from the directory the
+    // command ran in, so that the hull's hash (and the fingerprint and run ids) do not depend on
+    // how the config's path was spelled (k3.yaml, ./k3.yaml, /abs/k3.yaml).
+    world::HullGeometry geometry = *hull.geometry();
+    geometry.mesh = mesh;
+    hull.attach_geometry(std::move(geometry));
+    c.hull = std::make_shared<const world::HullMask>(std::move(hull));
   } catch (const InputError& e) {
     f.fail(h["mesh"], "hull.mesh", e.what());
   }

@@ -13,6 +13,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/output_error.hpp"
 #include "hullinspect/files/pending_temporaries.hpp"
+#include "hullinspect/files/input_registry.hpp"
 
 namespace hullinspect::io {
 
@@ -60,22 +61,34 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
 
 std::string read_file(const std::filesystem::path& path, std::size_t limit, const char* what) {
   const std::string name = path.string();
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: opening a FIFO without a writer would otherwise wait forever; it is refused below
+  // like every file that is not a regular file (and regular files ignore the flag).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) {
     if (errno == ENOENT) throw InputError(name, 0, fmt::format("cannot open {}", what));
     throw InputError(name, 0, fmt::format("cannot open {}: {}", what, std::strerror(errno)));
   }
   struct stat st {};
-  if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
+  if (::fstat(fd, &st) != 0) {
+    const int err = errno;
+    ::close(fd);
+    throw InputError(name, 0, fmt::format("cannot open {}: {}", what, std::strerror(err)));
+  }
+  if (S_ISDIR(st.st_mode)) {
     ::close(fd);
     throw InputError(name, 0, "is a directory, expected a file");
   }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw InputError(name, 0, fmt::format("is {}, expected a regular file", file_kind(st)));
+  }
   std::string bytes;
-  if (S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) > limit) {
+  if (static_cast<std::size_t>(st.st_size) > limit) {
     ::close(fd);
     throw InputError(name, 0,
                      fmt::format("is larger than the {} MiB limit for this input", limit >> 20));
   }
+  register_input(path, st.st_dev, st.st_ino);
   char buffer[65536];
   while (true) {
     const ssize_t n = ::read(fd, buffer, sizeof buffer);

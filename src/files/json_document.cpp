@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <set>
 #include <vector>
 
 #include "hullinspect/core/errors.hpp"
@@ -31,10 +32,18 @@ class PathTrackingSax {
   bool binary(json::binary_t& v) { return value(), dom_.binary(v); }
   bool start_object(std::size_t n) {
     value();
-    frames_.push_back({false, 0, 0, {}});
+    frames_.push_back({false, 0, 0, {}, {}, {}});
     return dom_.start_object(n);
   }
   bool key(json::string_t& k) {
+    // nlohmann keeps the last of two equal keys silently; a document that gives a field twice is
+    // ambiguous, so it is refused.
+    if (!frames_.back().add_key(k)) {
+      problem_ = fmt::format("duplicate key '{}'", escape_for_message(k, 60));
+      duplicate_key_ = true;
+      frames_.back().key.clear();  // path() then names the object that holds the key
+      return false;
+    }
     frames_.back().key = k;
     return dom_.key(k);
   }
@@ -44,7 +53,7 @@ class PathTrackingSax {
   }
   bool start_array(std::size_t n) {
     value();
-    frames_.push_back({true, 0, 0, {}});
+    frames_.push_back({true, 0, 0, {}, {}, {}});
     return dom_.start_array(n);
   }
   bool end_array() {
@@ -89,6 +98,7 @@ class PathTrackingSax {
   std::size_t position() const { return position_; }
   const std::string& problem() const { return problem_; }
   bool number_error() const { return number_error_; }
+  bool duplicate_key() const { return duplicate_key_; }
 
  private:
   struct Frame {
@@ -96,6 +106,19 @@ class PathTrackingSax {
     std::size_t next;
     std::size_t current;
     std::string key;
+    // The object's keys so far: a short list searched in order, a set once it grows.
+    std::vector<std::string> keys;
+    std::set<std::string> many_keys;
+    bool add_key(const std::string& k) {
+      if (!many_keys.empty()) return many_keys.insert(k).second;
+      if (std::find(keys.begin(), keys.end(), k) != keys.end()) return false;
+      keys.push_back(k);
+      if (keys.size() > 32) {
+        many_keys.insert(keys.begin(), keys.end());
+        keys.clear();
+      }
+      return true;
+    }
   };
   void value() {
     if (!frames_.empty() && frames_.back().array) frames_.back().current = frames_.back().next++;
@@ -104,6 +127,7 @@ class PathTrackingSax {
   std::vector<Frame> frames_;
   std::size_t position_ = 0;
   bool number_error_ = false;
+  bool duplicate_key_ = false;
   std::string problem_;
 };
 
@@ -117,6 +141,13 @@ json parse_json_document(std::string_view text, const std::string& source, std::
     ok = json::sax_parse(text.begin(), text.end(), &sax);
   } catch (const json::exception& e) {
     throw InputError(source, 0, fmt::format("not {}: {}", what, e.what()));
+  }
+  if (!ok && sax.duplicate_key()) {
+    // The parser does not tell a callback where it is; the key and the object's path name it.
+    const std::string object = sax.path();
+    throw InputError(source, 0,
+                     fmt::format("not {}: {}{}", what, sax.problem(),
+                                 object.empty() ? "" : " (in " + object + ")"));
   }
   if (!ok) {
     const auto end = std::min(sax.position(), text.size());

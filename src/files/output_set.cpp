@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
@@ -12,6 +13,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/core/output_error.hpp"
+#include "hullinspect/files/input_registry.hpp"
 
 namespace hullinspect::io {
 
@@ -21,17 +23,6 @@ namespace {
 
 std::string shown(const fs::path& p) {
   return escape_for_message(p.string(), 200);
-}
-
-// What kind of non-regular file `st` describes, for messages.
-const char* kind(const struct stat& st) {
-  if (S_ISDIR(st.st_mode)) return "a directory";
-  if (S_ISCHR(st.st_mode)) return "a character device";
-  if (S_ISBLK(st.st_mode)) return "a block device";
-  if (S_ISFIFO(st.st_mode)) return "a FIFO";
-  if (S_ISSOCK(st.st_mode)) return "a socket";
-  if (S_ISREG(st.st_mode)) return "a regular file";
-  return "not a regular file";
 }
 
 fs::path resolved(const fs::path& p) {
@@ -83,6 +74,8 @@ bool same_file(const fs::path& a, const fs::path& b) {
   return resolved(a) == resolved(b);
 }
 
+OutputSet::OutputSet() : first_input_(next_input_sequence()) {}
+
 OutputSet::~OutputSet() {
   for (const auto& out : outputs_) {
     if (!out.temporary.empty()) ::unlink(out.temporary.c_str());
@@ -107,8 +100,8 @@ void OutputSet::add_output(const fs::path& path, std::string option) {
   if (!path.empty()) outputs_.push_back({path, std::move(option), false, {}, {}});
 }
 
-void OutputSet::add_output_dir(const fs::path& path, std::string option) {
-  if (!path.empty()) outputs_.push_back({path, std::move(option), true, {}, {}});
+void OutputSet::add_output_dir(const fs::path& path, std::string option, bool must_be_empty) {
+  if (!path.empty()) outputs_.push_back({path, std::move(option), true, {}, must_be_empty, {}});
 }
 
 void OutputSet::check() const {
@@ -117,19 +110,20 @@ void OutputSet::check() const {
     struct stat st {};
     if (::stat(out.path.c_str(), &st) == 0) {
       if (out.directory && !S_ISDIR(st.st_mode)) {
-        throw ParameterError(
-            out.option, fmt::format("'{}' is {}, expected a directory", shown(out.path), kind(st)));
+        throw ParameterError(out.option, fmt::format("'{}' is {}, expected a directory",
+                                                     shown(out.path), file_kind(st)));
       }
       if (!out.directory && !S_ISREG(st.st_mode)) {
         throw ParameterError(out.option,
                              fmt::format("'{}' is {}; an output must be a regular file or a new "
                                          "path",
-                                         shown(out.path), kind(st)));
+                                         shown(out.path), file_kind(st)));
       }
       if (out.directory && ::access(out.path.c_str(), W_OK | X_OK) != 0) {
         throw ParameterError(out.option, fmt::format("cannot write into '{}': {}", shown(out.path),
                                                      std::strerror(errno)));
       }
+      if (out.directory && out.must_be_empty) check_empty(out);
     } else if (errno != ENOENT) {
       throw ParameterError(
           out.option, fmt::format("cannot use '{}': {}", shown(out.path), std::strerror(errno)));
@@ -149,6 +143,7 @@ void OutputSet::check() const {
                                          shown(out.path), in.option, shown(in.path)));
       }
     }
+    check_not_read(out);
     for (std::size_t j = 0; j < k; ++j) {
       if (same_file(out.path, outputs_[j].path)) {
         throw ParameterError(
@@ -210,7 +205,41 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
   if (!ok) throw OutputError(path.string(), fmt::format("write failed: {}", std::strerror(err)));
 }
 
+void OutputSet::check_empty(const Entry& out) {
+  std::error_code ec;
+  fs::directory_iterator it(out.path, ec);
+  if (ec) {
+    throw ParameterError(out.option,
+                         fmt::format("cannot list '{}': {}", shown(out.path), ec.message()));
+  }
+  if (it == fs::directory_iterator()) return;
+  // The first name in order, so that the message does not depend on the directory's layout.
+  fs::path first = it->path().filename();
+  for (; it != fs::directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    first = std::min(first, it->path().filename());
+  }
+  throw ParameterError(out.option,
+                       fmt::format("'{}' is not empty (it holds '{}'); give a new or empty "
+                                   "directory, or --force to write into it",
+                                   shown(out.path), shown(first)));
+}
+
+void OutputSet::check_not_read(const Entry& out) const {
+  if (out.directory) return;
+  if (const auto in = registered_input_at(out.path, first_input_)) {
+    throw ParameterError(out.option,
+                         fmt::format("'{}' is the same file as the input '{}'; it would be "
+                                     "overwritten",
+                                     shown(out.path), shown(in->path)));
+  }
+}
+
 void OutputSet::commit() {
+  // Inputs read since check() (a prior, a no-fly map, a mesh) are known only now.
+  for (const auto& out : outputs_) {
+    if (!out.temporary.empty()) check_not_read(out);
+  }
   for (auto& out : outputs_) {
     if (out.temporary.empty()) continue;
     if (::rename(out.temporary.c_str(), out.path.c_str()) != 0) {

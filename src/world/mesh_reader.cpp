@@ -4,20 +4,37 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <zlib.h>
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define HULLINSPECT_HAS_ASAN 1
+#endif
+#endif
+#ifndef HULLINSPECT_HAS_ASAN
+#define HULLINSPECT_HAS_ASAN 0
+#endif
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cctype>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <string_view>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/isolated_call.hpp"
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
+#include "mesh_header_check.hpp"
 
 namespace hullinspect::world {
+
+using detail::check_mesh_counts;
 
 namespace {
 
@@ -62,31 +79,35 @@ std::string inflate_gzip(std::string_view bytes, const std::string& source) {
   return out;
 }
 
-// Assimp 5.2's PLY reader never returns on a header without an `end_header` line (found by
-// fuzz_mesh: one changed byte in "end_header"), so such a header is refused before Assimp sees it.
-void check_ply_header(std::string_view bytes, const std::string& source) {
-  std::size_t pos = 0;
-  while (pos < bytes.size()) {
-    std::size_t end = bytes.find('\n', pos);
-    if (end == std::string_view::npos) end = bytes.size();
-    std::string_view line = bytes.substr(pos, end - pos);
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) {
-      line.remove_suffix(1);
-    }
-    if (line == "end_header") return;
-    pos = end + 1;
-  }
-  throw InputError(source, 0, "not a readable ply mesh (its header has no end_header line)");
-}
-
 // What the child process sends back: 'T' and nine floats per triangle (Assimp's own numbers, so
 // the parent's doubles are exactly what an in-process read gave), or 'E' and the problem.
 constexpr char kTriangles = 'T';
 constexpr char kProblem = 'E';
 constexpr std::size_t kTriangleBytes = 9 * sizeof(float);
 
+// Caps the address space of the child running Assimp, so that a count the header checks let
+// through cannot take the machine's memory: what the process maps already plus 1 GiB and 32 bytes
+// per byte of mesh. An allocation beyond it fails inside Assimp, which is then a failed read.
+// Sanitizer builds reserve terabytes of shadow memory up front, so they run without the cap.
+void cap_child_memory(std::size_t mesh_bytes) {
+#if !defined(__SANITIZE_ADDRESS__) && !HULLINSPECT_HAS_ASAN
+  long pages = 0;
+  if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+    std::fclose(f);
+  }
+  const std::uint64_t mapped = static_cast<std::uint64_t>(pages) * ::sysconf(_SC_PAGESIZE);
+  const std::uint64_t cap = mapped + (std::uint64_t{1} << 30) + 32 * std::uint64_t{mesh_bytes};
+  const struct rlimit limit { cap, cap };
+  ::setrlimit(RLIMIT_AS, &limit);
+#else
+  (void)mesh_bytes;
+#endif
+}
+
 // Runs in the child: Assimp and nothing of hullinspect's state.
 std::string import_with_assimp(std::string_view bytes, const std::string& format) {
+  cap_child_memory(bytes.size());
   Assimp::Importer importer;
   // Only the geometry matters: no normals, materials or vertex joining (speed).
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
@@ -96,9 +117,11 @@ std::string import_with_assimp(std::string_view bytes, const std::string& format
       aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType,
       format.c_str());
   if (scene == nullptr) {
+    // Assimp's message may quote the input (megabytes of it on one line): at most 200 characters.
     std::string why = importer.GetErrorString();
     std::replace(why.begin(), why.end(), '\n', ' ');
-    return kProblem + fmt::format("not a readable {} mesh ({})", format, why);
+    return kProblem +
+           fmt::format("not a readable {} mesh ({})", format, escape_for_message(why, 200));
   }
   std::size_t count = 0;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
@@ -185,7 +208,8 @@ std::vector<MeshTriangle> read_mesh(std::string_view bytes, std::string_view hin
     throw InputError(source, 0,
                      fmt::format("unknown mesh format '{}'; expected stl, obj or ply", format));
   }
-  if (format == "ply" || bytes.starts_with("ply")) check_ply_header(bytes, source);
+  // Also refuses a PLY header without end_header, on which Assimp 5.2's reader never returns.
+  check_mesh_counts(bytes, format, source);
   if (time_limit.count() <= 0) time_limit = mesh_reader_time_limit(bytes.size());
   std::vector<MeshTriangle> triangles =
       detail::read_mesh_in_child(bytes, format, source, time_limit);

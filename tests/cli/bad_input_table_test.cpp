@@ -4,6 +4,8 @@
 // stdout, and leave the directory exactly as it was: no file created (not even a temporary), none
 // changed, none removed. In the table, "@" stands for the row's directory followed by '/'.
 //
+// A row may also create symbolic links ("links": {"name": "target"}) and FIFOs ("fifos": [names]).
+//
 // Fixtures in every row's directory: hull.txt (8 × 4 hull), hull.pgm (P2), tsp.json, config.yaml
 // (a 2-run experiment on hull.txt), trace.json (a mission on hull.txt), results/ (the finished
 // experiment of config.yaml).
@@ -12,8 +14,9 @@
 // prints now (then review the diff: every change must be intended).
 
 #include <gtest/gtest.h>
-#include "source_dir.hpp"
+#include <sys/stat.h>
 #include <nlohmann/json.hpp>
+#include "source_dir.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +27,7 @@
 #include <vector>
 
 #include "support/cli_runner.hpp"
+#include "support/dir_snapshot.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -34,6 +38,8 @@ struct Row {
   std::string id;
   std::vector<std::string> args;
   std::map<std::string, std::string> files;  // extra files: name -> content
+  std::map<std::string, std::string> links;  // symbolic links: name -> target
+  std::vector<std::string> fifos;            // named pipes (nobody writes to them)
   std::string message;
   int status = 2;
 };
@@ -54,36 +60,13 @@ std::vector<Row> load_rows() {
     r.id = j.at("id").get<std::string>();
     r.args = j.at("args").get<std::vector<std::string>>();
     if (j.contains("files")) r.files = j.at("files").get<std::map<std::string, std::string>>();
+    if (j.contains("links")) r.links = j.at("links").get<std::map<std::string, std::string>>();
+    if (j.contains("fifos")) r.fifos = j.at("fifos").get<std::vector<std::string>>();
     r.message = j.value("message", "");
     r.status = j.value("status", 2);
     rows.push_back(std::move(r));
   }
   return rows;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Every entry under `dir` (recursively) with its kind and, for files, its bytes.
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string rel = fs::relative(e.path(), dir).string();
-    if (e.is_symlink()) {
-      out[rel] = "symlink:" + fs::read_symlink(e.path()).string();
-    } else if (e.is_regular_file()) {
-      out[rel] = "file:" + slurp(e.path());
-    } else if (e.is_directory()) {
-      out[rel] = "dir";
-    } else {
-      out[rel] = "other";
-    }
-  }
-  return out;
 }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
@@ -130,6 +113,11 @@ TEST_F(BadInputTable, EveryRowIsOneLineExitTwoAndTouchesNothing) {
       fs::create_directories((dir / name).parent_path());
       std::ofstream(dir / name, std::ios::binary) << content;
     }
+    for (const auto& [name, target] : row.links) {
+      fs::create_directories((dir / name).parent_path());
+      fs::create_symlink(target, dir / name);
+    }
+    for (const auto& name : row.fifos) ASSERT_EQ(::mkfifo((dir / name).c_str(), 0666), 0) << name;
     const std::string at = dir.string() + "/";
     std::vector<std::string> args;
     for (const auto& a : row.args) args.push_back(replace_all(a, "@", at));
@@ -155,6 +143,8 @@ TEST_F(BadInputTable, EveryRowIsOneLineExitTwoAndTouchesNothing) {
       j["id"] = row.id;
       j["args"] = row.args;
       if (!row.files.empty()) j["files"] = row.files;
+      if (!row.links.empty()) j["links"] = row.links;
+      if (!row.fifos.empty()) j["fifos"] = row.fifos;
       j["message"] = row.message;
       if (row.status != 2) j["status"] = row.status;
       out << j.dump() << "\n";

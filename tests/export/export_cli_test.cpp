@@ -120,7 +120,7 @@ TEST_F(ExportCli, RefusesAnOutDirectoryThatIsAFile) {
 TEST_F(ExportCli, RefusesAnOutputThatIsADirectoryWritingNothing) {
   const std::string out = dir_ + "/blocked";
   fs::create_directories(out + "/uav1.csv");
-  const auto r = run_cli({"export", trace_, "--out", out});
+  const auto r = run_cli({"export", trace_, "--out", out, "--force"});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "hullinspect: --out: '" + out +
                        "/uav1.csv' is a directory; an output must be a regular file or a new "
@@ -133,12 +133,32 @@ TEST_F(ExportCli, RefusesToOverwriteTheTrace) {
   const std::string out = dir_ + "/clash";
   fs::create_directories(out);
   fs::create_hard_link(trace_, out + "/uav0.csv");
-  const auto r = run_cli({"export", trace_, "--out", out});
+  const auto r = run_cli({"export", trace_, "--out", out, "--force"});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "hullinspect: --out: '" + out + "/uav0.csv' is the same file as the trace '" +
                        trace_ + "'; it would be overwritten\n");
   EXPECT_NO_THROW(io::read_trace(trace_));  // untouched
   EXPECT_FALSE(fs::exists(out + "/uav1.csv"));
+  fs::remove_all(out);
+}
+
+// A directory holding an earlier export is refused unless --force: the new export's files would
+// otherwise sit beside uav2 … uav7 of the old one.
+TEST_F(ExportCli, RefusesANonEmptyDirectoryUnlessForced) {
+  const std::string out = dir_ + "/earlier";
+  fs::create_directories(out);
+  for (int k = 0; k < 8; ++k)
+    io::write_file_atomic(out + "/uav" + std::to_string(k) + ".csv", "old\n");
+  auto r = run_cli({"export", trace_, "--out", out});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "hullinspect: --out: '" + out +
+                       "' is not empty (it holds 'uav0.csv'); give a new or empty directory, or "
+                       "--force to write into it\n");
+  EXPECT_EQ(io::read_file(out + "/uav0.csv"), "old\n");
+  r = run_cli({"export", trace_, "--out", out, "--force"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(io::read_file(out + "/uav0.csv"), "old\n");
+  EXPECT_EQ(io::read_file(out + "/uav7.csv"), "old\n");  // --force replaces only its own names
   fs::remove_all(out);
 }
 

@@ -162,11 +162,14 @@ TEST(OutputSet, CommitsTogetherAndLeavesNothingWhenAbandoned) {
 }
 
 TEST(ReadFile, StopsAtItsLimitAndRefusesDirectories) {
+  const fs::path dir = testing::make_temp_dir("read_file_limit");
+  put(dir / "big", std::string((1 << 20) + 1, 'x'));
   try {
-    read_file("/dev/zero", 1 << 20);
+    read_file(dir / "big", 1 << 20);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "/dev/zero: is larger than the 1 MiB limit for this input");
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "big").string() + ": is larger than the 1 MiB limit for this input");
   }
   try {
     read_file("/", 1 << 20);
@@ -212,6 +215,61 @@ TEST(OutputSet, PendingTemporariesAreListedUntilCommitted) {
     EXPECT_TRUE(fs::exists(dir / "c.txt"));
   }
   fs::remove_all(dir);
+// Every file read through read_file while a set exists is one of its inputs, declared or not, under
+// any name: the set refuses it as an output at check() and, for files read after check(), at
+// commit(), which then leaves the file as it was.
+TEST(OutputSet, RefusesAnOutputThatIsAFileReadWhileTheSetExists) {
+  const fs::path dir = testing::make_temp_dir("output_set_read");
+  put(dir / "prior.txt", "X.\n");
+  fs::create_symlink(dir / "prior.txt", dir / "link.json");
+  fs::create_hard_link(dir / "prior.txt", dir / "hard.json");
+  for (const fs::path& out : {dir / "prior.txt", dir / "link.json", dir / "hard.json"}) {
+    {
+      OutputSet set;
+      read_file(dir / "prior.txt");
+      set.add_output(out, "trace");
+      EXPECT_EQ(problem(set), "trace: '" + out.string() + "' is the same file as the input '" +
+                                  (dir / "prior.txt").string() + "'; it would be overwritten");
+    set.add_output(out, "trace");
+    read_file(dir / "prior.txt");  // after check(): only commit() can see it
+    set.write(out, "trace");
+    EXPECT_THROW(set.commit(), ParameterError) << out;
+    EXPECT_EQ(read_file(dir / "prior.txt"), "X.\n");
+    EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
+  // A file read before the set was made belongs to earlier work, not to this set's command.
+  OutputSet later;
+  later.add_output(dir / "prior.txt", "trace");
+  EXPECT_EQ(problem(later), "ok");
+}
+
+TEST(OutputSet, AnOutputDirectoryThatMustBeEmptyRefusesAnyEntry) {
+  const fs::path dir = testing::make_temp_dir("output_set_empty");
+  OutputSet fresh;
+  fresh.add_output_dir(dir, "export", true);
+  EXPECT_EQ(problem(fresh), "ok");
+  put(dir / "uav7.csv", "old");
+  put(dir / "uav2.csv", "old");
+  OutputSet set;
+  set.add_output_dir(dir, "export", true);
+  EXPECT_EQ(problem(set), "export: '" + dir.string() +
+                              "' is not empty (it holds 'uav2.csv'); give a new or empty "
+                              "directory, or --force to write into it");
+  OutputSet forced;
+  forced.add_output_dir(dir, "export");
+  EXPECT_EQ(problem(forced), "ok");
+}
+
+TEST(ReadFile, RefusesFifosAndDevicesWithoutWaiting) {
+  const fs::path dir = testing::make_temp_dir("read_file_fifo");
+  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
+  for (const auto& [path, kind] : {std::pair<fs::path, std::string>{dir / "fifo", "a FIFO"},
+                                   {"/dev/zero", "a character device"}}) {
+    try {
+      read_file(path, 1 << 20);
+      ADD_FAILURE() << path;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                path.string() + ": is " + kind + ", expected a regular file");
 }
 
 }  // namespace

@@ -162,6 +162,11 @@ class HullsAndInstances(unittest.TestCase):
                                                   [True, True, True, False]])
             with self.assertRaises(ValueError):
                 hullinspect.Hull.load(os.path.join(tmp, "missing.txt"))
+            # A FIFO nobody writes to is refused at once, not waited on.
+            fifo = os.path.join(tmp, "hull.fifo")
+            os.mkfifo(fifo)
+            with self.assertRaisesRegex(ValueError, "is a FIFO, expected a regular file"):
+                hullinspect.Hull.load(fifo)
 
 
 def rows_array(rows):
