@@ -93,11 +93,11 @@ const OutputSet::Entry* OutputSet::declared_parent_dir(const fs::path& path) con
 }
 
 void OutputSet::add_input(const fs::path& path, std::string option) {
-  if (!path.empty()) inputs_.push_back({path, std::move(option), false, {}, {}});
+  if (!path.empty()) inputs_.push_back({path, std::move(option), false, {}, false, {}});
 }
 
 void OutputSet::add_output(const fs::path& path, std::string option) {
-  if (!path.empty()) outputs_.push_back({path, std::move(option), false, {}, {}});
+  if (!path.empty()) outputs_.push_back({path, std::move(option), false, {}, false, {}});
 }
 
 void OutputSet::add_output_dir(const fs::path& path, std::string option, bool must_be_empty) {

@@ -43,7 +43,7 @@ bool SweepInspectPlanner::hand_over_prior(const sim::PlannerView& view) {
 int SweepInspectPlanner::next_of_tour(int k, grid::Cell from, std::span<const int> cells,
                                       const sim::PlannerView& view) {
   Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (cells.size() > kReplannedTourCells) {
+  if (p.repaired) {
     // A long tour is repaired when its cells are seen, not planned again: they leave it (a prior
     // cell leaves `cells` exactly when it is no longer a detection to inspect) and the rest keep
     // their order. Planning it anew each time the cell flown to was seen made the planning time
@@ -63,6 +63,7 @@ int SweepInspectPlanner::next_of_tour(int k, grid::Cell from, std::span<const in
   p.tour.clear();
   for (const grid::Cell c : tour_points_) p.tour.push_back(c.y * width_ + c.x);
   p.tour_next = 0;
+  p.repaired = cells.size() > kReplannedTourCells;
   return p.tour.front();
 }
 
@@ -242,7 +243,7 @@ std::optional<sim::Action> SweepInspectPlanner::prior_tour_step(int k, const sim
       // On when the cell it flew to was seen (on the way, or by another UAV) or went to another
       // UAV (share-prior); a long tour also when its cells were re-assigned (forget_tour).
       const bool seen = p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen;
-      const bool mine = cells.size() > kReplannedTourCells
+      const bool mine = p.repaired
                             ? p.tour_next < p.tour.size() && p.tour[p.tour_next] == p.target_cell
                             : std::find(cells.begin(), cells.end(), p.target_cell) != cells.end();
       if (seen || !mine) p.target_cell = next_of_tour(k, u.pos, cells, view);

@@ -1,7 +1,7 @@
 // Sweep-Inspect's long prior tours (more than SweepInspectPlanner's kReplannedTourCells cells,
 // more than kExhaustiveTourPoints planned over neighbour lists) are repaired as their cells are
-// seen: with one or two UAVs on the default hull each UAV's prior holds 130–270 cells, and the
-// missions complete under the checker and end the tours (T_c) sooner than nearest-first.
+// seen: with one or two UAVs on a 600 × 60 hull each UAV's prior holds several hundred cells, and
+// the missions complete under the checker and end the tours (T_c) sooner than nearest-first.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,16 @@
 namespace hullinspect::planners {
 namespace {
 
+// A rectangle four times the default hull's area: priors long enough to be repaired.
+const world::HullMask& long_hull() {
+  static const world::HullMask hull = [] {
+    std::string rows;
+    for (int y = 0; y < 60; ++y) rows += std::string(600, 'X') + "\n";
+    return world::parse_text_mask(rows, "600x60");
+  }();
+  return hull;
+}
+
 int summed_t_c(int n, bool planned) {
   int total = 0;
   for (std::uint64_t seed : {1, 2, 3}) {
@@ -22,12 +32,13 @@ int summed_t_c(int n, bool planned) {
     spec.planner_options = {{"plan-prior-tour", planned ? "true" : "false"}};
     spec.params.uavs = n;
     spec.params.s2 = 7;
-    spec.corrosion = world::scenario("perfect").corrosion(world::default_hull().width());
+    spec.params.time_limit = 100'000;
+    spec.corrosion = world::scenario("perfect").corrosion(long_hull().width());
     spec.seed = seed;
     testing::MissionChecker checker;
     MissionOptions options;
     options.observers = {&checker};
-    const sim::MissionResult r = run_mission(spec, world::default_hull(), options);
+    const sim::MissionResult r = run_mission(spec, long_hull(), options);
     SCOPED_TRACE(::testing::Message() << "n=" << n << " seed=" << seed << " planned=" << planned);
     EXPECT_TRUE(r.complete);
     EXPECT_TRUE(checker.ok());

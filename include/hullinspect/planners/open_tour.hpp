@@ -23,7 +23,7 @@ struct OpenTourCost {
 
 /// Up to this many points every 2-opt and Or-opt move is tried; above, only moves that join a
 /// point to one of its nearest points.
-inline constexpr std::size_t kExhaustiveTourPoints = 150;
+inline constexpr std::size_t kExhaustiveTourPoints = 400;
 
 /// Orders `points` (in place) into a short open tour from `from`: plan_open_tour_exhaustive up to
 /// kExhaustiveTourPoints points, plan_open_tour_neighbours above. Deterministic.

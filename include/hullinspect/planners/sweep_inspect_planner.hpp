@@ -177,9 +177,11 @@ class SweepInspectPlanner final : public Planner {
     std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
     grid::Cell viewpoint{-1, -1};     // where it flies at z = 1 (inspect-viewpoints)
     // plan-prior-tour: its prior cells in the planned order (empty: plan one), tour[tour_next]
-    // the first not yet seen when last looked.
+    // the first not yet seen when last looked; `repaired` when it was planned over more than
+    // kReplannedTourCells cells, so that it is repaired, not planned anew, until re-assigned.
     std::vector<int> tour;
     std::size_t tour_next = 0;
+    bool repaired = false;
   };
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Mode kPrior: UAV k's next move on its tour of the prior's cells at z = 1; nullopt when the
@@ -293,17 +295,19 @@ class SweepInspectPlanner final : public Planner {
   void balance_prior_tours(std::span<const grid::Cell> at, const sim::PlannerView* view = nullptr);
   static constexpr int kBalancePasses = 3;
   /// plan-prior-tour: the next cell of UAV k's planned z = 1 tour over its prior cells `cells`
-  /// that is still to be inspected; the tour is planned from `from` when it has none left or is
-  /// short (at most kReplannedTourCells cells).
+  /// that is still to be inspected; the tour is planned from `from` when it has none left or was
+  /// planned short (over at most kReplannedTourCells cells).
   int next_of_tour(int k, grid::Cell from, std::span<const int> cells,
                    const sim::PlannerView& view);
-  /// A tour of more cells is repaired as its cells are seen, not planned anew: re-planning on
-  /// every cell seen costs the cube of the tour's cells.
-  static constexpr std::size_t kReplannedTourCells = 100;
+  /// A tour planned over more cells is repaired as its cells are seen, not planned anew:
+  /// re-planning on every cell seen costs the cube of the tour's cells. Below it (every prior of
+  /// the default hull's missions) re-planning from where the UAV is orders the rest better.
+  static constexpr std::size_t kReplannedTourCells = 400;
   /// UAV k's prior cells were re-assigned: its next tour is planned anew.
   void forget_tour(int k) {
     uavs_[static_cast<std::size_t>(k)].tour.clear();
     uavs_[static_cast<std::size_t>(k)].tour_next = 0;
+    uavs_[static_cast<std::size_t>(k)].repaired = false;
   }
   /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells` (also with
   /// plan-prior-tour: the planned tour's own length, found by local search, cost 45 times the
