@@ -26,7 +26,8 @@ void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner
     } else if (!sim.hull().is_hull(u.pos)) {
       fail(fmt::format("UAV starts off the hull at ({}, {})", u.pos.x, u.pos.y));
     }
-    if (sim.no_fly(u.pos)) fail(fmt::format("UAV starts on the no-fly position ({}, {})", u.pos.x, u.pos.y));
+    if (sim.no_fly(u.pos))
+      fail(fmt::format("UAV starts on the no-fly position ({}, {})", u.pos.x, u.pos.y));
   }
 }
 
@@ -34,9 +35,12 @@ namespace {
 bool forward(std::int8_t before, std::int8_t after) {
   if (before == after) return true;
   switch (before) {
-    case sim::kUnknown: return after == sim::kClean || after == sim::kCorrosionSeen || after == sim::kInspected;
-    case sim::kCorrosionSeen: return after == sim::kClean || after == sim::kInspected;
-    default: return false;
+    case sim::kUnknown:
+      return after == sim::kClean || after == sim::kCorrosionSeen || after == sim::kInspected;
+    case sim::kCorrosionSeen:
+      return after == sim::kClean || after == sim::kInspected;
+    default:
+      return false;
   }
 }
 }  // namespace
@@ -54,10 +58,12 @@ void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&
     if (moved == 1 && (before.transit_left > 0 || before.failed)) {
       fail(fmt::format("t={} UAV {} moved while changing plane or failed", t, k));
     }
-    if (moved == 1 && before.z != after.z) fail(fmt::format("t={} UAV {} moved and changed plane", t, k));
+    if (moved == 1 && before.z != after.z)
+      fail(fmt::format("t={} UAV {} moved and changed plane", t, k));
     if (!sim.map().contains(after.pos)) fail(fmt::format("t={} UAV {} off the grid", t, k));
     if (sim.map().contains(after.pos) && sim.no_fly(after.pos)) {
-      fail(fmt::format("t={} UAV {} on the no-fly position ({}, {})", t, k, after.pos.x, after.pos.y));
+      fail(fmt::format("t={} UAV {} on the no-fly position ({}, {})", t, k, after.pos.x,
+                       after.pos.y));
     }
     if (after.z != 1 && after.z != 2) fail(fmt::format("t={} UAV {} on plane {}", t, k, after.z));
     if (after.transit_left < 0 || after.transit_left >= sim.plane_change_steps()) {
@@ -73,11 +79,13 @@ void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&
                        map.cell(i).y, last_map_[i], map[i]));
     }
     if ((last_map_[i] != map[i]) != (changed.count(i) == 1)) {
-      fail(fmt::format("t={} changed-cell list wrong at ({}, {})", t, map.cell(i).x, map.cell(i).y));
+      fail(
+          fmt::format("t={} changed-cell list wrong at ({}, {})", t, map.cell(i).x, map.cell(i).y));
     }
     if (map[i] == sim::kClean || map[i] == sim::kInspected) ++known;
   }
-  if (known != sim.known_cells()) fail(fmt::format("t={} known cells {} but rescan finds {}", t, sim.known_cells(), known));
+  if (known != sim.known_cells())
+    fail(fmt::format("t={} known cells {} but rescan finds {}", t, sim.known_cells(), known));
   if (sim.c_percent() < last_c_) fail(fmt::format("t={} c decreased", t));
   if (sim.m_percent() < last_m_) fail(fmt::format("t={} m decreased", t));
   last_c_ = sim.c_percent();
