@@ -29,6 +29,13 @@ Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionS
                  grid::Grid<std::int8_t> prior, bool record_trace)
     : hull_(std::move(hull)), spec_(std::move(spec)) {
   planners::validate(spec_, *hull_);
+  // A live session is fed by real UAVs already in the air; the simulated legs between launch
+  // sites and the hull (docs/model.md §12) have no counterpart in it.
+  if (!spec_.params.launch_sites.empty()) {
+    throw ParameterError("launch",
+                         "is not available in a live session (the UAVs report from the "
+                         "air; plan their flights out and home with run())");
+  }
   const int cells = hull_->width() * hull_->height();
   instance_.truth = grid::Grid<std::int8_t>(hull_->width(), hull_->height(), -1);
   for (int i : hull_->cells()) instance_.truth[i] = 0;

@@ -54,7 +54,7 @@ void add_export_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("trace", args->trace_path, "Trace written by `hullinspect run --trace FILE`")
       ->required()
       ->type_name("TRACE");
-  add_export_options(*cmd, args->output, "--out");
+  add_export_options(*cmd, args->output, "--out", true);
   cmd->get_option("--out")->required();
   cmd->callback([args, &action] { action = [args] { return export_trace(*args); }; });
 }

@@ -19,7 +19,8 @@ namespace hullinspect::cli {
 
 namespace fs = std::filesystem;
 
-void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_option) {
+void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_option,
+                        bool launch_option) {
   cmd.add_option(dir_option, a.dir,
                  "Write each UAV's waypoints into DIR (created if missing; see docs/export.md)")
       ->type_name("DIR");
@@ -44,10 +45,13 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
   cmd.add_option("--geo", a.geo_file,
                  "Geo-reference from a YAML file: origin: [LAT, LON, ALT], heading: DEG")
       ->type_name("FILE");
-  cmd.add_option("--launch", a.launch,
-                 "Launch site at grid position X,Y (a non-hull or edge cell), repeatable; each UAV "
-                 "flies one sortie from the nearest site (default: it takes off below its start)")
-      ->type_name("X,Y");
+  if (launch_option) {
+    cmd.add_option("--launch", a.launch,
+                   "Launch site at grid position X,Y (a non-hull or edge cell), repeatable; each "
+                   "UAV flies one sortie from the nearest site (default: it takes off below its "
+                   "start)")
+        ->type_name("X,Y");
+  }
   cmd.add_option("--max-waypoints", a.max_waypoints,
                  "Split a sortie into mission files of at most N waypoints (default: litchi 99, "
                  "dji-kmz 200, others no cap)")

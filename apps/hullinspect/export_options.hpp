@@ -37,7 +37,14 @@ struct ExportArgs {
 /// Adds --format (repeatable, or all), --origin, --heading, --geo, --launch, --max-waypoints,
 /// --firmware, --finish, --drone, --force and the directory option `dir_option` ("--out" for `export`,
 /// "--export" for run and plan).
-void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_option);
+/// `launch_option`: declare --launch here (the export of a trace); run and plan take the mission's
+/// own --launch sites instead (copy them with take_mission_launch).
+void add_export_options(CLI::App& cmd, ExportArgs& args, const std::string& dir_option,
+                        bool launch_option);
+/// The mission's launch sites fly the exported sorties too (only when exporting).
+inline void take_mission_launch(ExportArgs& args, const std::vector<std::string>& sites) {
+  if (!args.dir.empty()) args.launch = sites;
+}
 
 /// A checked export request.
 struct ExportRequest {

@@ -134,6 +134,19 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
                  "Metres between frames, for defects placed by frame number (frame 0 at x = 0)")
       ->type_name("M")
       ->check(real_in(1e-3, 1e3));
+  cmd.add_option("--launch", a.launch,
+                 "A launch site: a non-hull or grid-edge cell where UAVs take off and land "
+                 "(repeatable; each UAV uses the site nearest its start cell; T_m is then the time "
+                 "the last UAV has landed; docs/model.md)")
+      ->type_name("X,Y");
+  cmd.add_option("--launch-transfer", a.launch_transfer,
+                 "Seconds each way between a launch site and the quay or deck beyond the grid")
+      ->type_name("S")
+      ->capture_default_str();
+  cmd.add_option("--takeoff-time", a.takeoff_time,
+                 "Seconds from the ground to plane 2 at a launch site, and back down (default: a "
+                 "plane change, u_z)")
+      ->type_name("S");
   add_mesh_options(cmd, a.mesh);
   add_no_fly_options(cmd, a.no_fly, a.no_fly_boxes);
   cmd.footer("Planners and their options (-O KEY=VALUE):\n" + planner_help);
@@ -177,6 +190,9 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   if (hull.geometry()) p.cell_size_m = hull.geometry()->cell_size;
   for (const auto& s : a.starts) p.starts.push_back(parse_xy(s));
   p.no_fly = build_no_fly(a.no_fly, a.no_fly_boxes, hull);
+  for (const auto& s : a.launch) p.launch_sites.push_back(parse_xy(s, "launch"));
+  p.launch_transfer_s = a.launch_transfer;
+  p.takeoff_time_s = a.takeoff_time;
 
   OptionMap scenario_options;
   auto set = [&](const char* key, const std::optional<std::string>& v) {

@@ -39,6 +39,9 @@ struct MissionArgs {
   std::string prior, truth;                  // the user's C′ and C (any hull-mask format)
   std::string prior_defects, truth_defects;  // the same from defects in ship coordinates
   std::optional<double> frame_spacing;       // metres between frames, for defects given by frame
+  std::vector<std::string> launch;           // X,Y launch sites (none = the paper's model)
+  double launch_transfer = world::MissionParams{}.launch_transfer_s;
+  std::optional<double> takeoff_time;        // seconds; default u_z
 };
 
 /// Adds --no-fly FILE and --no-fly-box X0,Y0,X1,Y1 (repeatable) to a command.

@@ -52,7 +52,9 @@ int plan(const PlanArgs& args) {
   io::OutputSet outputs;
   if (args.mission.hull != "default") outputs.add_input(args.mission.hull, "hull");
   outputs.add_output(args.trace_path, "trace");
-  const auto export_request = resolve_export(args.output, "--export");
+  ExportArgs output = args.output;
+  take_mission_launch(output, args.mission.launch);
+  const auto export_request = resolve_export(output, "--export");
   if (export_request) declare_export_dir(outputs, *export_request);
   const std::filesystem::path report_dir = args.report_dir;
   if (!args.report_dir.empty()) {
@@ -156,7 +158,7 @@ void add_plan_command(CLI::App& app, CommandAction& action) {
                 "Print one JSON object (as `run --json`, plus planned_on: prior)");
   cmd->add_option("--trace", args->trace_path, "Write the planned mission's trace (JSON) to FILE")
       ->type_name("FILE");
-  add_export_options(*cmd, args->output, "--export");
+  add_export_options(*cmd, args->output, "--export", false);
   cmd->add_option("--report", args->report_dir,
                   "Write the export's pre-flight report into DIR: preflight.md, .json and .svg "
                   "(sorties, waypoints, flight times, unreachable and unseen cells, warnings)")

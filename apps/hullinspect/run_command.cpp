@@ -76,7 +76,9 @@ int run(const RunArgs& args) {
   if (args.mission.hull != "default") outputs.add_input(args.mission.hull, "hull");
   outputs.add_output(args.trace_path, "trace");
   outputs.add_output(args.html_path, "html");
-  const auto export_request = resolve_export(args.output, "--export");
+  ExportArgs output = args.output;
+  take_mission_launch(output, args.mission.launch);
+  const auto export_request = resolve_export(output, "--export");
   if (export_request) declare_export_dir(outputs, *export_request);
   outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
@@ -134,7 +136,7 @@ void add_run_command(CLI::App& app, CommandAction& action) {
   cmd->add_option("--html", args->html_path,
                   "Write a self-contained HTML replay of the mission to FILE")
       ->type_name("FILE");
-  add_export_options(*cmd, args->output, "--export");
+  add_export_options(*cmd, args->output, "--export", false);
   cmd->callback([args, &action] { action = [args] { return run(*args); }; });
 }
 

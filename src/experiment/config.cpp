@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "config_launch.hpp"
 #include "config_no_fly.hpp"
 #include "config_scenarios.hpp"
 #include "hullinspect/core/errors.hpp"
@@ -359,7 +360,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "sweeps",        "s1",          "s2",        "theta",         "uavs",
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly"});
+                "frame-spacing", "no-fly",      "launch"});
   for (const char* key : {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull"}) {
     remember_line(c, root, key);
   }
@@ -377,6 +378,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   if (root["uavs"]) c.uavs = int_list(f, root["uavs"], "uavs", 1, kMaxUavs, c);
   if (root["start_z"]) c.start_z = f.as_int(root["start_z"], "start_z", 1, 2);
   if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
+  detail::read_launch(f, root, c);
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
   } else {
@@ -488,6 +490,12 @@ nlohmann::json config_json(const ExperimentConfig& c) {
   j["algorithms"] = algorithms;
   j["seeds"] = c.seeds;
   j["time_limit"] = c.time_limit;
+  if (!c.launch_sites.empty()) {  // only then, so that every other manifest keeps its bytes
+    json sites = json::array();
+    for (const auto& s : c.launch_sites) sites.push_back({s.x, s.y});
+    j["launch"] = {{"sites", sites}, {"transfer", c.launch_transfer}};
+    if (c.takeoff_time) j["launch"]["takeoff_time"] = *c.takeoff_time;
+  }
   j["curve"] = {{"step", c.curve.step}, {"end", c.curve.end}};
   return j;
 }
@@ -545,6 +553,12 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     }
     c.seeds = j.at("seeds").get<std::vector<std::uint64_t>>();
     c.time_limit = j.at("time_limit").get<int>();
+    if (j.contains("launch")) {
+      const auto& l = j.at("launch");
+      for (const auto& s : l.at("sites")) c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
+      c.launch_transfer = l.at("transfer").get<double>();
+      if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
+    }
     c.curve.step = j.at("curve").at("step").get<int>();
     c.curve.end = j.at("curve").at("end").get<int>();
     if (c.curve.step < 1) throw InputError(source, 0, "config.curve.step must be at least 1");

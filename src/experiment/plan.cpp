@@ -10,6 +10,16 @@ namespace hullinspect::experiment {
 
 namespace {
 
+// Only configs with launch sites say so in the run key, so that every other run keeps its id.
+std::string launch_key(const ExperimentConfig& c) {
+  if (c.launch_sites.empty()) return {};
+  std::string key = "|launch=";
+  for (const auto& s : c.launch_sites) key += fmt::format("{},{};", s.x, s.y);
+  key += fmt::format("transfer={}", c.launch_transfer);
+  if (c.takeoff_time) key += fmt::format(";takeoff={}", *c.takeoff_time);
+  return key;
+}
+
 // Doubles are written in their shortest round-trip form, so the string (and the id) only changes
 // when a value does.
 std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
@@ -35,7 +45,8 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
          // keeps its id.
          (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
          (s.no_fly_spec.is_null() ? std::string()
-                                  : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>());
+                                  : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
+         launch_key(c);
 }
 
 }  // namespace
@@ -102,6 +113,9 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.cell_size_m = c.cell_size;
   spec.params.start_z = c.start_z;
   spec.params.time_limit = c.time_limit;
+  spec.params.launch_sites = c.launch_sites;
+  spec.params.launch_transfer_s = c.launch_transfer;
+  spec.params.takeoff_time_s = c.takeoff_time;
   const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;
   spec.corrosion = scenario.corrosion;

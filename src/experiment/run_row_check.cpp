@@ -195,7 +195,10 @@ std::string samples_row_problem(const ExperimentPlan& plan, const RunKey& run,
       }
       previous = v;
       const bool after = s.reached && times[i] >= *s.reached;
-      if (after != (v == s.total)) {
+      // With launch sites T_m is the last landing, after the hull is known (docs/model.md).
+      const bool known_before_landing =
+          s.column == std::string_view("known") && !after && !plan.config().launch_sites.empty();
+      if (after != (v == s.total) && !known_before_landing) {
         return after ? fmt::format("{} is {} but from {} = {} on it is {}", name(), v, s.first_time,
                                    *s.reached, s.total)
                      : fmt::format("{} is {}, the total, but {} is {}", name(), v, s.first_time,

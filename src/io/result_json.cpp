@@ -39,6 +39,15 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   for (const auto& u : r.uavs)
     failed_at.push_back(u.failed_at >= 0 ? json(u.failed_at) : json(nullptr));
   j["failed_at"] = std::move(failed_at);
+  if (!spec.params.launch_sites.empty()) {  // only then, so that other results keep their keys
+    json launch = json::array();
+    for (const auto& u : r.uavs) {
+      launch.push_back({{"site", u.launch_site},
+                        {"steps_away", u.steps_away},
+                        {"landed_at", u.landed_at >= 0 ? json(u.landed_at) : json(nullptr)}});
+    }
+    j["launch"] = std::move(launch);
+  }
   return j;
 }
 
@@ -62,6 +71,12 @@ json spec_json(const planners::MissionSpec& spec, const std::string& hull_source
   j["p_tp"] = spec.corrosion.p_tp;
   j["p_fp"] = spec.corrosion.p_fp;
   if (!spec.failures.empty()) j["failures"] = spec.failures.text();
+  if (!spec.params.launch_sites.empty()) {
+    json sites = json::array();
+    for (const auto& c : spec.params.launch_sites) sites.push_back({c.x, c.y});
+    j["launch"] = {{"sites", std::move(sites)}, {"transfer", spec.params.launch_transfer_s}};
+    if (spec.params.takeoff_time_s) j["launch"]["takeoff_time"] = *spec.params.takeoff_time_s;
+  }
   // The user's maps, when they replaced the generated ones (the trace's prior/truth are theirs).
   if (spec.maps.prior) j["prior_file"] = spec.maps.prior->source;
   if (spec.maps.truth) j["truth_file"] = spec.maps.truth->source;

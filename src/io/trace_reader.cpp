@@ -192,7 +192,7 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 // The model's motion rules (sim/uav_rules.hpp) over every UAV of every frame, and no UAV on a
 // no-fly position ('#' in `no_fly`, already checked against the grid). Frames are checked.
 void check_motion(const TraceChecker& check, const json& frames, int plane_change_steps,
-                  const json* no_fly) {
+                  const json* no_fly, bool away_unrecorded) {
   const auto state = [](const json& u, std::size_t k) {
     sim::UavState s;
     s.pos = {u[kUavFields * k].get<int>(), u[kUavFields * k + 1].get<int>()};
@@ -219,7 +219,10 @@ void check_motion(const TraceChecker& check, const json& frames, int plane_chang
         }
       }
       if (i == 0) continue;
-      const sim::UavState before = state(frames[i - 1]["u"], k);
+      sim::UavState before = state(frames[i - 1]["u"], k);
+      // A trace of a mission with launch sites does not record when a UAV is away at its site
+      // (docs/trace-format.md): such a step is checked as the simulator flies it.
+      if (away_unrecorded) before.away_left = 1;
       if (auto broken = sim::step_violation(before, now, plane_change_steps)) {
         check.fail(where, fmt::format("UAV {} {} (from frame {})", k, *broken, i - 1));
       }
@@ -347,8 +350,11 @@ void validate_trace(const json& trace, const std::string& source) {
   for (std::size_t i = 0; i < frames.size(); ++i) {
     check_frame(check, frames[i], i, width, height, u0.size(), layers_seen);
   }
+  const bool away_unrecorded =
+      trace.contains("parameters") && trace["parameters"].is_object() &&
+      trace["parameters"].contains("launch");
   check_motion(check, frames, plane_change_steps,
-               trace.contains("no_fly") ? &trace["no_fly"] : nullptr);
+               trace.contains("no_fly") ? &trace["no_fly"] : nullptr, away_unrecorded);
 
   const auto last = static_cast<std::int64_t>(frames.size()) - 1;
   const auto& series = check.object(check.field(trace, "", "series"), "series");

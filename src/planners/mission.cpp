@@ -88,7 +88,8 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
     for (auto* o : options.observers) o->on_step(sim, planner);
     // A planner whose working UAVs have nothing left to do will only hover: when the hull is not
     // complete (e.g. a failed UAV's region under Part-TSP), the mission cannot complete.
-    if (!sim.finished() && planner.idle(sim.view())) {
+    // UAVs flying home to their launch sites after the hull is complete leave the planner idle.
+    if (!sim.finished() && !sim.complete() && planner.idle(sim.view())) {
       stopped_idle = true;
       break;
     }

@@ -4,6 +4,9 @@
 #include <cstdlib>
 #include <limits>
 
+#include "hullinspect/world/launch_sites.hpp"
+#include "hullinspect/world/no_fly.hpp"
+
 namespace hullinspect::sim {
 
 namespace {
@@ -38,6 +41,19 @@ LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t
   const int h1 = (s1 - 1) / 2;
   const int h2 = (s2 - 1) / 2;
 
+  // With launch sites a UAV reaches its start cell only after its outbound leg, and the last
+  // landing comes at least a descent and a transfer after the hull is complete.
+  std::vector<int> outbound(starts.size(), 0);
+  long long outbound_total = 0;
+  int landing = 0;
+  if (!params.launch_sites.empty()) {
+    const auto reach_map = world::compute_reachability(hull, params.no_fly.get(), s1, s2, starts);
+    const auto legs = world::plan_launch_legs(params, reach_map, starts);
+    outbound = legs.outbound;
+    for (const int o : outbound) outbound_total += o;
+    landing = legs.takeoff_steps + legs.transfer_steps;
+  }
+
   long long hull_cells = 0;
   long long corroded = 0;
   int reach_c = 0;
@@ -48,10 +64,12 @@ LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t
     const bool corr = truth[i] == 1;
     if (corr) ++corroded;
     int best = std::numeric_limits<int>::max();
-    for (const grid::Cell s : starts) {
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      const grid::Cell s = starts[k];
       // A clean cell is known once seen from either plane; a corroded one only from z = 1, which
       // a UAV starting at z = 2 reaches after u_z steps of transit.
-      const int d = corr ? reach(s, c, h1) + (params.start_z == 2 ? uz : 0) : reach(s, c, h2);
+      const int d =
+          outbound[k] + (corr ? reach(s, c, h1) + (params.start_z == 2 ? uz : 0) : reach(s, c, h2));
       best = std::min(best, d);
     }
     if (corr) reach_c = std::max(reach_c, best);
@@ -79,12 +97,12 @@ LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t
   }
 
   LowerBound b;
-  b.rate_t_m = static_cast<int>(ceil_div(best_m, n));
-  b.rate_t_c = corroded == 0 ? 0 : static_cast<int>(ceil_div(best_c, n));
-  b.reach_t_m = reach_m;
+  b.rate_t_m = static_cast<int>(ceil_div(best_m + outbound_total, n)) + landing;
+  b.rate_t_c = corroded == 0 ? 0 : static_cast<int>(ceil_div(best_c + outbound_total, n));
+  b.reach_t_m = reach_m + landing;
   b.reach_t_c = corroded == 0 ? 0 : reach_c;
   b.t_c = std::max(b.rate_t_c, b.reach_t_c);
-  b.t_m = std::max({b.rate_t_m, b.reach_t_m, b.t_c});
+  b.t_m = std::max({b.rate_t_m, b.reach_t_m, b.t_c + landing});
   return b;
 }
 

@@ -35,7 +35,29 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
 
   uavs_.resize(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) {
-    uavs_[static_cast<std::size_t>(k)] = UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, false};
+    uavs_[static_cast<std::size_t>(k)] =
+        UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, false};
+  }
+  legs_ = world::plan_launch_legs(params, reach_, starts);
+  if (!legs_.empty()) {
+    // Each UAV waits on the ground (transfer, take-off) at its site, flies out on plane 2 and
+    // descends when the mission starts on plane 1: the reverse of its flight home from the start.
+    away_path_.resize(static_cast<std::size_t>(n));
+    away_next_.assign(static_cast<std::size_t>(n), 0);
+    climbed_at_.assign(static_cast<std::size_t>(n), 0);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
+      auto out = legs_.path_home(static_cast<int>(k), starts[k]);
+      std::reverse(out.begin(), out.end());
+      const grid::Cell site = out.empty() ? starts[k] : out.front();
+      auto& path = away_path_[k];
+      path.assign(static_cast<std::size_t>(legs_.transfer_steps + legs_.takeoff_steps), site);
+      for (std::size_t i = 1; i < out.size(); ++i) path.push_back(out[i]);
+      path.push_back(starts[k]);
+      path.resize(static_cast<std::size_t>(legs_.outbound[k]), starts[k]);
+      uavs_[k].pos = site;
+      uavs_[k].z = 2;
+      uavs_[k].away_left = static_cast<int>(path.size());
+    }
   }
   fail_time_.assign(static_cast<std::size_t>(n), -1);
   applied_.assign(static_cast<std::size_t>(n), Action::kHover);
@@ -50,6 +72,8 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
   result_.unreachable_cells = reach_.unreachable_z1;
   result_.unreachable_z2_cells = reach_.unreachable_z2;
   result_.uavs.assign(static_cast<std::size_t>(n), UavCounters{});
+  for (std::size_t k = 0; k < legs_.site_of.size(); ++k)
+    result_.uavs[k].launch_site = legs_.site_of[k];
   const auto series_capacity = static_cast<std::size_t>(std::min(params.time_limit, 1 << 20)) + 1;
   result_.inspected_series.reserve(series_capacity);
   result_.known_series.reserve(series_capacity);
@@ -66,9 +90,11 @@ void Simulator::fail_uav_at(int uav, int from_time) {
 }
 
 void Simulator::step(std::span<const Action> actions) {
-  if (finished()) throw LogicError(fmt::format("step() called on a finished mission (t = {})", time_));
+  if (finished())
+    throw LogicError(fmt::format("step() called on a finished mission (t = {})", time_));
   if (actions.size() != uavs_.size()) {
-    throw LogicError(fmt::format("planner returned {} actions for {} UAVs", actions.size(), uavs_.size()));
+    throw LogicError(
+        fmt::format("planner returned {} actions for {} UAVs", actions.size(), uavs_.size()));
   }
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     UavState& u = uavs_[k];
@@ -80,6 +106,10 @@ void Simulator::step(std::span<const Action> actions) {
     }
     applied_[k] = Action::kHover;
     if (u.failed) continue;
+    if (u.away_left > 0) {
+      advance_away(k);
+      continue;
+    }
     if (u.in_transit()) {
       ++count.steps_transit;
       if (--u.transit_left == 0) u.z = 3 - u.z;
@@ -100,15 +130,16 @@ void Simulator::step(std::span<const Action> actions) {
       default: {
         const grid::Cell next = moved(u.pos, a);
         if (!map_.contains(next)) {
-          throw LogicError(fmt::format("UAV {} at ({}, {}) was told to move {} off the {} × {} grid at "
-                                       "t = {}",
-                                       k, u.pos.x, u.pos.y, to_string(a), map_.width(),
-                                       map_.height(), time_));
+          throw LogicError(
+              fmt::format("UAV {} at ({}, {}) was told to move {} off the {} × {} grid at "
+                          "t = {}",
+                          k, u.pos.x, u.pos.y, to_string(a), map_.width(), map_.height(), time_));
         }
         if (no_fly(next)) {
-          throw LogicError(fmt::format("UAV {} at ({}, {}) was told to move {} onto the no-fly "
-                                       "position ({}, {}) at t = {}",
-                                       k, u.pos.x, u.pos.y, to_string(a), next.x, next.y, time_));
+          throw LogicError(
+              fmt::format("UAV {} at ({}, {}) was told to move {} onto the no-fly "
+                          "position ({}, {}) at t = {}",
+                          k, u.pos.x, u.pos.y, to_string(a), next.x, next.y, time_));
         }
         u.pos = next;
         ++count.moves;
@@ -119,6 +150,54 @@ void Simulator::step(std::span<const Action> actions) {
   ++time_;
   sense_all();
   record_metrics();
+}
+
+void Simulator::advance_away(std::size_t k) {
+  UavState& u = uavs_[k];
+  const auto& path = away_path_[k];
+  std::size_t& next = away_next_[k];
+  u.pos = path[next++];
+  u.away_left = static_cast<int>(path.size() - next);
+  ++result_.uavs[k].steps_away;
+  if (homing_) {
+    if (u.away_left <= climbed_at_[k]) u.z = 2;
+    if (u.away_left == 0) result_.uavs[k].landed_at = time_ + 1;
+  } else if (u.away_left == 0) {
+    u.z = params_.start_z;
+  }
+}
+
+void Simulator::start_homing() {
+  homing_ = true;
+  for (std::size_t k = 0; k < uavs_.size(); ++k) {
+    UavState& u = uavs_[k];
+    if (u.failed) continue;
+    auto& path = away_path_[k];
+    std::size_t& next = away_next_[k];
+    std::vector<grid::Cell> home;
+    if (u.away_left > 0) {
+      // Still on its way out: it turns back along the positions it has flown, to the ground.
+      for (std::size_t i = next; i-- > 1;) home.push_back(path[i - 1]);
+      if (next > 0) home.push_back(path[0]);
+      climbed_at_[k] = static_cast<int>(home.size());
+    } else {
+      // Climb (finishing a plane change), fly home on plane 2, descend and transfer.
+      const int total = legs_.homeward_steps(static_cast<int>(k), u.pos, u.z, u.transit_left);
+      const auto flight = legs_.path_home(static_cast<int>(k), u.pos);
+      const grid::Cell site = flight.empty() ? u.pos : flight.back();
+      const int climb =
+          total - static_cast<int>(flight.size()) - legs_.takeoff_steps - legs_.transfer_steps;
+      home.assign(static_cast<std::size_t>(climb), u.pos);
+      home.insert(home.end(), flight.begin(), flight.end());
+      home.resize(static_cast<std::size_t>(total), site);
+      climbed_at_[k] = total - climb;
+      u.transit_left = 0;
+    }
+    path = std::move(home);
+    next = 0;
+    u.away_left = static_cast<int>(path.size());
+    if (u.away_left == 0) result_.uavs[k].landed_at = time_;
+  }
 }
 
 void Simulator::sense_all() {
@@ -188,7 +267,16 @@ void Simulator::record_metrics() {
   result_.inspected_series.push_back(inspected_);
   result_.known_series.push_back(known_);
   if (!result_.t_c && inspected_ == corroded_) result_.t_c = time_;
-  if (!result_.t_m && known_ == hull_cells_) result_.t_m = time_;
+  if (result_.t_m || known_ != hull_cells_) return;
+  if (!legs_.empty()) {
+    // With launch sites, T_m is the time the last working UAV has landed (docs/model.md).
+    if (!homing_) start_homing();
+    for (const UavState& u : uavs_) {
+      if (!u.failed && u.away_left > 0) return;
+    }
+    homing_ = false;
+  }
+  result_.t_m = time_;
 }
 
 double Simulator::c_percent() const {
@@ -202,7 +290,7 @@ double Simulator::m_percent() const {
 MissionResult Simulator::result() const {
   MissionResult r = result_;
   r.steps = time_;
-  r.complete = complete();
+  r.complete = complete() && r.t_m.has_value();
   r.failed_uavs = failed_;
   return r;
 }

@@ -26,6 +26,12 @@ std::optional<std::string> step_violation(const UavState& before, const UavState
     return std::nullopt;
   }
   const int moved = grid::manhattan(before.pos, after.pos);
+  // Away at its launch site (on the ground, taking off, flying out or home, landing): the
+  // simulator flies it along its leg, one cell a step at most, its plane following the flight.
+  if (before.away_left > 0 || after.away_left > 0) {
+    if (moved > 1) return fmt::format("moved {} cells in one step", moved);
+    return std::nullopt;
+  }
   if (before.in_transit()) {
     if (moved != 0) return std::string("moved while changing plane");
     const bool arrives = before.transit_left == 1;

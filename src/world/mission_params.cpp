@@ -10,6 +10,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/launch_sites.hpp"
 
 namespace hullinspect::world {
 
@@ -116,6 +117,7 @@ void validate(const MissionParams& p, const HullMask& hull) {
       }
     }
   }
+  validate_launch_sites(p, hull);
   // Explicit starts that snap onto one hull cell: refused here, before any planning starts.
   if (!p.starts.empty()) {
     const auto snapped = start_cells(p, hull);

@@ -236,7 +236,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, "
        "s1, "
        "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, "
-       "truth, prior-defects, truth-defects, frame-spacing, no-fly)"},
+       "truth, prior-defects, truth-defects, frame-spacing, no-fly, launch)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
@@ -411,6 +411,31 @@ TEST(ExperimentConfig, TheTuningConfigOnFiftySeedsHoldsThePaperPresetsMissions) 
   // The rest: the preset's 4 scenarios × 4 planners become 8 scenarios (each also with one
   // failure) × 5 planners (Sweep-Inspect added).
   EXPECT_EQ(grid.runs().size(), paper.runs().size() / 16 * 40);
+}
+
+}  // namespace
+}  // namespace hullinspect::experiment
+
+namespace hullinspect::experiment {
+namespace {
+
+TEST(ExperimentConfigLaunch, SitesAndTimesReachEveryMissionAndTheRunIds) {
+  const std::string base = "uavs: [2]\ninstances: 1\n";
+  const ExperimentPlan paper(parse(base));
+  const ExperimentPlan sites(
+      parse(base + "launch: {sites: [[0, 0], [229, 29]], transfer: 30, takeoff-time: 4}\n"));
+  ASSERT_EQ(sites.runs().size(), 1u);
+  const auto spec = sites.mission(sites.runs()[0]);
+  EXPECT_EQ(spec.params.launch_sites, (std::vector<grid::Cell>{{0, 0}, {229, 29}}));
+  EXPECT_EQ(spec.params.launch_transfer_s, 30);
+  EXPECT_EQ(spec.params.takeoff_time_s, 4);
+  EXPECT_TRUE(paper.mission(paper.runs()[0]).params.launch_sites.empty());
+  // A run with launch sites is another run; without them the run keeps its id.
+  EXPECT_NE(sites.runs()[0].id, paper.runs()[0].id);
+  EXPECT_FALSE(config_json(paper.config()).contains("launch"));
+  const auto back = config_from_json(config_json(sites.config()), "manifest.json");
+  EXPECT_EQ(config_json(back), config_json(sites.config()));
+  EXPECT_EQ(back.launch_sites, sites.config().launch_sites);
 }
 
 }  // namespace

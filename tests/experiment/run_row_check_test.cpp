@@ -260,3 +260,37 @@ TEST_F(RowCheck, ResumeRefusesARowThatContradictsItself) {
 
 }  // namespace
 }  // namespace hullinspect::experiment
+
+namespace hullinspect::experiment {
+namespace {
+
+// With launch sites T_m is the last landing, after the hull is known: the rows the runner writes
+// still pass, and a curve that is complete before T_m is accepted only then.
+TEST(RowCheckLaunch, RowsOfMissionsWithLaunchSitesPass) {
+  const std::string config = std::string(testing::kSmallConfig) +
+                             "launch: {sites: [[0, 0], [29, 9]], transfer: 15}\n";
+  const ExperimentPlan plan(parse_config(config, "small.yaml", "."));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("hullinspect-RowCheckLaunch-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  RunnerOptions options;
+  options.jobs = 2;
+  run_experiment(plan, dir, options);
+  const auto runs = lines_of(testing::read(dir / kRunsFile));
+  const auto samples = lines_of(testing::read(dir / kSamplesFile));
+  ASSERT_EQ(runs.size(), 96u);
+  const auto h = runs_header();
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto& run = plan.runs()[static_cast<std::size_t>(
+        plan.run_position(runs[i].substr(0, runs[i].find(','))))];
+    EXPECT_EQ(run_row_problem(plan, run, runs[i]), "") << runs[i];
+    EXPECT_EQ(samples_row_problem(plan, run, runs[i], samples[i]), "") << samples[i];
+    EXPECT_EQ(field(runs[i], h, "complete"), "1") << runs[i];
+    // Out and home: both transfers at least.
+    EXPECT_GE(std::stoi(field(runs[i], h, "T_m")), 2 * 15) << runs[i];
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace hullinspect::experiment

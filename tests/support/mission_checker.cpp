@@ -18,9 +18,16 @@ void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner
   last_uavs_.assign(sim.uavs().begin(), sim.uavs().end());
   last_c_ = sim.c_percent();
   last_m_ = sim.m_percent();
+  const auto& sites = sim.launch_legs().sites;
   for (const auto& u : sim.uavs()) {
-    if (!sim.hull().is_hull(u.pos))
+    // With launch sites every UAV starts on the ground at one; otherwise on a hull cell.
+    if (!sites.empty()) {
+      if (std::find(sites.begin(), sites.end(), u.pos) == sites.end() || u.away_left == 0)
+        fail(fmt::format("UAV starts at ({}, {}), not on the ground at a launch site", u.pos.x,
+                         u.pos.y));
+    } else if (!sim.hull().is_hull(u.pos)) {
       fail(fmt::format("UAV starts off the hull at ({}, {})", u.pos.x, u.pos.y));
+    }
     if (sim.no_fly(u.pos))
       fail(fmt::format("UAV starts on the no-fly position ({}, {})", u.pos.x, u.pos.y));
   }

@@ -82,6 +82,10 @@ struct ExperimentConfig {
   std::vector<AlgorithmSpec> algorithms;
   std::vector<std::uint64_t> seeds;
   int time_limit = 20000;
+  /// Launch sites ("launch:", docs/model.md); empty = the paper's model.
+  std::vector<grid::Cell> launch_sites;
+  double launch_transfer = 0;          ///< seconds each way beyond the grid
+  std::optional<double> takeoff_time;  ///< seconds; empty = u_z
   CurveGrid curve;
   /// Config line of each key and list item ("s1", "s2[1]", "uavs[0]", "time_limit"), so that an
   /// error found later (when cells are validated) can still name its line. 0 = not in the file.

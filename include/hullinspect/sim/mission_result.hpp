@@ -14,6 +14,9 @@ struct UavCounters {
   int steps_z2 = 0;
   int steps_transit = 0;  ///< steps spent changing plane
   int failed_at = -1;     ///< step at whose start the UAV failed; −1 never
+  int launch_site = -1;   ///< index of the UAV's launch site; −1 without launch sites
+  int steps_away = 0;     ///< steps between its site and the hull (ground, take-off, out, home)
+  int landed_at = -1;     ///< t at which it had landed at its site at the end; −1 not landed
 };
 
 /// Counters that planners report (zeros where a planner has no such thing).

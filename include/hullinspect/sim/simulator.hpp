@@ -12,6 +12,7 @@
 #include "hullinspect/sim/types.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/launch_sites.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
@@ -36,10 +37,14 @@ class Simulator {
   int time() const { return time_; }
   /// Every counted cell known: the hull cells that can reach their final state (docs/model.md).
   bool complete() const { return known_ == hull_cells_; }
-  /// Complete, at the time limit, or no UAV left that can act (every UAV failed).
+  /// Complete and, with launch sites, every working UAV landed; at the time limit; or no UAV left
+  /// that can act (every UAV failed).
   bool finished() const {
-    return complete() || time_ >= params_.time_limit || failed_ == static_cast<int>(uavs_.size());
+    return (complete() && !homing_) || time_ >= params_.time_limit ||
+           failed_ == static_cast<int>(uavs_.size());
   }
+  /// The UAVs' launch sites and legs (empty without launch sites).
+  const world::LaunchLegs& launch_legs() const { return legs_; }
   int failed_uavs() const { return failed_; }
   const world::MissionParams& params() const { return params_; }
   const world::HullMask& hull() const { return hull_; }
@@ -70,6 +75,9 @@ class Simulator {
   void sense_all();
   void sense(int uav);
   void record_metrics();
+  // Launch sites (docs/model.md): the positions a UAV flies while away, one per step.
+  void advance_away(std::size_t k);
+  void start_homing();
 
   const world::HullMask& hull_;
   const grid::Grid<std::int8_t>& truth_;
@@ -93,6 +101,11 @@ class Simulator {
   int known_ = 0;
   int failed_ = 0;
   MissionResult result_;  // series and counters, filled as the mission runs
+  world::LaunchLegs legs_;
+  std::vector<std::vector<grid::Cell>> away_path_;  // per UAV: its position at each step away
+  std::vector<std::size_t> away_next_;               // per UAV: the next entry of away_path_
+  std::vector<int> climbed_at_;  // per UAV flying home: steps left when it is back on plane 2
+  bool homing_ = false;  // the hull is complete and some working UAV has not landed yet
 };
 
 }  // namespace hullinspect::sim

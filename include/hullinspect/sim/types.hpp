@@ -44,7 +44,12 @@ struct UavState {
   /// ignored, it stays where it is (in transit forever if it failed while changing plane) and
   /// senses nothing. Planners use it only as far as their communication model allows.
   bool failed = false;
-  bool in_transit() const { return transit_left > 0; }
+  /// Steps left flying between the UAV's launch site and the hull (docs/model.md, "Launch sites"):
+  /// on the ground, taking off, flying out to its start cell, or flying home and landing after the
+  /// hull is complete. Like a plane change, the UAV cannot act and senses nothing meanwhile.
+  int away_left = 0;
+  /// True while the UAV cannot act: changing plane, or away at its launch site.
+  bool in_transit() const { return transit_left > 0 || away_left > 0; }
 };
 
 /// Event bits of a reading.

@@ -21,6 +21,11 @@ struct MissionParams {
   int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
   std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
   int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
+  /// Launch sites (docs/model.md, "Launch sites"): the UAVs start on the ground at a site and end
+  /// the mission landed at it. Empty = the paper's model (start airborne at the start cells).
+  std::vector<grid::Cell> launch_sites;
+  double launch_transfer_s = 0;          ///< seconds each way between a site and the quay beyond
+  std::optional<double> takeoff_time_s;  ///< seconds from the ground to plane 2; default u_z steps
   /// No-fly positions (1 = no UAV may be there, on either plane), the hull's size; null = none.
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
 

@@ -1,0 +1,42 @@
+#include "config_launch.hpp"
+
+#include <fmt/format.h>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/world/launch_sites.hpp"
+
+namespace hullinspect::experiment::detail {
+
+void read_launch(const YamlFields& f, const YAML::Node& root, ExperimentConfig& c) {
+  const YAML::Node node = root["launch"];
+  if (!node) return;
+  c.lines["launch"] = YamlFields::line(node);
+  f.expect_map(node, "launch", {"sites", "transfer", "takeoff-time"});
+  const YAML::Node sites = node["sites"];
+  if (!sites || !sites.IsSequence() || sites.size() == 0) {
+    f.fail(sites ? sites : node, "launch.sites", "expected a list of [x, y] cells");
+  }
+  world::MissionParams p;
+  p.time_limit = c.time_limit;
+  p.no_fly = c.no_fly;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const std::string key = fmt::format("launch.sites[{}]", i);
+    const YAML::Node s = sites[i];
+    if (!s.IsSequence() || s.size() != 2) f.fail(s, key, "expected [x, y] in cells");
+    p.launch_sites = {{f.as_int(s[0], key, 0, 1 << 20), f.as_int(s[1], key, 0, 1 << 20)}};
+    try {
+      world::validate_launch_sites(p, *c.hull);
+    } catch (const ParameterError& e) {
+      f.fail(s, key, e.problem());
+    }
+    c.launch_sites.push_back(p.launch_sites.front());
+  }
+  if (node["transfer"]) {
+    c.launch_transfer = f.as_number(node["transfer"], "launch.transfer", 0, c.time_limit);
+  }
+  if (node["takeoff-time"]) {
+    c.takeoff_time = f.as_number(node["takeoff-time"], "launch.takeoff-time", 0, c.time_limit);
+  }
+}
+
+}  // namespace hullinspect::experiment::detail

@@ -1,0 +1,125 @@
+#include "hullinspect/world/launch_sites.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/grid/distance.hpp"
+
+namespace hullinspect::world {
+
+namespace {
+
+/// A time option: finite, not negative, and no longer than the mission's time limit (so that step
+/// counts stay far from overflow).
+void check_seconds(const char* name, double seconds, int time_limit) {
+  if (!std::isfinite(seconds) || seconds < 0.0 || seconds > time_limit) {
+    throw ParameterError(name, fmt::format("must be a number of seconds in [0, {}] (the time "
+                                           "limit) (got {})",
+                                           time_limit, seconds));
+  }
+}
+
+bool on_edge(grid::Cell c, const HullMask& hull) {
+  return c.x == 0 || c.y == 0 || c.x == hull.width() - 1 || c.y == hull.height() - 1;
+}
+
+}  // namespace
+
+int seconds_to_steps(double seconds) {
+  // A step lasts one second; the tolerance keeps 3.0000000001 (a decimal's binary error) at 3.
+  return static_cast<int>(std::ceil(seconds - 1e-9));
+}
+
+void validate_launch_sites(const MissionParams& p, const HullMask& hull) {
+  check_seconds("launch-transfer", p.launch_transfer_s, p.time_limit);
+  if (p.takeoff_time_s) check_seconds("takeoff-time", *p.takeoff_time_s, p.time_limit);
+  for (const grid::Cell c : p.launch_sites) {
+    if (!hull.mask().contains(c)) {
+      throw ParameterError("launch", fmt::format("site ({}, {}) is outside the {} × {} grid", c.x,
+                                                 c.y, hull.width(), hull.height()));
+    }
+    if (p.no_fly && (*p.no_fly)[c] != 0) {
+      throw ParameterError("launch", fmt::format("site ({}, {}) is a no-fly position", c.x, c.y));
+    }
+    if (hull.is_hull(c) && !on_edge(c, hull)) {
+      throw ParameterError("launch", fmt::format("site ({}, {}) is a hull cell inside the grid (a "
+                                                 "site is a non-hull cell or on the grid's edge)",
+                                                 c.x, c.y));
+    }
+  }
+}
+
+int LaunchLegs::homeward_steps(int uav, grid::Cell pos, int z, int transit_left) const {
+  // Finish a plane change under way; a UAV at (or arriving at) plane 1 climbs to plane 2 first.
+  int climb = 0;
+  if (transit_left > 0) {
+    climb = transit_left + (z == 2 ? plane_change_steps : 0);
+  } else if (z == 1) {
+    climb = plane_change_steps;
+  }
+  const auto site = static_cast<std::size_t>(site_of[static_cast<std::size_t>(uav)]);
+  return climb + flight_home[site][pos] + takeoff_steps + transfer_steps;
+}
+
+std::vector<grid::Cell> LaunchLegs::path_home(int uav, grid::Cell from) const {
+  const auto& d = flight_home[static_cast<std::size_t>(site_of[static_cast<std::size_t>(uav)])];
+  std::vector<grid::Cell> path;
+  grid::Cell c = from;
+  while (d[c] > 0) {
+    const grid::Cell next[] = {{c.x - 1, c.y}, {c.x + 1, c.y}, {c.x, c.y - 1}, {c.x, c.y + 1}};
+    for (const grid::Cell n : next) {
+      if (d.contains(n) && d[n] == d[c] - 1) {
+        c = n;
+        break;
+      }
+    }
+    path.push_back(c);
+  }
+  return path;
+}
+
+LaunchLegs plan_launch_legs(const MissionParams& p, const Reachability& reach,
+                            std::span<const grid::Cell> starts) {
+  LaunchLegs legs;
+  if (p.launch_sites.empty()) return legs;
+  legs.sites = p.launch_sites;
+  legs.plane_change_steps = p.plane_change_steps();
+  legs.takeoff_steps =
+      p.takeoff_time_s ? seconds_to_steps(*p.takeoff_time_s) : legs.plane_change_steps;
+  legs.transfer_steps = seconds_to_steps(p.launch_transfer_s);
+
+  // The flyable positions plus the sites themselves: a site off the start's component is refused
+  // below rather than silently unreachable.
+  grid::Grid<std::uint8_t> passable = reach.flyable;
+  for (const grid::Cell s : legs.sites) passable[s] = 1;
+  grid::BfsScratch scratch;
+  for (const grid::Cell s : legs.sites) {
+    grid::Grid<int> d;
+    const int source = passable.index(s.x, s.y);
+    grid::bfs_distances(passable, std::span<const int>(&source, 1), d, scratch);
+    legs.flight_home.push_back(std::move(d));
+  }
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    int best = -1;
+    for (std::size_t s = 0; s < legs.sites.size(); ++s) {
+      const int d = legs.flight_home[s][starts[k]];
+      if (d < grid::kUnreachable &&
+          (best < 0 || d < legs.flight_home[static_cast<std::size_t>(best)][starts[k]]))
+        best = static_cast<int>(s);
+    }
+    if (best < 0) {
+      throw ParameterError("launch", fmt::format("no site can reach UAV {}'s start cell ({}, {}) "
+                                                 "in flight (no-fly positions cut them off)",
+                                                 k, starts[k].x, starts[k].y));
+    }
+    legs.site_of.push_back(best);
+    const int descent = p.start_z == 1 ? legs.plane_change_steps : 0;
+    legs.outbound.push_back(legs.transfer_steps + legs.takeoff_steps +
+                            legs.flight_home[static_cast<std::size_t>(best)][starts[k]] + descent);
+  }
+  return legs;
+}
+
+}  // namespace hullinspect::world
