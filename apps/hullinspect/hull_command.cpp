@@ -33,11 +33,28 @@ int import(const HullImportArgs& args) {
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
   io::write_file_atomic(out, world::to_hull_json(hull));
-  std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
-                           imported.facing_facets, world::to_string(g.side));
+  if (g.unrolled()) {
+    std::cout << fmt::format("{}: {} facets, unrolled (port, bow, starboard{})\n", args.mesh,
+                             imported.facets, args.options.include.empty() ? "" : ", transom");
+  } else {
+    std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
+                             imported.facing_facets, world::to_string(g.side));
+  }
   std::cout << fmt::format("  grid {} × {} cells of {} m, {} hull cells ({:.1f} m²)\n",
                            hull.width(), hull.height(), g.cell_size, hull.cell_count(),
                            hull.cell_count() * g.cell_size * g.cell_size);
+  if (g.unrolled()) {
+    std::cout << fmt::format(
+        "  surface {:.1f} m²; cell-area error worst {:.1f} % at cell ({}, {}), mean {:.1f} %\n",
+        imported.surface_area, 100 * imported.worst_area_error, imported.worst_area_cell.x,
+        imported.worst_area_cell.y, 100 * imported.mean_area_error);
+    std::cout << fmt::format(
+        "  columns from {:.3f} m (port) to {:.3f} m (starboard) around the "
+        "bow; Z0 = {:.3f} m\n",
+        g.x0, g.x0 + hull.width() * g.cell_size, g.z0);
+    std::cout << fmt::format("  wrote {}\n", out);
+    return 0;
+  }
   float max_depth = 0;
   for (int i : hull.cells()) max_depth = std::max(max_depth, g.depth[i]);
   // Rounded before printing so that a tiny negative value does not print as "-0.000".

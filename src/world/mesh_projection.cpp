@@ -87,11 +87,26 @@ void MeshImportOptions::validate() const {
   if (waterline && !std::isfinite(*waterline)) {
     throw ParameterError("waterline", "expected a finite number of metres");
   }
+  if (include_bottom) {
+    throw ParameterError("include",
+                         "bottom is not supported: a UAV standing off horizontally cannot see the "
+                         "flat bottom (expected transom)");
+  }
+  if (include_transom && side != HullSide::both) {
+    throw ParameterError("include", "transom needs --sides both (one side has no transom)");
+  }
+  if (max_area_error && !(*max_area_error >= 0 && std::isfinite(*max_area_error))) {
+    throw ParameterError("max-area-error", "expected a fraction >= 0 (0.1 is 10 %)");
+  }
+  if (max_area_error && side != HullSide::both) {
+    throw ParameterError("max-area-error", "needs --sides both (a side projection keeps areas)");
+  }
 }
 
 MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImportOptions& opt,
                         const std::string& source) {
   opt.validate();
+  if (opt.side == HullSide::both) return unroll_mesh(triangles, opt, source);
   const double out_sign = opt.side == HullSide::port ? 1.0 : -1.0;
   const bool flip = opt.axes.determinant() < 0;  // a reflection reverses the winding
   const double floor = opt.waterline ? *opt.waterline : -kInf;
@@ -264,6 +279,16 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
     if (outward[i] > -kInf) g.depth[i] = static_cast<float>(outward[i] - innermost);
   }
 
+  MeshImport imported = detail::finish_import(std::move(is_hull), std::move(g), opt, source);
+  imported.facets = static_cast<int>(triangles.size());
+  imported.facing_facets = static_cast<int>(facing.size());
+  return imported;
+}
+
+namespace detail {
+
+MeshImport finish_import(grid::Grid<std::uint8_t> is_hull, HullGeometry g,
+                         const MeshImportOptions& opt, const std::string& source) {
   std::vector<std::string> warnings;
   int hull_cells = 0;
   for (int i = 0; i < is_hull.size(); ++i) hull_cells += is_hull[i];
@@ -302,8 +327,9 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
   }
   HullMask hull(std::move(is_hull), source);
   hull.attach_geometry(std::move(g));
-  return MeshImport{std::move(hull), std::move(warnings), static_cast<int>(triangles.size()),
-                    static_cast<int>(facing.size())};
+  return MeshImport{std::move(hull), std::move(warnings)};
 }
+
+}  // namespace detail
 
 }  // namespace hullinspect::world
