@@ -43,6 +43,10 @@ int import(const HullImportArgs& args) {
   std::cout << fmt::format("  grid {} × {} cells of {} m, {} hull cells ({:.1f} m²)\n",
                            hull.width(), hull.height(), g.cell_size, hull.cell_count(),
                            hull.cell_count() * g.cell_size * g.cell_size);
+  float max_depth = 0;
+  for (int i : hull.cells()) max_depth = std::max(max_depth, g.depth[i]);
+  // Rounded before printing so that a tiny negative value does not print as "-0.000".
+  const auto metres = [](double v) { return std::round(v * 1000) / 1000 + 0.0; };
   if (g.unrolled()) {
     std::cout << fmt::format(
         "  surface {:.1f} m²; cell-area error worst {:.1f} % at cell ({}, {}), mean {:.1f} %\n",
@@ -51,14 +55,10 @@ int import(const HullImportArgs& args) {
     std::cout << fmt::format(
         "  columns from {:.3f} m (port) to {:.3f} m (starboard) around the "
         "bow; Z0 = {:.3f} m\n",
-        g.x0, g.x0 + hull.width() * g.cell_size, g.z0);
+        metres(g.x0), metres(g.x0 + hull.width() * g.cell_size), metres(g.z0));
     std::cout << fmt::format("  wrote {}\n", out);
     return 0;
   }
-  float max_depth = 0;
-  for (int i : hull.cells()) max_depth = std::max(max_depth, g.depth[i]);
-  // Rounded before printing so that a tiny negative value does not print as "-0.000".
-  const auto metres = [](double v) { return std::round(v * 1000) / 1000 + 0.0; };
   std::cout << fmt::format(
       "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
       metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));
