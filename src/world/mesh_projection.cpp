@@ -175,18 +175,7 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
       facets.begin(), facets.end(),
       [](const ProjectedFacet& a, const ProjectedFacet& b) { return a.row_first < b.row_first; });
 
-  HullGeometry g;
-  g.cell_size = opt.cell_size;
-  g.x0 = x0;
-  g.z0 = z0;
-  g.side = opt.side;
-  g.axes = opt.axes;
-  g.scale = opt.scale;
-  g.waterline = opt.waterline;
-  g.min_coverage = opt.min_coverage;
-  g.mesh = source;
-  g.depth = grid::Grid<float>(width, height, 0.0f);
-  g.coverage = grid::Grid<float>(width, height, 0.0f);
+  HullGeometry g = detail::empty_geometry(opt, source, x0, z0, width, height);
   g.normal = grid::Grid<Normal>(width, height, Normal{0, static_cast<float>(out_sign), 0});
   grid::Grid<double> outward(width, height, -kInf);  // o of the surface kept for each cell
   grid::Grid<std::uint8_t> is_hull(width, height, 0);
@@ -286,6 +275,24 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
 }
 
 namespace detail {
+
+HullGeometry empty_geometry(const MeshImportOptions& opt, const std::string& source, double x0,
+                            double z0, int width, int height) {
+  HullGeometry g;
+  g.cell_size = opt.cell_size;
+  g.x0 = x0;
+  g.z0 = z0;
+  g.side = opt.side;
+  g.axes = opt.axes;
+  g.scale = opt.scale;
+  g.waterline = opt.waterline;
+  g.min_coverage = opt.min_coverage;
+  g.mesh = source;
+  g.depth = grid::Grid<float>(width, height, 0.0f);
+  g.coverage = grid::Grid<float>(width, height, 0.0f);
+  g.normal = grid::Grid<Normal>(width, height, Normal{0, -1, 0});
+  return g;
+}
 
 MeshImport finish_import(grid::Grid<std::uint8_t> is_hull, HullGeometry g,
                          const MeshImportOptions& opt, const std::string& source) {

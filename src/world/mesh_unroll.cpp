@@ -409,20 +409,8 @@ MeshImport unroll_mesh(std::span<const MeshTriangle> triangles, const MeshImport
   const int width = static_cast<int>(wd);
   const double u0 = -port_cells * c;
 
-  HullGeometry g;
-  g.cell_size = c;
-  g.x0 = u0;
-  g.z0 = z0;
+  HullGeometry g = detail::empty_geometry(opt, source, u0, z0, width, height);
   g.side_plane_y = mesh.centre_y();
-  g.side = HullSide::both;
-  g.axes = opt.axes;
-  g.scale = opt.scale;
-  g.waterline = opt.waterline;
-  g.min_coverage = opt.min_coverage;
-  g.mesh = source;
-  g.depth = grid::Grid<float>(width, height, 0.0f);
-  g.coverage = grid::Grid<float>(width, height, 0.0f);
-  g.normal = grid::Grid<Normal>(width, height, Normal{0, -1, 0});
   g.surface = grid::Grid<Point3>(width, height, Point3{});
   grid::Grid<std::uint8_t> is_hull(width, height, 0);
   grid::Grid<double> area(width, height, 0.0);  // surface area of the covered samples, m²

@@ -100,6 +100,9 @@ MeshImport unroll_mesh(std::span<const MeshTriangle> triangles, const MeshImport
                        const std::string& source);
 
 namespace detail {
+/// A geometry of width × height cells with the options' provenance, no surface and no coverage.
+HullGeometry empty_geometry(const MeshImportOptions& options, const std::string& source, double x0,
+                            double z0, int width, int height);
 /// The end of every import: checks the hull cells are 4-connected (or keeps the largest part
 /// with a warning), attaches the geometry.
 MeshImport finish_import(grid::Grid<std::uint8_t> is_hull, HullGeometry geometry,
