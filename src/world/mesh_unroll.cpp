@@ -154,28 +154,29 @@ class Unroller {
       // A vertex exactly at z counts as above: every facet then has 0 or 2 crossing edges.
       std::array<bool, 3> above{f.p[0][2] >= z, f.p[1][2] >= z, f.p[2][2] >= z};
       if (above[0] == above[1] && above[1] == above[2]) continue;
-      Segment seg{};
-      int found = 0;
-      for (std::size_t k = 0; k < 3; ++k) {
-        std::size_t a = k, b = (k + 1) % 3;
-        if (above[a] == above[b]) continue;
-        // Interpolated from the lower vertex id so both facets on the edge get the same point.
+      // The crossing on the edge from vertex a to vertex b, interpolated from the lower vertex id
+      // so that both facets on the edge get the same point.
+      const auto crossing = [&](std::size_t a, std::size_t b, std::uint64_t& key, double& x,
+                                double& y) {
         if (f.vertex[a] > f.vertex[b]) std::swap(a, b);
         const double t = (z - f.p[a][2]) / (f.p[b][2] - f.p[a][2]);
-        const double x = f.p[a][0] + t * (f.p[b][0] - f.p[a][0]);
-        const double y = f.p[a][1] + t * (f.p[b][1] - f.p[a][1]);
-        const std::uint64_t key = edge_key(f.vertex[a], f.vertex[b]);
-        if (found++ == 0) {
-          seg.from = key, seg.ax = x, seg.ay = y;
-        } else {
-          seg.to = key, seg.bx = x, seg.by = y;
-        }
-      }
-      // Along ẑ × n: counter-clockwise seen from above around an outward-facing surface.
-      if ((seg.bx - seg.ax) * -f.normal.y + (seg.by - seg.ay) * f.normal.x < 0) {
-        std::swap(seg.from, seg.to);
-        std::swap(seg.ax, seg.bx);
-        std::swap(seg.ay, seg.by);
+        x = f.p[a][0] + t * (f.p[b][0] - f.p[a][0]);
+        y = f.p[a][1] + t * (f.p[b][1] - f.p[a][1]);
+        key = edge_key(f.vertex[a], f.vertex[b]);
+      };
+      // The vertex alone on its side of the cut. The facets wind counter-clockwise seen from
+      // outside, so the piece runs along ẑ × n (counter-clockwise seen from above) from the edge
+      // after a lone vertex above to the edge before it (the other way round for one below):
+      // decided by the winding, not by the points, which coincide when the cut passes a vertex.
+      const std::size_t lone = above[0] == above[1] ? 2 : (above[0] == above[2] ? 1 : 0);
+      const std::size_t next = (lone + 1) % 3, prev = (lone + 2) % 3;
+      Segment seg{};
+      if (above[lone]) {
+        crossing(lone, next, seg.from, seg.ax, seg.ay);
+        crossing(prev, lone, seg.to, seg.bx, seg.by);
+      } else {
+        crossing(prev, lone, seg.from, seg.ax, seg.ay);
+        crossing(lone, next, seg.to, seg.bx, seg.by);
       }
       seg.facet = static_cast<int>(i);
       segments.push_back(seg);

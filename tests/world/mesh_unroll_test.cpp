@@ -98,6 +98,10 @@ TEST(MeshUnroll, WigleyHullKeepsItsAnalyticSurfaceArea) {
     }
   }
   EXPECT_NEAR(m.surface_area, analytic, 0.02 * analytic);
+  // At 2 m cells a cut passes exactly through a row of the mesh's vertices (z = −7 m): the pieces
+  // there have no length and still chain into one outline.
+  const MeshImport coarse = project_mesh(wigley_triangles(w), both(2.0), "wigley");
+  EXPECT_NEAR(coarse.surface_area, analytic, 0.02 * analytic);
   // Rows are heights, so the grid holds the side's projection on arc length × z: the slope toward
   // the keel is the cell-area error, reported rather than hidden.
   const double c = 0.5;
