@@ -37,8 +37,13 @@ int import(const HullImportArgs& args) {
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
   outputs.write(out, world::to_hull_json(hull));
-  std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
-                           imported.facing_facets, world::to_string(g.side));
+  if (g.unrolled()) {
+    std::cout << fmt::format("{}: {} facets, unrolled (port, bow, starboard{})\n", args.mesh,
+                             imported.facets, args.options.include.empty() ? "" : ", transom");
+  } else {
+    std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
+                             imported.facing_facets, world::to_string(g.side));
+  }
   std::cout << fmt::format("  grid {} × {} cells of {} m, {} hull cells ({:.1f} m²)\n",
                            hull.width(), hull.height(), g.cell_size, hull.cell_count(),
                            hull.cell_count() * g.cell_size * g.cell_size);
@@ -46,6 +51,18 @@ int import(const HullImportArgs& args) {
   for (int i : hull.cells()) max_depth = std::max(max_depth, g.depth[i]);
   // Rounded before printing so that a tiny negative value does not print as "-0.000".
   const auto metres = [](double v) { return std::round(v * 1000) / 1000 + 0.0; };
+  if (g.unrolled()) {
+    std::cout << fmt::format(
+        "  surface {:.1f} m²; cell-area error worst {:.1f} % at cell ({}, {}), mean {:.1f} %\n",
+        imported.surface_area, 100 * imported.worst_area_error, imported.worst_area_cell.x,
+        imported.worst_area_cell.y, 100 * imported.mean_area_error);
+    std::cout << fmt::format(
+        "  columns from {:.3f} m (port) to {:.3f} m (starboard) around the "
+        "bow; Z0 = {:.3f} m\n",
+        metres(g.x0), metres(g.x0 + hull.width() * g.cell_size), metres(g.z0));
+    std::cout << fmt::format("  wrote {}\n", out);
+    return 0;
+  }
   std::cout << fmt::format(
       "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
       metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));

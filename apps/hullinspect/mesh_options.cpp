@@ -4,6 +4,8 @@
 
 #include <iostream>
 
+#include "hullinspect/core/errors.hpp"
+
 namespace hullinspect::cli {
 
 void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
@@ -12,7 +14,8 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
   // the options are optional here so that a named mesh hull can start from its own.
   const world::MeshImportOptions d;
   const auto number = [](double v) { return fmt::format("{}", v); };
-  cmd.add_option("--side", a.side, "Side inspected: port or starboard")
+  cmd.add_option("--side,--sides", a.side,
+                 "Side inspected: port, starboard, or both (the whole hull unrolled into one grid)")
       ->default_str(std::string(world::to_string(d.side)))
       ->group(group);
   cmd.add_option("--cell-size", a.cell_size, "Cell side in metres")
@@ -40,6 +43,15 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
   cmd.add_flag("--keep-largest", a.keep_largest,
                "Keep the largest 4-connected part of the projection (else an error)")
       ->group(group);
+  cmd.add_option("--include", a.include,
+                 "With --sides both: also unroll the transom (closing the grid around the stern)")
+      ->type_name("transom")
+      ->delimiter(',')
+      ->group(group);
+  cmd.add_option("--max-area-error", a.max_area_error,
+                 "With --sides both: refuse an import whose worst cell-area error is above this "
+                 "fraction (0.1 is 10 %; default: no limit)")
+      ->group(group);
 }
 
 world::MeshImportOptions mesh_import_options(const MeshArgs& a, world::MeshImportOptions o) {
@@ -50,6 +62,16 @@ world::MeshImportOptions mesh_import_options(const MeshArgs& a, world::MeshImpor
   if (a.waterline) o.waterline = a.waterline;
   if (a.min_coverage) o.min_coverage = *a.min_coverage;
   if (a.keep_largest) o.keep_largest = true;
+  for (const std::string& part : a.include) {
+    if (part == "transom") {
+      o.include_transom = true;
+    } else if (part == "bottom") {
+      o.include_bottom = true;
+    } else {
+      throw ParameterError("include", fmt::format("expected transom, got '{}'", part));
+    }
+  }
+  if (a.max_area_error) o.max_area_error = a.max_area_error;
   o.validate();
   return o;
 }
@@ -67,7 +89,10 @@ world::HullMask load_hull_argument(const std::string& hull, const MeshArgs& args
   if (world::is_named_mesh_hull(hull) || world::is_mesh_path(hull)) {
     return std::move(import_mesh_argument(hull, args).hull);
   }
-  mesh_import_options(args);  // options given with a plain mask are still checked
+  // Options given with a plain mask are still checked.
+  if (mesh_import_options(args).side == world::HullSide::both) {
+    throw ParameterError("sides", "both needs a mesh hull: a mask has no 3D surface to unroll");
+  }
   return world::load_hull(hull);
 }
 

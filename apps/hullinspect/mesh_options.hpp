@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "hullinspect/world/mesh_hull.hpp"
 
@@ -20,6 +21,8 @@ struct MeshArgs {
   std::optional<double> waterline;
   std::optional<double> min_coverage;
   bool keep_largest = false;
+  std::vector<std::string> include;  ///< transom (bottom is refused)
+  std::optional<double> max_area_error;
 };
 
 void add_mesh_options(CLI::App& cmd, MeshArgs& args);

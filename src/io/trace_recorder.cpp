@@ -157,7 +157,8 @@ void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner&
   trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};
   // A hull from a mesh: its surface stands out from the side plane by depth(x, y), which exports
   // add to the stand-off (docs/model.md "Frames and exports"). Absent for a plain mask.
-  if (const auto* g = hull.geometry()) trace_["ship_frame"] = ship_frame(*g);
+  // An unrolled hull has no single side plane: its trace stays in grid coordinates.
+  if (const auto* g = hull.geometry(); g && !g->unrolled()) trace_["ship_frame"] = ship_frame(*g);
   trace_["truth"] = rows(instance_.truth, matrix_symbol);
   trace_["prior"] = rows(instance_.prior, matrix_symbol);
   if (const auto* p = planner.partition()) {

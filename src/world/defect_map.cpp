@@ -187,6 +187,7 @@ struct GridFrame {
   double x0 = 0;
   double z0 = 0;
   HullSide side = HullSide::starboard;
+  const HullGeometry* unrolled = nullptr;  // the 3D surface of an unrolled hull
 };
 
 GridFrame frame_of(const HullMask& hull) {
@@ -196,6 +197,7 @@ GridFrame frame_of(const HullMask& hull) {
     f.x0 = g->x0;
     f.z0 = g->z0;
     f.side = g->side;
+    if (g->unrolled()) f.unrolled = g;
   }
   return f;
 }
@@ -222,6 +224,32 @@ CorrosionMap rasterise_defects(const std::vector<Defect>& defects, const std::st
     throw InputError(source, 0, fmt::format("{}: {}", d.where, problem));
   };
   for (const Defect& d : defects) {
+    if (f.unrolled) {
+      // Rows by height as on a side; columns are the cells of the defect's side (port left of the
+      // bow, starboard right) whose surface point lies in [x − w/2, x + w/2).
+      const HullGeometry& g = *f.unrolled;
+      int y_lo = static_cast<int>(std::ceil(row(d.z_m - d.h_m / 2)));
+      int y_hi = static_cast<int>(std::ceil(row(d.z_m + d.h_m / 2))) - 1;
+      if (y_lo > y_hi) y_lo = y_hi = static_cast<int>(std::lround(row(d.z_m)));
+      const double half = std::max(d.w_m, f.cell) / 2;  // a point defect marks the nearest cell
+      int marked = 0;
+      for (int y = std::max(y_lo, 0); y <= std::min(y_hi, hull.height() - 1); ++y) {
+        for (int x = 0; x < hull.width(); ++x) {
+          const bool port_cell = g.centre_x(x) < 0;
+          if (!hull.is_hull(x, y) || port_cell != (d.side == HullSide::port)) continue;
+          const double sx = g.surface(x, y).x;
+          if (sx < d.x_m - half || sx >= d.x_m + half) continue;
+          map.cells(x, y) = 1;
+          ++marked;
+        }
+      }
+      if (marked == 0) {
+        fail(d, fmt::format("the defect at x {:g} m, z {:g} m covers no hull cell on the {} side "
+                            "of the unrolled hull (z spans {:g} … {:g} m)",
+                            d.x_m, d.z_m, to_string(d.side), f.z0, f.z0 + hull.height() * f.cell));
+      }
+      continue;
+    }
     if (d.side != f.side) {
       fail(d, fmt::format("the defect is on the {} side but the hull shows {}", to_string(d.side),
                           to_string(f.side)));

@@ -26,13 +26,22 @@ constexpr std::string_view kAxisNames = "xyz";
 }  // namespace
 
 std::string_view to_string(HullSide side) {
-  return side == HullSide::port ? "port" : "starboard";
+  switch (side) {
+    case HullSide::port:
+      return "port";
+    case HullSide::both:
+      return "both";
+    case HullSide::starboard:
+      break;
+  }
+  return "starboard";
 }
 
 HullSide parse_hull_side(std::string_view text) {
   if (text == "starboard") return HullSide::starboard;
   if (text == "port") return HullSide::port;
-  throw ParameterError("side", fmt::format("expected port or starboard, got '{}'", text));
+  if (text == "both") return HullSide::both;
+  throw ParameterError("side", fmt::format("expected port, starboard or both, got '{}'", text));
 }
 
 AxisMap AxisMap::parse(std::string_view text) {
@@ -113,6 +122,11 @@ void validate(const HullGeometry& g, const HullMask& mask, const std::string& so
   check_size("depth", g.depth.width(), g.depth.height());
   check_size("normal", g.normal.width(), g.normal.height());
   check_size("coverage", g.coverage.width(), g.coverage.height());
+  if (g.unrolled()) {
+    check_size("surface", g.surface.width(), g.surface.height());
+  } else if (g.surface.size() != 0) {
+    fail(source, "surface", "is only for an unrolled hull (side both)");
+  }
   for (int y = 0; y < mask.height(); ++y) {
     for (int x = 0; x < mask.width(); ++x) {
       const float d = g.depth(x, y);
@@ -122,6 +136,12 @@ void validate(const HullGeometry& g, const HullMask& mask, const std::string& so
       const float c = g.coverage(x, y);
       if (!(c >= 0 && c <= 1)) {
         fail(source, "coverage", fmt::format("cell ({}, {}) is {}; expected 0..1", x, y, c));
+      }
+      if (g.unrolled()) {
+        const Point3 p = g.surface(x, y);
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+          fail(source, "surface", fmt::format("cell ({}, {}) is not a finite point", x, y));
+        }
       }
       const Normal n = g.normal(x, y);
       const double len = std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z);
@@ -259,6 +279,16 @@ HullMask parse_hull_json(std::string_view bytes, const std::string& source) {
     }
     return Normal{v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
   });
+  if (g.unrolled()) {
+    g.surface =
+        rows<Point3>(doc, "surface", width, height, source, [&](const json& v, int x, int y) {
+          if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
+              !v[2].is_number()) {
+            fail(source, "surface", fmt::format("cell ({}, {}) is not [X, Y, Z]", x, y));
+          }
+          return Point3{v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+        });
+  }
   mask.attach_geometry(std::move(g));
   return mask;
 }
@@ -300,6 +330,18 @@ std::string to_hull_json(const HullMask& hull) {
   doc["depth"] = std::move(depth);
   doc["normal"] = std::move(normal);
   doc["coverage"] = std::move(coverage);
+  if (g->unrolled()) {
+    json surface = json::array();
+    for (int y = 0; y < hull.height(); ++y) {
+      json row = json::array();
+      for (int x = 0; x < hull.width(); ++x) {
+        const Point3 p = g->surface(x, y);
+        row.push_back({rounded(p.x, 1e-4), rounded(p.y, 1e-4), rounded(p.z, 1e-4)});
+      }
+      surface.push_back(std::move(row));
+    }
+    doc["surface"] = std::move(surface);
+  }
   return doc.dump() + "\n";
 }
 

@@ -87,11 +87,26 @@ void MeshImportOptions::validate() const {
   if (waterline && !std::isfinite(*waterline)) {
     throw ParameterError("waterline", "expected a finite number of metres");
   }
+  if (include_bottom) {
+    throw ParameterError("include",
+                         "bottom is not supported: a UAV standing off horizontally cannot see the "
+                         "flat bottom (expected transom)");
+  }
+  if (include_transom && side != HullSide::both) {
+    throw ParameterError("include", "transom needs --sides both (one side has no transom)");
+  }
+  if (max_area_error && !(*max_area_error >= 0 && std::isfinite(*max_area_error))) {
+    throw ParameterError("max-area-error", "expected a fraction >= 0 (0.1 is 10 %)");
+  }
+  if (max_area_error && side != HullSide::both) {
+    throw ParameterError("max-area-error", "needs --sides both (a side projection keeps areas)");
+  }
 }
 
 MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImportOptions& opt,
                         const std::string& source) {
   opt.validate();
+  if (opt.side == HullSide::both) return unroll_mesh(triangles, opt, source);
   const double out_sign = opt.side == HullSide::port ? 1.0 : -1.0;
   const bool flip = opt.axes.determinant() < 0;  // a reflection reverses the winding
   const double floor = opt.waterline ? *opt.waterline : -kInf;
@@ -160,18 +175,7 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
       facets.begin(), facets.end(),
       [](const ProjectedFacet& a, const ProjectedFacet& b) { return a.row_first < b.row_first; });
 
-  HullGeometry g;
-  g.cell_size = opt.cell_size;
-  g.x0 = x0;
-  g.z0 = z0;
-  g.side = opt.side;
-  g.axes = opt.axes;
-  g.scale = opt.scale;
-  g.waterline = opt.waterline;
-  g.min_coverage = opt.min_coverage;
-  g.mesh = source;
-  g.depth = grid::Grid<float>(width, height, 0.0f);
-  g.coverage = grid::Grid<float>(width, height, 0.0f);
+  HullGeometry g = detail::empty_geometry(opt, source, x0, z0, width, height);
   g.normal = grid::Grid<Normal>(width, height, Normal{0, static_cast<float>(out_sign), 0});
   grid::Grid<double> outward(width, height, -kInf);  // o of the surface kept for each cell
   grid::Grid<std::uint8_t> is_hull(width, height, 0);
@@ -264,6 +268,34 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
     if (outward[i] > -kInf) g.depth[i] = static_cast<float>(outward[i] - innermost);
   }
 
+  MeshImport imported = detail::finish_import(std::move(is_hull), std::move(g), opt, source);
+  imported.facets = static_cast<int>(triangles.size());
+  imported.facing_facets = static_cast<int>(facing.size());
+  return imported;
+}
+
+namespace detail {
+
+HullGeometry empty_geometry(const MeshImportOptions& opt, const std::string& source, double x0,
+                            double z0, int width, int height) {
+  HullGeometry g;
+  g.cell_size = opt.cell_size;
+  g.x0 = x0;
+  g.z0 = z0;
+  g.side = opt.side;
+  g.axes = opt.axes;
+  g.scale = opt.scale;
+  g.waterline = opt.waterline;
+  g.min_coverage = opt.min_coverage;
+  g.mesh = source;
+  g.depth = grid::Grid<float>(width, height, 0.0f);
+  g.coverage = grid::Grid<float>(width, height, 0.0f);
+  g.normal = grid::Grid<Normal>(width, height, Normal{0, -1, 0});
+  return g;
+}
+
+MeshImport finish_import(grid::Grid<std::uint8_t> is_hull, HullGeometry g,
+                         const MeshImportOptions& opt, const std::string& source) {
   std::vector<std::string> warnings;
   int hull_cells = 0;
   for (int i = 0; i < is_hull.size(); ++i) hull_cells += is_hull[i];
@@ -302,8 +334,9 @@ MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImpor
   }
   HullMask hull(std::move(is_hull), source);
   hull.attach_geometry(std::move(g));
-  return MeshImport{std::move(hull), std::move(warnings), static_cast<int>(triangles.size()),
-                    static_cast<int>(facing.size())};
+  return MeshImport{std::move(hull), std::move(warnings)};
 }
+
+}  // namespace detail
 
 }  // namespace hullinspect::world

@@ -78,7 +78,7 @@ TEST_P(HullImportBadInput, OneLineExitTwoNothingWritten) {
 INSTANTIATE_TEST_SUITE_P(
     Table, HullImportBadInput,
     ::testing::Values(
-        BadImport{{"MESH", "--side", "aft"}, "--side: expected port or starboard, got 'aft'"},
+        BadImport{{"MESH", "--side", "aft"}, "--side: expected port, starboard or both, got 'aft'"},
         BadImport{{"MESH", "--axes", "x,y"},
                   "--axes: expected a signed permutation of x,y,z like x,-z,y, got 'x,y'"},
         BadImport{{"MESH", "--cell-size", "0"},

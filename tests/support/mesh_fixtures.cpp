@@ -12,6 +12,23 @@
 
 namespace hullinspect::testing {
 
+std::vector<world::MeshTriangle> box_mesh(double x0, double x1, double y0, double y1, double z0,
+                                          double z1) {
+  using Vec = std::array<double, 3>;
+  std::vector<world::MeshTriangle> t;
+  const auto quad = [&](Vec a, Vec b, Vec c, Vec d) {
+    t.push_back(world::MeshTriangle{{a, b, c}});
+    t.push_back(world::MeshTriangle{{a, c, d}});
+  };
+  quad({x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1});  // starboard (−y)
+  quad({x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0});  // port (+y)
+  quad({x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1});  // top
+  quad({x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}, {x1, y0, z0});  // bottom
+  quad({x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0});  // stern
+  quad({x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1});  // bow
+  return t;
+}
+
 std::filesystem::path wigley_stl(const WigleyHull& h) {
   const auto dir =
       std::filesystem::temp_directory_path() / fmt::format("hullinspect_wigley_{}", ::getpid());

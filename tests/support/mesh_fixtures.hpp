@@ -4,6 +4,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "hullinspect/world/mesh_hull.hpp"
 
 namespace hullinspect::testing {
 
@@ -19,6 +22,10 @@ std::filesystem::path wigley_stl(const WigleyHull& hull);
 
 /// Half-breadth y = (B/2)(1 − (2x/L)²)(1 − (z/T)²) of the hull at (x, z), z in [−T, 0].
 double wigley_half_breadth(const WigleyHull& hull, double x, double z);
+
+/// A closed box [x0,x1] × [y0,y1] × [z0,z1] of 12 facets wound counter-clockwise seen from outside.
+std::vector<world::MeshTriangle> box_mesh(double x0, double x1, double y0, double y1, double z0,
+                                          double z1);
 
 /// The installed DTC mesh, or nullopt (with the reason in `why`) when openfoam-examples is absent.
 std::optional<std::filesystem::path> installed_dtc(std::string& why);

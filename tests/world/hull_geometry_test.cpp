@@ -62,7 +62,7 @@ TEST(AxisMap, ParsesSignedPermutations) {
   EXPECT_EQ(error_of([] { AxisMap::parse("x,y,z,"); }), expected + "'x,y,z,'");
   EXPECT_EQ(error_of([] { AxisMap::parse("x,w,z"); }), expected + "'x,w,z'");
   EXPECT_EQ(error_of([] { parse_hull_side("aft"); }),
-            "side: expected port or starboard, got 'aft'");
+            "side: expected port, starboard or both, got 'aft'");
 }
 
 TEST(HullGeometry, FramesFollowTheModel) {
@@ -132,7 +132,7 @@ TEST(HullGeometry, BadFilesNameTheField) {
             "h.json: mask: row 0 must have 3 values");
   EXPECT_EQ(with([](auto& d) { d["mask"][1][0] = 2; }), "h.json: mask: cell (0, 1) is not 0 or 1");
   EXPECT_EQ(with([](auto& d) { d["side"] = "aft"; }),
-            "h.json: side: expected port or starboard, got 'aft'");
+            "h.json: side: expected port, starboard or both, got 'aft'");
   EXPECT_EQ(with([](auto& d) { d["depth"][0][1] = -0.5; }),
             "h.json: depth: cell (1, 0) is -0.5; expected metres >= 0");
   EXPECT_EQ(with([](auto& d) {

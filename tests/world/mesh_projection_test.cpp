@@ -7,6 +7,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
+#include "support/mesh_fixtures.hpp"
 
 namespace hullinspect::world {
 namespace {
@@ -30,14 +31,7 @@ void quad(std::vector<MeshTriangle>& out, Vec a, Vec b, Vec c, Vec d) {
 
 /// A closed box [x0,x1] × [y0,y1] × [z0,z1] with outward winding.
 std::vector<MeshTriangle> box(double x0, double x1, double y0, double y1, double z0, double z1) {
-  std::vector<MeshTriangle> t;
-  quad(t, {x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1});  // starboard (−y)
-  quad(t, {x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0});  // port (+y)
-  quad(t, {x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1});  // top
-  quad(t, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}, {x1, y0, z0});  // bottom
-  quad(t, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0});  // stern
-  quad(t, {x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1});  // bow
-  return t;
+  return testing::box_mesh(x0, x1, y0, y1, z0, z1);
 }
 
 /// A starboard-facing rectangle at y over [x0,x1] × [z0,z1].

@@ -16,11 +16,12 @@ namespace hullinspect::world {
 class HullMask;
 
 /// The side of the ship being inspected. Starboard is seen from −y looking toward +y (y is to
-/// port).
-enum class HullSide { starboard, port };
+/// port). `both` is the unrolled hull (docs/hulls.md "The whole hull"): port, bow and starboard in
+/// one grid whose columns follow the waterline-direction section by arc length.
+enum class HullSide { starboard, port, both };
 
 std::string_view to_string(HullSide side);
-/// Parses "starboard" or "port"; throws ParameterError("side", …) otherwise.
+/// Parses "starboard", "port" or "both"; throws ParameterError("side", …) otherwise.
 HullSide parse_hull_side(std::string_view text);
 
 /// How a mesh file's axes map to the ship frame (x stern→bow, y to port, z up): ship axis i is
@@ -44,6 +45,12 @@ struct Normal {
   friend bool operator==(const Normal&, const Normal&) = default;
 };
 
+/// A point in the ship frame, metres.
+struct Point3 {
+  float x = 0, y = 0, z = 0;
+  friend bool operator==(const Point3&, const Point3&) = default;
+};
+
 /// Ship-frame geometry of a hull grid (docs/model.md): grid position (x, y) is centred at
 /// X = x0 + (x + ½)·cell_size, Z = z0 + (y + ½)·cell_size; the hull surface there is at
 /// Y = side_plane_y − depth(x, y) seen from starboard, side_plane_y + depth(x, y) from port.
@@ -65,16 +72,26 @@ struct HullGeometry {
   grid::Grid<Normal> normal;
   /// Fraction of the cell's area covered by projected surface, in [0, 1].
   grid::Grid<float> coverage;
+  /// Unrolled hulls only (side == both; empty otherwise): the ship-frame surface point at each
+  /// cell's centre. There x0 is the arc length of column 0's left edge measured from the bow
+  /// (negative: port is left of the bow, starboard right), depth is 0 (the grid lies on the
+  /// surface) and side_plane_y is the centre plane the columns are measured from.
+  grid::Grid<Point3> surface;
+
+  bool unrolled() const { return side == HullSide::both; }
 
   int width() const { return depth.width(); }
   int height() const { return depth.height(); }
-  /// Ship-frame X, Z of the centre of grid position (x, y).
+  /// Ship-frame X (unrolled: arc length from the bow), Z of the centre of grid position (x, y).
   double centre_x(int x) const { return x0 + (x + 0.5) * cell_size; }
   double centre_z(int y) const { return z0 + (y + 0.5) * cell_size; }
-  /// +1 when looking from port (outward is +y), −1 from starboard.
+  /// +1 when looking from port (outward is +y), −1 from starboard; on an unrolled hull the side of
+  /// the column (port left of the bow).
   double outward_sign() const { return side == HullSide::port ? 1.0 : -1.0; }
   /// Ship-frame Y of the surface at (x, y).
-  double surface_y(int x, int y) const { return side_plane_y + outward_sign() * depth(x, y); }
+  double surface_y(int x, int y) const {
+    return unrolled() ? surface(x, y).y : side_plane_y + outward_sign() * depth(x, y);
+  }
   /// Ship-frame Y of a UAV `standoff` metres off the surface at (x, y) (docs/model.md §Frames).
   double uav_y(int x, int y, double standoff) const {
     return side_plane_y + outward_sign() * (standoff + depth(x, y));

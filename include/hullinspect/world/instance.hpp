@@ -1,5 +1,6 @@
 #pragma once
-// Instances (model.md §2): the ground truth C and the prior C' drawn from corrosion parameters and a seed.
+// Instances (model.md §2): the ground truth C and the prior C' drawn from corrosion parameters and
+// a seed.
 
 #include <cstdint>
 #include <vector>
@@ -45,8 +46,8 @@ struct Instance {
   int corroded_cells() const;  ///< #{C = 1}
 };
 
-/// Draws C and C' (model.md §2). C depends only on (seed, hull, zones); the prior uses separate streams
-/// of the same seed, so sweeping p_tp or p_fp keeps C.
+/// Draws C and C' (model.md §2). C depends only on (seed, hull, zones); the prior uses separate
+/// streams of the same seed, so sweeping p_tp or p_fp keeps C.
 Instance generate_instance(const HullMask& hull, const CorrosionParams& params, std::uint64_t seed);
 
 }  // namespace hullinspect::world

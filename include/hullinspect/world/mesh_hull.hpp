@@ -28,8 +28,16 @@ struct MeshImportOptions {
   std::optional<double> waterline;  ///< ship-frame Z (metres); cells below are not hull
   double min_coverage = 0.5;        ///< fraction of a cell's area that makes it hull
   bool keep_largest = false;        ///< keep the largest 4-connected component instead of failing
+  /// Unrolled hulls (side both) only: also unroll the transom, closing the grid around the stern
+  /// with a seam at the stern's centre line.
+  bool include_transom = false;
+  /// Refused: a UAV standing off horizontally cannot see the bottom (docs/hulls.md).
+  bool include_bottom = false;
+  /// Unrolled hulls only: refuse an import whose worst cell-area error is above this fraction.
+  std::optional<double> max_area_error;
 
-  /// Throws ParameterError naming the option ("cell-size", "scale", "min-coverage", "waterline").
+  /// Throws ParameterError naming the option ("cell-size", "scale", "min-coverage", "waterline",
+  /// "include", "max-area-error").
   void validate() const;
 };
 
@@ -44,6 +52,12 @@ struct MeshImport {
   std::vector<std::string> warnings;  ///< e.g. components dropped by keep_largest
   int facets = 0;                     ///< facets in the file
   int facing_facets = 0;              ///< facets facing the chosen side
+  /// Unrolled hulls only: the surface area of the hull cells (m²) and how far a cell's surface
+  /// area departs from cell² × coverage (a fraction; worst and mean over the hull cells).
+  double surface_area = 0;
+  double worst_area_error = 0;
+  double mean_area_error = 0;
+  grid::Cell worst_area_cell{-1, -1};
 };
 
 /// True for names ending in .stl, .obj, .ply, optionally followed by .gz (any case).
@@ -76,6 +90,24 @@ std::vector<MeshTriangle> read_mesh_in_child(std::string_view bytes, const std::
 /// or (without keep_largest) the hull is not 4-connected.
 MeshImport project_mesh(std::span<const MeshTriangle> triangles, const MeshImportOptions& options,
                         const std::string& source);
+
+/// Unrolls a closed mesh (options.side == both) into one grid: columns by arc length along the
+/// horizontal section from stern-port over the bow to stern-starboard, rows by height
+/// (docs/hulls.md "The whole hull"). project_mesh calls it for side both. Throws InputError naming
+/// `source` when a section is open or has several outlines (not one closed body), and when the
+/// worst cell-area error is above options.max_area_error.
+MeshImport unroll_mesh(std::span<const MeshTriangle> triangles, const MeshImportOptions& options,
+                       const std::string& source);
+
+namespace detail {
+/// A geometry of width × height cells with the options' provenance, no surface and no coverage.
+HullGeometry empty_geometry(const MeshImportOptions& options, const std::string& source, double x0,
+                            double z0, int width, int height);
+/// The end of every import: checks the hull cells are 4-connected (or keeps the largest part
+/// with a warning), attaches the geometry.
+MeshImport finish_import(grid::Grid<std::uint8_t> is_hull, HullGeometry geometry,
+                         const MeshImportOptions& options, const std::string& source);
+}  // namespace detail
 
 /// Reads and projects a mesh file.
 MeshImport import_mesh_file(const std::filesystem::path& path, const MeshImportOptions& options);

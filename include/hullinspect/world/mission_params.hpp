@@ -1,5 +1,6 @@
 #pragma once
-// Mission parameters (model.md §1): fleet, camera footprints, plane-change time, start cells, time limit.
+// Mission parameters (model.md §1): fleet, camera footprints, plane-change time, start cells, time
+// limit.
 
 #include <cstdint>
 #include <memory>

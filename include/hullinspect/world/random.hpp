@@ -12,12 +12,12 @@ std::uint64_t splitmix64(std::uint64_t& state);
 
 /// Well-known stream ids, so that independent uses of one seed never share numbers.
 enum class Stream : std::uint64_t {
-  kTruth = 1,        ///< ground-truth centres and their rectangles
-  kPriorTp = 2,      ///< which ground-truth centres the prior knows
-  kPriorFp = 3,      ///< false-positive prior centres and their rectangles
-  kPartition = 4,    ///< partitioner noise
-  kPlanner = 5,      ///< planner randomness, if any
-  kFailures = 6,     ///< random UAV failures (docs/model.md, "Failures")
+  kTruth = 1,      ///< ground-truth centres and their rectangles
+  kPriorTp = 2,    ///< which ground-truth centres the prior knows
+  kPriorFp = 3,    ///< false-positive prior centres and their rectangles
+  kPartition = 4,  ///< partitioner noise
+  kPlanner = 5,    ///< planner randomness, if any
+  kFailures = 6,   ///< random UAV failures (docs/model.md, "Failures")
 };
 
 /// xoshiro256** generator for one (seed, stream) pair.
