@@ -230,12 +230,16 @@ TEST(OutputSet, RefusesAnOutputThatIsAFileReadWhileTheSetExists) {
       set.add_output(out, "trace");
       EXPECT_EQ(problem(set), "trace: '" + out.string() + "' is the same file as the input '" +
                                   (dir / "prior.txt").string() + "'; it would be overwritten");
+    }
+    OutputSet set;
     set.add_output(out, "trace");
+    set.check();
     read_file(dir / "prior.txt");  // after check(): only commit() can see it
     set.write(out, "trace");
     EXPECT_THROW(set.commit(), ParameterError) << out;
     EXPECT_EQ(read_file(dir / "prior.txt"), "X.\n");
     EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
+  }
   // A file read before the set was made belongs to earlier work, not to this set's command.
   OutputSet later;
   later.add_output(dir / "prior.txt", "trace");
@@ -270,6 +274,8 @@ TEST(ReadFile, RefusesFifosAndDevicesWithoutWaiting) {
     } catch (const InputError& e) {
       EXPECT_EQ(std::string(e.what()),
                 path.string() + ": is " + kind + ", expected a regular file");
+    }
+  }
 }
 
 }  // namespace
