@@ -35,7 +35,8 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
          // keeps its id.
          (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
          (s.no_fly_spec.is_null() ? std::string()
-                                  : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>());
+                                  : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
+         (c.separation == 0 ? std::string() : fmt::format("|separation={}", c.separation));
 }
 
 }  // namespace
@@ -102,6 +103,7 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.cell_size_m = c.cell_size;
   spec.params.start_z = c.start_z;
   spec.params.time_limit = c.time_limit;
+  spec.params.separation = c.separation;
   const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;
   spec.corrosion = scenario.corrosion;

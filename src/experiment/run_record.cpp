@@ -71,7 +71,10 @@ std::vector<std::string> runs_header() {
           "bound_T_c",
           "bound_T_m",
           "unreachable_cells",
-          "partition_fallbacks"};
+          "partition_fallbacks",
+          "separation",
+          "separation_conflicts",
+          "min_separation"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -155,7 +158,11 @@ std::string run_row_problem(const ExperimentPlan& plan, const RunKey& run, std::
       }
       continue;
     }
-    const bool optional = header[k] == "T_c" || header[k] == "T_m";
+    if (header[k] == "separation" && v != std::to_string(plan.config().separation)) {
+      return fmt::format("separation is '{}' but this experiment's is {}", escape_for_message(v),
+                         plan.config().separation);
+    }
+    const bool optional = header[k] == "T_c" || header[k] == "T_m" || header[k] == "min_separation";
     if (optional && v.empty()) continue;
     try {
       (void)parse_integer<long long>(v, 0, header[k] == "complete" ? 1 : kMaxStoredCount);
@@ -198,7 +205,10 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
                             std::to_string(r.bound_t_c),
                             std::to_string(r.bound_t_m),
                             std::to_string(r.unreachable_cells),
-                            std::to_string(r.planner.partition_fallbacks)}) {
+                            std::to_string(r.planner.partition_fallbacks),
+                            std::to_string(plan.config().separation),
+                            std::to_string(r.separation_conflicts),
+                            optional_time(r.min_separation)}) {
     fields.push_back(std::move(value));
   }
   record.runs = csv_line(fields);

@@ -1,5 +1,6 @@
 #pragma once
-// Mission parameters (model.md §1): fleet, camera footprints, plane-change time, start cells, time limit.
+// Mission parameters (model.md §1): fleet, camera footprints, plane-change time, start cells, time
+// limit.
 
 #include <cstdint>
 #include <memory>
@@ -12,15 +13,22 @@
 namespace hullinspect::world {
 
 struct MissionParams {
-  int uavs = 4;                      ///< n, fleet size (>= 1, <= hull cells)
-  int s1 = 5;                        ///< footprint side at z = 1 (close-up), odd, cells
-  int s2 = 7;                        ///< footprint side at z = 2 (detection), odd, > s1, cells
-  double theta_deg = 90.0;           ///< camera aperture θ, degrees, in (0, 180)
-  double cell_size_m = 0.5;          ///< side of one cell in metres (for reports and exports)
-  double plane_speed_cells = 1.0;    ///< standoff change per step, cells per step (> 0)
-  int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
-  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
-  int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
+  int uavs = 4;                    ///< n, fleet size (>= 1, <= hull cells)
+  int s1 = 5;                      ///< footprint side at z = 1 (close-up), odd, cells
+  int s2 = 7;                      ///< footprint side at z = 2 (detection), odd, > s1, cells
+  double theta_deg = 90.0;         ///< camera aperture θ, degrees, in (0, 180)
+  double cell_size_m = 0.5;        ///< side of one cell in metres (for reports and exports)
+  double plane_speed_cells = 1.0;  ///< standoff change per step, cells per step (> 0)
+  int start_z = 2;                 ///< plane every UAV starts on (1 or 2)
+  std::vector<grid::Cell> starts;  ///< explicit start cells; empty = model.md §1 default spacing
+  int time_limit = 20000;          ///< steps after which an unfinished mission is "incomplete"
+  /// D (model.md, "Separation"): two UAVs conflict at a step when max(|Δx|, |Δy|) < D, whatever
+  /// their planes, or when they exchange cells while D >= 1. 0 = the paper's model (no check).
+  int separation = 0;
+  bool strict_separation = false;  ///< a conflict is a mission error instead of a count
+  /// With D > 0, the deconfliction layer (sim/deconfliction.hpp) adjusts the planner's actions so
+  /// that no conflict happens; false hands them to the simulator as they are (conflicts counted).
+  bool deconflict = true;
   /// No-fly positions (1 = no UAV may be there, on either plane), the hull's size; null = none.
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
 
@@ -31,6 +39,10 @@ struct MissionParams {
   /// Footprint side on plane z.
   int footprint(int z) const { return z == 1 ? s1 : s2; }
 };
+
+/// The most UAVs the separation D leaves room for on a w × h grid: ceil(w/D)·ceil(h/D) (positions
+/// pairwise at least D apart in Chebyshev distance); unlimited (INT_MAX) for D <= 1.
+long long separation_capacity(int separation, int width, int height);
 
 /// Throws ParameterError naming the field ("uavs", "s2", "theta", …) and the accepted range.
 void validate(const MissionParams& params, const HullMask& hull);
