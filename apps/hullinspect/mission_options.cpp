@@ -84,7 +84,6 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
   cmd.add_option("--separation", a.separation,
                  "Separation D in cells: two UAVs conflict when max(|dx|, |dy|) < D, whatever "
                  "their planes (0: no separation, the paper's model; docs/model.md)")
-      ->type_name("D")
       ->capture_default_str();
   cmd.add_flag("--strict-separation", a.strict_separation,
                "A separation conflict is a mission error (exit 1) instead of a count");

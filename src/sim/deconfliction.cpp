@@ -67,14 +67,18 @@ bool Deconfliction::in_way(int k, int& blocker) const {
   return best >= 0;
 }
 
-// A side-step out of the blocker's way: across its line of approach on the UAV's sticky side,
-// then the other side, then straight away from it; a hover when none is allowed.
+// A side-step out of the blocker's way: across its line of approach (from where it is to here) on
+// the UAV's sticky side, then the other side, then straight away from it; a hover when none is
+// allowed.
 Action Deconfliction::evade(int k, int blocker) {
   const auto uk = static_cast<std::size_t>(k);
   const grid::Cell here = uavs_[uk].pos;
-  const grid::Cell threat = desire_[static_cast<std::size_t>(blocker)];
-  const int vx = here.x - threat.x;
-  const int vy = here.y - threat.y;
+  // The line of approach runs from the cell the blocker wants, or from where it is when it wants
+  // this very cell.
+  grid::Cell from = desire_[static_cast<std::size_t>(blocker)];
+  if (from == here) from = uavs_[static_cast<std::size_t>(blocker)].pos;
+  const int vx = here.x - from.x;
+  const int vy = here.y - from.y;
   const bool along_x = std::abs(vx) >= std::abs(vy);
   int& side = side_[uk];
   if (side == 0) {

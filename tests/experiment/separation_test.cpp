@@ -49,7 +49,9 @@ void expect_conflict_free(const ExperimentConfig& config, std::string_view keep_
     EXPECT_GE(*r.min_separation, spec.params.separation);
     // A failed UAV's region may stay unfinished under planners that do not share work; that is
     // the failure's doing, not the layer's (the same missions without separation end so too).
-    if (spec.failures.empty()) EXPECT_TRUE(r.complete);
+    if (spec.failures.empty()) {
+      EXPECT_TRUE(r.complete);
+    }
   }
 }
 
