@@ -206,8 +206,15 @@ std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull
   for (int k = 0; k < p.uavs; ++k) {
     const grid::Cell aim{x0 + static_cast<int>((2LL * k + 1) * w / (2LL * p.uavs)),
                          y0 + (y1 - y0 + 1) / 2};
-    // Never a cell another UAV took, nor a no-fly position.
-    auto free = [&](int i) { return taken[i] == 0 && (!p.no_fly || (*p.no_fly)[i] == 0); };
+    // Never a cell another UAV took, nor a no-fly position; with a separation D, nor a cell
+    // closer than D to an earlier UAV's start (so that no conflict exists at t = 0).
+    auto free = [&](int i) {
+      if (taken[i] != 0 || (p.no_fly && (*p.no_fly)[i] != 0)) return false;
+      if (p.separation <= 1) return true;
+      const grid::Cell c = hull.mask().cell(i);
+      return std::none_of(cells.begin(), cells.end(),
+                          [&](grid::Cell o) { return grid::chebyshev(c, o) < p.separation; });
+    };
     grid::Cell best = hull.snap(aim);
     if (!free(hull.mask().index(best))) {
       int best_d = std::numeric_limits<int>::max();
