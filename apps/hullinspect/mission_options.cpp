@@ -81,6 +81,15 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
   cmd.add_option("--time-limit", a.time_limit,
                  "Steps after which an unfinished mission is reported incomplete")
       ->capture_default_str();
+  cmd.add_option("--separation", a.separation,
+                 "Separation D in cells: two UAVs conflict when max(|dx|, |dy|) < D, whatever "
+                 "their planes (0: no separation, the paper's model; docs/model.md)")
+      ->capture_default_str();
+  cmd.add_flag("--strict-separation", a.strict_separation,
+               "A separation conflict is a mission error (exit 1) instead of a count");
+  cmd.add_flag("--no-deconfliction", a.no_deconfliction,
+               "With --separation: fly the planner's actions as they are (conflicts are counted) "
+               "instead of through the deconfliction layer");
   const auto part_tsp = planner_specs("part-tsp");
   const auto coop = planner_specs("coop-frontier");
   cmd.add_option("--partitioner", a.partitioner,
@@ -187,6 +196,9 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   p.theta_deg = a.theta;
   p.start_z = a.start_z;
   p.time_limit = a.time_limit;
+  p.separation = a.separation;
+  p.strict_separation = a.strict_separation;
+  p.deconflict = !a.no_deconfliction;
   if (hull.geometry()) p.cell_size_m = hull.geometry()->cell_size;
   for (const auto& s : a.starts) p.starts.push_back(parse_xy(s));
   p.no_fly = build_no_fly(a.no_fly, a.no_fly_boxes, hull);

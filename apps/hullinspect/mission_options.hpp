@@ -28,6 +28,9 @@ struct MissionArgs {
   std::uint64_t seed = 1;
   std::optional<std::string> p_c, p_tp, p_fp, front_p_c, l_c, front_l_c;
   int time_limit = world::MissionParams{}.time_limit;
+  int separation = world::MissionParams{}.separation;
+  bool strict_separation = world::MissionParams{}.strict_separation;
+  bool no_deconfliction = !world::MissionParams{}.deconflict;
   std::optional<std::string> partitioner, partition_seed, tsp_solver, r1, r2, alpha, beta;
   std::vector<std::string> planner_options;  // key=value
   std::string no_fly;                        // mask file of no-fly positions ("" = none)

@@ -59,6 +59,10 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
         "(docs/model.md: what cannot reach its final state is not counted)\n",
         r.unreachable_cells, r.unreachable_z2_cells);
   }
+  if (r.min_separation) {
+    std::cout << fmt::format("  separation {}: {} conflicts, smallest separation flown {}\n",
+                             spec.params.separation, r.separation_conflicts, *r.min_separation);
+  }
   std::cout << fmt::format(
       "  moves {}, plane changes {}, hovers {}, redundant observations {} of {}\n", total.moves,
       total.plane_changes, total.hovers, r.redundant_observations, r.observations);

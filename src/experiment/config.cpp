@@ -360,8 +360,9 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "sweeps",        "s1",          "s2",        "theta",         "uavs",
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly",      "launch"});
-  for (const char* key : {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull"}) {
+                "frame-spacing", "no-fly",      "launch",        "separation"});
+  for (const char* key :
+       {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
     remember_line(c, root, key);
   }
   if (root["name"]) c.name = f.as_label(root["name"], "name");
@@ -377,6 +378,9 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   if (root["theta"]) c.theta = f.as_number(root["theta"], "theta", 0, 180);
   if (root["uavs"]) c.uavs = int_list(f, root["uavs"], "uavs", 1, kMaxUavs, c);
   if (root["start_z"]) c.start_z = f.as_int(root["start_z"], "start_z", 1, 2);
+  if (root["separation"]) {
+    c.separation = f.as_int(root["separation"], "separation", 0, kMaxSide);
+  }
   if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
   detail::read_launch(f, root, c);
   if (root["algorithms"]) {
@@ -483,6 +487,7 @@ nlohmann::json config_json(const ExperimentConfig& c) {
   j["theta"] = c.theta;
   j["uavs"] = c.uavs;
   j["start_z"] = c.start_z;
+  if (c.separation > 0) j["separation"] = c.separation;  // only when given: manifests unchanged
   json algorithms = json::array();
   for (const auto& a : c.algorithms) {
     algorithms.push_back({{"label", a.label}, {"planner", a.planner}, {"options", a.options}});
@@ -547,6 +552,7 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     c.theta = j.at("theta").get<double>();
     c.uavs = j.at("uavs").get<std::vector<int>>();
     c.start_z = j.at("start_z").get<int>();
+    if (j.contains("separation")) c.separation = j.at("separation").get<int>();
     for (const auto& a : j.at("algorithms")) {
       c.algorithms.push_back({a.at("label").get<std::string>(), a.at("planner").get<std::string>(),
                               a.at("options").get<OptionMap>(), 0});

@@ -46,7 +46,8 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
          (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
          (s.no_fly_spec.is_null() ? std::string()
                                   : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
-         launch_key(c);
+         launch_key(c) +
+         (c.separation == 0 ? std::string() : fmt::format("|separation={}", c.separation));
 }
 
 }  // namespace
@@ -116,6 +117,7 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.launch_sites = c.launch_sites;
   spec.params.launch_transfer_s = c.launch_transfer;
   spec.params.takeoff_time_s = c.takeoff_time;
+  spec.params.separation = c.separation;
   const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;
   spec.corrosion = scenario.corrosion;

@@ -70,7 +70,10 @@ std::vector<std::string> runs_header() {
           "bound_T_c",
           "bound_T_m",
           "unreachable_cells",
-          "partition_fallbacks"};
+          "partition_fallbacks",
+          "separation",
+          "separation_conflicts",
+          "min_separation"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -164,7 +167,10 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
                             std::to_string(r.bound_t_c),
                             std::to_string(r.bound_t_m),
                             std::to_string(r.unreachable_cells),
-                            std::to_string(r.planner.partition_fallbacks)}) {
+                            std::to_string(r.planner.partition_fallbacks),
+                            std::to_string(plan.config().separation),
+                            std::to_string(r.separation_conflicts),
+                            optional_time(r.min_separation)}) {
     fields.push_back(std::move(value));
   }
   record.runs = csv_line(fields);

@@ -32,10 +32,13 @@ class Outcome {
   const std::string& text(const std::string& name) const {
     return fields_[runs_columns().at(name)];
   }
-  /// The field parsed in [0, max]; an empty optional field (T_c, T_m) gives nothing.
+  /// The field parsed in [0, max]; an empty optional field (T_c, T_m, min_separation) gives
+  /// nothing.
   std::optional<long long> parse(const std::string& name, long long max) const {
     const std::string& v = text(name);
-    if (v.empty() && (name == "T_c" || name == "T_m")) return std::nullopt;
+    if (v.empty() && (name == "T_c" || name == "T_m" || name == "min_separation")) {
+      return std::nullopt;
+    }
     try {
       return parse_integer<long long>(v, 0, max);
     } catch (const NumberError& e) {
@@ -70,9 +73,15 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
   for (const char* counter :
        {"detections", "observations", "redundant_observations", "moves", "hovers", "plane_changes",
         "steps_z1", "steps_z2", "steps_transit", "tsp_solves", "tsp_unproven", "tsp_fallbacks",
-        "replans", "assignments", "bound_T_c", "bound_T_m", "partition_fallbacks"}) {
+        "replans", "assignments", "bound_T_c", "bound_T_m", "partition_fallbacks",
+       "separation_conflicts"}) {
     (void)o.get(counter);
   }
+  if (o.text("separation") != std::to_string(c.separation)) {
+    return fmt::format("separation is '{}' but this experiment's is {}",
+                       escape_for_message(o.text("separation")), c.separation);
+  }
+  (void)o.parse("min_separation", kMaxStoredCount);
 
   if (complete != t_m.has_value()) {
     return complete ? "complete is 1 but T_m is empty (a complete mission has a T_m)"

@@ -35,6 +35,9 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   j["replans"] = r.planner.replans;
   j["assignments"] = r.planner.assignments;
   j["failed_uavs"] = r.failed_uavs;
+  j["separation"] = spec.params.separation;
+  j["separation_conflicts"] = r.separation_conflicts;
+  j["min_separation"] = r.min_separation ? json(*r.min_separation) : json(nullptr);
   json failed_at = json::array();
   for (const auto& u : r.uavs)
     failed_at.push_back(u.failed_at >= 0 ? json(u.failed_at) : json(nullptr));
@@ -61,6 +64,11 @@ json spec_json(const planners::MissionSpec& spec, const std::string& hull_source
   j["theta"] = spec.params.theta_deg;
   j["start_z"] = spec.params.start_z;
   j["time_limit"] = spec.params.time_limit;
+  if (spec.params.separation > 0) {
+    j["separation"] = spec.params.separation;
+    if (spec.params.strict_separation) j["strict_separation"] = true;
+    if (!spec.params.deconflict) j["deconfliction"] = false;
+  }
   j["seed"] = spec.seed;
   j["hull"] = hull_source;
   json zones = json::array();

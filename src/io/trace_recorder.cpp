@@ -221,6 +221,11 @@ json TraceRecorder::finish(const sim::MissionResult& result) const {
   r["plane_changes"] = total.plane_changes;
   r["hovers"] = total.hovers;
   r["redundant_observations"] = result.redundant_observations;
+  // Only a mission with a separation D measures it (docs/trace-format.md).
+  if (result.min_separation) {
+    r["separation_conflicts"] = result.separation_conflicts;
+    r["min_separation"] = *result.min_separation;
+  }
   t["result"] = std::move(r);
   return t;
 }

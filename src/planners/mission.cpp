@@ -1,8 +1,11 @@
 #include "hullinspect/planners/mission.hpp"
 
 #include <ctime>
+#include <chrono>
+#include <optional>
 
 #include "hullinspect/partition/fallback.hpp"
+#include "hullinspect/sim/deconfliction.hpp"
 #include "hullinspect/sim/lower_bound.hpp"
 
 namespace hullinspect::planners {
@@ -79,11 +82,17 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
 
   bool stopped_idle = false;
   std::vector<sim::Action> actions(static_cast<std::size_t>(params.uavs), sim::Action::kHover);
+  std::optional<sim::Deconfliction> deconfliction;
+  if (params.separation > 0 && params.deconflict) {
+    deconfliction.emplace(params.separation, params.uavs, hull.width(), hull.height(),
+                          params.no_fly.get());
+  }
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
     t0 = Clock::now();
     planner.decide(sim.view(), actions);
     planner_seconds += seconds_since(t0);
+    if (deconfliction) deconfliction->adjust(sim.uavs(), actions);
     sim.step(actions);
     for (auto* o : options.observers) o->on_step(sim, planner);
     // A planner whose working UAVs have nothing left to do will only hover: when the hull is not

@@ -20,9 +20,7 @@ inline bool leg_along_x(BandAxis axis, grid::Cell a, grid::Cell b) {
   return axis == BandAxis::kRows;
 }
 
-inline int chebyshev(grid::Cell a, grid::Cell b) {
-  return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y));
-}
+using grid::chebyshev;
 
 /// Not yet observed: unknown, or expected corroded by the prior and not yet seen.
 inline bool unobserved(const sim::PlannerView& view, int i) {

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/plural.hpp"
 
 namespace hullinspect::sim {
 
@@ -61,6 +63,9 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
   }
   fail_time_.assign(static_cast<std::size_t>(n), -1);
   applied_.assign(static_cast<std::size_t>(n), Action::kHover);
+  previous_.resize(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k)
+    previous_[static_cast<std::size_t>(k)] = uavs_[static_cast<std::size_t>(k)].pos;
 
   const int s = std::max(params.s1, params.s2);
   log_.readings_.reserve(static_cast<std::size_t>(n) * s * s);
@@ -80,6 +85,7 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
 
   sense_all();
   record_metrics();
+  check_separation();
 }
 
 void Simulator::fail_uav_at(int uav, int from_time) {
@@ -95,6 +101,9 @@ void Simulator::step(std::span<const Action> actions) {
   if (actions.size() != uavs_.size()) {
     throw LogicError(
         fmt::format("planner returned {} actions for {} UAVs", actions.size(), uavs_.size()));
+  }
+  if (params_.separation > 0) {
+    for (std::size_t k = 0; k < uavs_.size(); ++k) previous_[k] = uavs_[k].pos;
   }
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     UavState& u = uavs_[k];
@@ -150,6 +159,35 @@ void Simulator::step(std::span<const Action> actions) {
   ++time_;
   sense_all();
   record_metrics();
+  check_separation();
+}
+
+// Every pair once per step: n(n − 1)/2 comparisons, nothing allocated; nothing at all when D = 0.
+// Every UAV is airborne and a failed one still occupies its cell, so every pair counts.
+void Simulator::check_separation() {
+  const int d = params_.separation;
+  if (d <= 0 || uavs_.size() < 2) return;
+  int smallest = result_.min_separation.value_or(std::numeric_limits<int>::max());
+  for (std::size_t a = 0; a < uavs_.size(); ++a) {
+    const grid::Cell pa = uavs_[a].pos;
+    for (std::size_t b = a + 1; b < uavs_.size(); ++b) {
+      const grid::Cell pb = uavs_[b].pos;
+      int gap = grid::chebyshev(pa, pb);
+      // Two UAVs that exchange cells pass through each other: separation 0 for that step.
+      if (pa != pb && pa == previous_[b] && pb == previous_[a]) gap = 0;
+      smallest = std::min(smallest, gap);
+      if (gap >= d) continue;
+      ++result_.separation_conflicts;
+      if (params_.strict_separation) {
+        throw LogicError(fmt::format(
+            "separation conflict at t = {}: UAVs {} at ({}, {}) and {} at ({}, {}) are {} apart{}, "
+            "less than the separation {}",
+            time_, a, pa.x, pa.y, b, pb.x, pb.y, plural(grid::chebyshev(pa, pb), "cell"),
+            gap == 0 && pa != pb ? " and exchanged cells" : "", d));
+      }
+    }
+  }
+  result_.min_separation = smallest;
 }
 
 void Simulator::advance_away(std::size_t k) {

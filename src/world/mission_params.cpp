@@ -32,6 +32,48 @@ int MissionParams::plane_change_steps() const {
   return std::max(1, static_cast<int>(steps));
 }
 
+long long separation_capacity(int separation, int width, int height) {
+  if (separation <= 1) return std::numeric_limits<int>::max();
+  const long long d = separation;
+  return ((width + d - 1) / d) * ((height + d - 1) / d);
+}
+
+namespace {
+
+// D against the fleet: room on the grid for n UAVs, and start cells pairwise D apart (a conflict
+// at t = 0 is one no layer can undo).
+void validate_separation(const MissionParams& p, const HullMask& hull) {
+  if (p.separation < 0) {
+    throw ParameterError(
+        "separation", fmt::format("must be a whole number of cells >= 0 (got {})", p.separation));
+  }
+  if (p.separation == 0) return;
+  const long long room = separation_capacity(p.separation, hull.width(), hull.height());
+  if (p.uavs > room) {
+    throw ParameterError(
+        "separation",
+        fmt::format("{} cells leaves room for at most {} on the {} × {} grid (got {})",
+                    p.separation, plural(room, "UAV"), hull.width(), hull.height(),
+                    plural(p.uavs, "UAV")));
+  }
+  const auto starts = start_cells(p, hull);
+  for (std::size_t a = 0; a < starts.size(); ++a) {
+    for (std::size_t b = a + 1; b < starts.size(); ++b) {
+      const int d = grid::chebyshev(starts[a], starts[b]);
+      if (d < p.separation) {
+        throw ParameterError(
+            "separation",
+            fmt::format("{} cells: UAVs {} and {} start {} apart, at ({}, {}) and ({}, {}) (give "
+                        "--start cells at least {} apart, or fewer UAVs)",
+                        p.separation, a, b, plural(d, "cell"), starts[a].x, starts[a].y,
+                        starts[b].x, starts[b].y, p.separation));
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void validate(const MissionParams& p, const HullMask& hull) {
   if (p.uavs < 1) throw ParameterError("uavs", fmt::format("must be at least 1 (got {})", p.uavs));
   if (p.uavs > hull.cell_count()) {
@@ -136,6 +178,7 @@ void validate(const MissionParams& p, const HullMask& hull) {
       owner = static_cast<int>(k);
     }
   }
+  validate_separation(p, hull);
 }
 
 std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull) {
@@ -165,8 +208,15 @@ std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull
   for (int k = 0; k < p.uavs; ++k) {
     const grid::Cell aim{x0 + static_cast<int>((2LL * k + 1) * w / (2LL * p.uavs)),
                          y0 + (y1 - y0 + 1) / 2};
-    // Never a cell another UAV took, nor a no-fly position.
-    auto free = [&](int i) { return taken[i] == 0 && (!p.no_fly || (*p.no_fly)[i] == 0); };
+    // Never a cell another UAV took, nor a no-fly position; with a separation D, nor a cell
+    // closer than D to an earlier UAV's start (so that no conflict exists at t = 0).
+    auto free = [&](int i) {
+      if (taken[i] != 0 || (p.no_fly && (*p.no_fly)[i] != 0)) return false;
+      if (p.separation <= 1) return true;
+      const grid::Cell c = hull.mask().cell(i);
+      return std::none_of(cells.begin(), cells.end(),
+                          [&](grid::Cell o) { return grid::chebyshev(c, o) < p.separation; });
+    };
     grid::Cell best = hull.snap(aim);
     if (!free(hull.mask().index(best))) {
       int best_d = std::numeric_limits<int>::max();

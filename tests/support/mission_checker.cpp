@@ -19,6 +19,7 @@ void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner
   last_c_ = sim.c_percent();
   last_m_ = sim.m_percent();
   const auto& sites = sim.launch_legs().sites;
+  check_separation(sim);
   for (const auto& u : sim.uavs()) {
     // With launch sites every UAV starts on the ground at one; otherwise on a hull cell.
     if (!sites.empty()) {
@@ -30,6 +31,36 @@ void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner
     }
     if (sim.no_fly(u.pos))
       fail(fmt::format("UAV starts on the no-fly position ({}, {})", u.pos.x, u.pos.y));
+  }
+}
+
+// Pairwise, from the UAV states alone (the rule of docs/model.md, "Separation"), independently of
+// the simulator's own count, which must agree.
+void MissionChecker::check_separation(const sim::Simulator& sim) {
+  const int d = sim.params().separation;
+  if (d <= 0) return;
+  const auto uavs = sim.uavs();
+  for (std::size_t a = 0; a < uavs.size(); ++a) {
+    for (std::size_t b = a + 1; b < uavs.size(); ++b) {
+      const grid::Cell pa = uavs[a].pos;
+      const grid::Cell pb = uavs[b].pos;
+      const bool exchanged = pa != pb && pa == last_uavs_[b].pos && pb == last_uavs_[a].pos;
+      const int gap = exchanged ? 0 : std::max(std::abs(pa.x - pb.x), std::abs(pa.y - pb.y));
+      if (min_separation_ < 0 || gap < min_separation_) min_separation_ = gap;
+      if (gap >= d) continue;
+      ++conflicts_;
+      fail(fmt::format("t={} UAVs {} ({}, {}) and {} ({}, {}) {} (separation {})", sim.time(), a,
+                       pa.x, pa.y, b, pb.x, pb.y,
+                       exchanged ? "exchanged cells" : fmt::format("are {} apart", gap), d));
+    }
+  }
+  if (sim.separation_conflicts() != conflicts_) {
+    fail(fmt::format("t={} the simulator counts {} separation conflicts, the checker {}",
+                     sim.time(), sim.separation_conflicts(), conflicts_));
+  }
+  if (uavs.size() > 1 && sim.min_separation() != min_separation_) {
+    fail(fmt::format("t={} the simulator's min_separation {} is not the checker's {}", sim.time(),
+                     sim.min_separation().value_or(-1), min_separation_));
   }
 }
 
@@ -87,6 +118,7 @@ void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&
   last_c_ = sim.c_percent();
   last_m_ = sim.m_percent();
   last_map_ = map;
+  check_separation(sim);
   last_uavs_.assign(uavs.begin(), uavs.end());
 }
 

@@ -79,6 +79,7 @@ struct ExperimentConfig {
   double theta = 90.0;
   std::vector<int> uavs = {4};
   int start_z = 2;
+  int separation = 0;  ///< D, cells (model.md, "Separation"); 0 = none
   std::vector<AlgorithmSpec> algorithms;
   std::vector<std::uint64_t> seeds;
   int time_limit = 20000;

@@ -17,7 +17,15 @@ struct Cell {
   }
 };
 
-constexpr int manhattan(Cell a, Cell b) { return std::abs(a.x - b.x) + std::abs(a.y - b.y); }
+constexpr int manhattan(Cell a, Cell b) {
+  return std::abs(a.x - b.x) + std::abs(a.y - b.y);
+}
+/// max(|Δx|, |Δy|): the distance the separation rule measures (docs/model.md, "Separation").
+constexpr int chebyshev(Cell a, Cell b) {
+  const int dx = std::abs(a.x - b.x);
+  const int dy = std::abs(a.y - b.y);
+  return dx > dy ? dx : dy;
+}
 
 /// The four neighbour offsets in a fixed order: east, west, north (up), south (down).
 inline constexpr int kNeighbourDx[4] = {1, -1, 0, 0};

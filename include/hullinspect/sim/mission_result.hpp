@@ -56,6 +56,12 @@ struct MissionResult {
   long long redundant_observations = 0;  ///< readings that changed nothing and detected nothing
   long long detections = 0;
   double planner_seconds = 0;  ///< CPU time in the planner (start + decide)
+  /// Pairs of UAVs in conflict, summed over the steps (docs/model.md, "Separation"); 0 when the
+  /// mission has no separation D.
+  long long separation_conflicts = 0;
+  /// The smallest max(|Δx|, |Δy|) between two UAVs at any t (0 for an exchange of cells); empty
+  /// when the mission has no separation D (nothing is measured) or a single UAV.
+  std::optional<int> min_separation;
   PlannerStats planner;
 
   double c_percent(int t) const;  ///< c(t), 100 when there is no corrosion

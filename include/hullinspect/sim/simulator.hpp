@@ -1,7 +1,7 @@
 #pragma once
 // The simulator owns the ground truth C and the mission map M. It applies one action per UAV per
-// step, senses (model.md §3) and records the metrics incrementally (model.md §4). It never rescans the grid
-// after construction and allocates nothing per step.
+// step, senses (model.md §3) and records the metrics incrementally (model.md §4). It never rescans
+// the grid after construction and allocates nothing per step.
 
 #include <span>
 #include <vector>
@@ -26,7 +26,7 @@ class Simulator {
 
   /// Applies one action per UAV (ignored for UAVs in transit or failed), senses, advances t.
   /// Throws LogicError if an action would leave the grid or enter a no-fly position (a planner
-  /// error), or the mission is already finished.
+  /// error), the mission is already finished, or, with strict_separation, two UAVs conflict.
   void step(std::span<const Action> actions);
 
   /// UAV `uav` fails at the start of step `from_time` (t → t+1): from then on its actions are
@@ -66,6 +66,8 @@ class Simulator {
   double c_percent() const;
   double m_percent() const;
   int inspected_corroded() const { return inspected_; }
+  long long separation_conflicts() const { return result_.separation_conflicts; }
+  std::optional<int> min_separation() const { return result_.min_separation; }
   int known_cells() const { return known_; }
 
   /// The mission's result so far (complete when finished()).
@@ -78,6 +80,7 @@ class Simulator {
   // Launch sites (docs/model.md): the positions a UAV flies while away, one per step.
   void advance_away(std::size_t k);
   void start_homing();
+  void check_separation();
 
   const world::HullMask& hull_;
   const grid::Grid<std::int8_t>& truth_;
@@ -92,6 +95,7 @@ class Simulator {
   std::vector<UavState> uavs_;
   std::vector<int> fail_time_;
   std::vector<Action> applied_;
+  std::vector<grid::Cell> previous_;  // positions before the step, for exchanges of cells
   SensingLog log_;
   std::vector<int> changed_;
 

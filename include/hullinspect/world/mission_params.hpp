@@ -27,6 +27,13 @@ struct MissionParams {
   std::vector<grid::Cell> launch_sites;
   double launch_transfer_s = 0;          ///< seconds each way between a site and the quay beyond
   std::optional<double> takeoff_time_s;  ///< seconds from the ground to plane 2; default u_z steps
+  /// D (model.md, "Separation"): two UAVs conflict at a step when max(|Δx|, |Δy|) < D, whatever
+  /// their planes, or when they exchange cells while D >= 1. 0 = the paper's model (no check).
+  int separation = 0;
+  bool strict_separation = false;  ///< a conflict is a mission error instead of a count
+  /// With D > 0, the deconfliction layer (sim/deconfliction.hpp) adjusts the planner's actions so
+  /// that no conflict happens; false hands them to the simulator as they are (conflicts counted).
+  bool deconflict = true;
   /// No-fly positions (1 = no UAV may be there, on either plane), the hull's size; null = none.
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
 
@@ -37,6 +44,10 @@ struct MissionParams {
   /// Footprint side on plane z.
   int footprint(int z) const { return z == 1 ? s1 : s2; }
 };
+
+/// The most UAVs the separation D leaves room for on a w × h grid: ceil(w/D)·ceil(h/D) (positions
+/// pairwise at least D apart in Chebyshev distance); unlimited (INT_MAX) for D <= 1.
+long long separation_capacity(int separation, int width, int height);
 
 /// Throws ParameterError naming the field ("uavs", "s2", "theta", …) and the accepted range.
 void validate(const MissionParams& params, const HullMask& hull);
