@@ -215,6 +215,8 @@ TEST(OutputSet, PendingTemporariesAreListedUntilCommitted) {
     EXPECT_TRUE(fs::exists(dir / "c.txt"));
   }
   fs::remove_all(dir);
+}
+
 // Every file read through read_file while a set exists is one of its inputs, declared or not, under
 // any name: the set refuses it as an output at check() and, for files read after check(), at
 // commit(), which then leaves the file as it was.
