@@ -161,6 +161,9 @@ void OutputSet::write(const fs::path& path, std::string_view content) {
   }
   if (entry == nullptr)
     throw LogicError(fmt::format("output '{}' was not declared", path.string()));
+  // Every input has been read by the time an output is written: refuse one now, before the
+  // command prints its result (commit() checks again for inputs read later).
+  check_not_read(*entry);
   if (struct stat st{};
       ::stat(parent_of(path).c_str(), &st) != 0 && declared_parent_dir(path) != nullptr) {
     // The declared output directory and its missing parents, outermost first.

@@ -1053,14 +1053,14 @@ class SweepTailWatcher final : public MissionObserver, public AnnotationSink {
 // share-sweep: a UAV whose sweep is done takes the far end of the sweep that would end last. On
 // inhomogeneous missions where the right prior's tours, balanced for T_c, leave one UAV more to
 // sweep after its tour than the others (s2 = 7, n = 4; seeds among 1–60 where the option changes
-// the mission: it lowers T_m on 6 of those 9 and raises it on 3, such as 48, taken here too),
+// the mission: it lowers T_m on 9 of those 11 and raises it on 2, such as 37, taken here too),
 // a UAV takes bands out of another's plan, the missions complete under the checker and, summed,
 // T_m drops; without the option no plan ever takes another's bands.
 TEST(SweepInspect, ShareSweepHandsTheLastBandsOver) {
   const auto& hull = world::default_hull();
   int t_m[2] = {0, 0};
   for (bool share : {true, false}) {
-    for (std::uint64_t seed : {25, 38, 45, 48, 58}) {
+    for (std::uint64_t seed : {6, 9, 22, 28, 37}) {
       auto spec = spec_for("sweep-inspect", "inhomogeneous", 7, 4, seed);
       spec.planner_options = {{"share-sweep", share ? "true" : "false"}};
       SweepTailWatcher watcher;

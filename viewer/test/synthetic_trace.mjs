@@ -92,7 +92,8 @@ export function syntheticTrace(base, {uavs = 8, steps = 5000, seed = 1} = {}) {
         }
         const r = random();
         if (r < 0.03) {
-          s.transit = base.plane_change_steps;
+          // The model's plane change: u_z steps, the first of which leaves u_z - 1 to go.
+          s.transit = base.plane_change_steps - 1;
           ++planeChanges;
           if (s.transit === 0) s.z = 3 - s.z;
         } else if (r < 0.08) {
