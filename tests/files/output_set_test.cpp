@@ -233,11 +233,18 @@ TEST(OutputSet, RefusesAnOutputThatIsAFileReadWhileTheSetExists) {
       EXPECT_EQ(problem(set), "trace: '" + out.string() + "' is the same file as the input '" +
                                   (dir / "prior.txt").string() + "'; it would be overwritten");
     }
+    {
+      OutputSet set;
+      set.add_output(out, "trace");
+      set.check();
+      read_file(dir / "prior.txt");  // after check(): write() refuses, before the command prints
+      EXPECT_THROW(set.write(out, "trace"), ParameterError) << out;
+    }
     OutputSet set;
     set.add_output(out, "trace");
     set.check();
-    read_file(dir / "prior.txt");  // after check(): only commit() can see it
     set.write(out, "trace");
+    read_file(dir / "prior.txt");  // after write(): only commit() can see it
     EXPECT_THROW(set.commit(), ParameterError) << out;
     EXPECT_EQ(read_file(dir / "prior.txt"), "X.\n");
     EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
