@@ -5,9 +5,13 @@ The project speaks of itself only: docs, comments, test names, bench configs and
 thing is, does or measures, never which development session, issue or commit it came from (that
 history belongs in `git log`). This lists every line that cites one:
 
-* a numbered session or round of work ("session 12", "session-7", "round 3");
-* a numbered issue ("issue 15", "issue-12", "issue #4");
-* a commit by its hash ("commit 1a2b3c4", "main at 1a2b3c4", "build at 1a2b3c4").
+* a numbered session or round of work (the word, then a number, after a blank or a hyphen);
+* a numbered issue (the word, then a number, after a blank, a hyphen or "#");
+* a commit by its hash ("commit", or "main", "build", "branch" or "merged" and "at", then seven
+  to forty hexadecimal digits).
+
+The tests (history_refs_test.py) hold examples of each, assembled at run time so that this
+checker does not find them in its own tests.
 
 The files are the ones git tracks (`git ls-files`), or, where the checkout has no git, every
 text file under the source tree but build, result and hidden directories. Exit status 0 when

@@ -14,18 +14,20 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import history_refs  # noqa: E402
 
+# Citations of each kind, assembled here so that the checker does not find them in this file.
+SESSION, ROUND, ISSUE, COMMIT = "sess" + "ion", "Ro" + "und", "iss" + "ue", "com" + "mit"
 CITING = [
-    "measured in session 12 on the tuning seeds",
-    "# The session-7 rows switch options off",
-    "Sessions 27 and 28 added it",
-    "Round 2 of the assignment",
-    "see issue 15 item 1",
-    "the Issue-12 repro",
-    "(issue #4)",
-    "fixed in commit 1a2b3c4",
-    "main at e8fd7e2, the corpus the runs left",
-    "release build at 278a84e, load average 6.4",
-    "lives on the branch `parttsp` (at 82a75cf, with `tsp` merged)",
+    f"measured in {SESSION} 12 on the tuning seeds",
+    f"# The {SESSION}-7 rows switch options off",
+    f"{SESSION.capitalize()}s 27 and 28 added it",
+    f"{ROUND} 2 of the assignment",
+    f"see {ISSUE} 15 item 1",
+    f"the {ISSUE.capitalize()}-12 repro",
+    f"({ISSUE} #4)",
+    f"fixed in {COMMIT} " + "1a2b3c4",
+    "main " + "at e8fd7e2, the corpus the runs left",
+    "release build " + "at 278a84e, load average 6.4",
+    "lives on the branch `parttsp` (" + "at 82a75cf, with `tsp` merged)",
 ]
 
 NOT_CITING = [
@@ -52,9 +54,9 @@ class Citations(unittest.TestCase):
                 self.assertEqual(history_refs.citations(line), [])
 
     def test_the_line_number_is_reported(self):
-        text = "one\ntwo, as in session 3\nthree\n"
+        text = f"one\ntwo, as in {SESSION} 3\nthree\n"
         self.assertEqual(history_refs.citations(text), [(2, "a development session",
-                                                         "two, as in session 3")])
+                                                         f"two, as in {SESSION} 3")])
 
 
 class Tree(unittest.TestCase):
@@ -62,14 +64,14 @@ class Tree(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             root = Path(tmp)
             (root / "docs").mkdir()
-            (root / "docs" / "page.md").write_text("Clean.\nAs measured in session 9.\n")
+            (root / "docs" / "page.md").write_text(f"Clean.\nAs measured in {SESSION} 9.\n")
             (root / "src.cpp").write_text("// what it does\n")
-            (root / "data.bin").write_bytes(b"issue 5\0\1\2")  # binary: skipped
+            (root / "data.bin").write_bytes(ISSUE.encode() + b" 5\0\1\2")  # binary: skipped
             (root / "build").mkdir()
-            (root / "build" / "log.txt").write_text("issue 5\n")  # build output: skipped
+            (root / "build" / "log.txt").write_text(f"{ISSUE} 5\n")  # build output: skipped
             count, report = history_refs.check(root)
             self.assertEqual(report, ["docs/page.md:2: cites a development session: "
-                                      "As measured in session 9."])
+                                      f"As measured in {SESSION} 9."])
 
     def test_the_command_exits_1_on_a_citation_and_0_without(self):
         with tempfile.TemporaryDirectory() as tmp:
@@ -79,11 +81,11 @@ class Tree(unittest.TestCase):
             ok = subprocess.run([sys.executable, tool, "--root", tmp], capture_output=True,
                                 text=True)
             self.assertEqual(ok.returncode, 0, ok.stderr)
-            (root / "a.md").write_text("see issue 3\n")
+            (root / "a.md").write_text(f"see {ISSUE} 3\n")
             bad = subprocess.run([sys.executable, tool, "--root", tmp], capture_output=True,
                                  text=True)
             self.assertEqual(bad.returncode, 1)
-            self.assertIn("a.md:1: cites an issue number: see issue 3", bad.stdout)
+            self.assertIn(f"a.md:1: cites an issue number: see {ISSUE} 3", bad.stdout)
 
 
 if __name__ == "__main__":
