@@ -6,6 +6,7 @@
 
 #include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/version.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::io {
 
@@ -53,6 +54,31 @@ json ship_frame(const world::HullGeometry& g) {
           {"side_plane_y", g.side_plane_y},
           {"side", world::to_string(g.side)},
           {"depth", std::move(depth)},
+          {"normal", std::move(normal)}};
+}
+
+// An unrolled hull (docs/trace-format.md `ship_frame` with side "both"): no side plane, so per
+// grid position the surface point a UAV there stands off from, and its normal.
+json unrolled_ship_frame(const world::HullGeometry& g) {
+  const world::StandoffSurface standoff = world::standoff_surface(g);
+  json surface = json::array();
+  json normal = json::array();
+  for (int y = 0; y < g.height(); ++y) {
+    json s = json::array();
+    json n = json::array();
+    for (int x = 0; x < g.width(); ++x) {
+      const world::Point3 p = standoff.point(x, y);
+      s.push_back({rounded(p.x, 1e4), rounded(p.y, 1e4), rounded(p.z, 1e4)});
+      const world::Normal v = standoff.normal(x, y);
+      n.push_back({rounded(v.x, 1e6), rounded(v.y, 1e6), rounded(v.z, 1e6)});
+    }
+    surface.push_back(std::move(s));
+    normal.push_back(std::move(n));
+  }
+  return {{"origin", {g.x0, g.z0}},
+          {"side_plane_y", g.side_plane_y},
+          {"side", world::to_string(g.side)},
+          {"surface", std::move(surface)},
           {"normal", std::move(normal)}};
 }
 
@@ -157,8 +183,10 @@ void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner&
   trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};
   // A hull from a mesh: its surface stands out from the side plane by depth(x, y), which exports
   // add to the stand-off (docs/model.md "Frames and exports"). Absent for a plain mask.
-  // An unrolled hull has no single side plane: its trace stays in grid coordinates.
-  if (const auto* g = hull.geometry(); g && !g->unrolled()) trace_["ship_frame"] = ship_frame(*g);
+  // An unrolled hull has no single side plane: its frame carries the surface points instead.
+  if (const auto* g = hull.geometry()) {
+    trace_["ship_frame"] = g->unrolled() ? unrolled_ship_frame(*g) : ship_frame(*g);
+  }
   trace_["truth"] = rows(instance_.truth, matrix_symbol);
   trace_["prior"] = rows(instance_.prior, matrix_symbol);
   if (const auto* p = planner.partition()) {
