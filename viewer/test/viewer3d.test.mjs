@@ -392,6 +392,9 @@ test('an unrolled hull in 3D: cells at their surface points, UAVs along the norm
     ++seen;
   });
   assert.ok(seen >= 4, `only ${seen} UAVs in view`);
+  // The picture in docs/hulls.md: with footprints, paths and labels.
+  for (const box of ['#show-footprints', '#show-paths', '#show-labels']) await page.check(box);
+  await settle(page);
   await screenshot(page, 'viewer-3d-wigley-both-16');
   await page.close();
 });
