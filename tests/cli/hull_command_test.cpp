@@ -50,6 +50,30 @@ TEST(HullImport, WritesAHullThatRunAccepts) {
   fs::remove_all(dir);
 }
 
+// The unrolled hull (--sides both) is written too, and runs the mission the mesh runs.
+TEST(HullImport, WritesAnUnrolledHullThatRunAccepts) {
+  const auto dir = make_temp_dir("hull-import-both");
+  const std::string stl = wigley_stl(WigleyHull{}).string();
+  const auto r = run_cli({"hull", "import", stl, "--sides", "both", "--out", dir + "/both"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.out.ends_with("  wrote " + dir + "/both.json\n")) << r.out;
+  ASSERT_TRUE(fs::exists(dir + "/both.json"));
+  const auto json = nlohmann::json::parse(std::ifstream(dir + "/both.json"));
+  EXPECT_EQ(json["side"], "both");
+  const std::vector<std::string> mission = {"--uavs", "3", "--seed", "2", "--json"};
+  auto from_json = mission, from_mesh = mission;
+  from_json.insert(from_json.begin(), {"run", "--hull", dir + "/both.json"});
+  from_mesh.insert(from_mesh.begin(), {"run", "--hull", stl, "--sides", "both"});
+  const auto a = run_cli(from_json), b = run_cli(from_mesh);
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  ja.erase("planner_seconds");
+  jb.erase("planner_seconds");
+  EXPECT_EQ(ja, jb);
+  fs::remove_all(dir);
+}
+
 struct BadImport {
   std::vector<std::string> args;
   std::string message;  // stderr after "hullinspect: "
