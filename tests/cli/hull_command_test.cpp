@@ -18,6 +18,23 @@ void write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
+// `run` on the imported file and on the mesh itself (with `mesh_options`) flies the same mission.
+void expect_same_mission(const std::string& hull_json, const std::string& mesh,
+                         const std::vector<std::string>& mesh_options,
+                         const std::vector<std::string>& mission) {
+  auto from_json = mission, from_mesh = mission;
+  from_json.insert(from_json.begin(), {"run", "--hull", hull_json});
+  from_mesh.insert(from_mesh.begin(), mesh_options.begin(), mesh_options.end());
+  from_mesh.insert(from_mesh.begin(), {"run", "--hull", mesh});
+  const auto a = run_cli(from_json), b = run_cli(from_mesh);
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  ja.erase("planner_seconds");
+  jb.erase("planner_seconds");
+  EXPECT_EQ(ja, jb);
+}
+
 TEST(HullImport, WritesAHullThatRunAccepts) {
   const auto dir = make_temp_dir("hull-import");
   const std::string stl = wigley_stl(WigleyHull{}).string();
@@ -35,18 +52,11 @@ TEST(HullImport, WritesAHullThatRunAccepts) {
   EXPECT_EQ(json["format"], "hullinspect-hull");
   EXPECT_EQ(json["width"], 200);
   // The imported hull and the mesh itself run the same mission.
-  const std::vector<std::string> mission = {"--uavs", "2", "--s2", "9", "--seed", "3", "--json"};
-  auto from_json = mission, from_mesh = mission;
-  from_json.insert(from_json.begin(), {"run", "--hull", dir + "/wigley.json"});
-  from_mesh.insert(from_mesh.begin(), {"run", "--hull", stl});
-  const auto a = run_cli(from_json), b = run_cli(from_mesh);
-  ASSERT_EQ(a.status, 0) << a.err;
-  ASSERT_EQ(b.status, 0) << b.err;
-  auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
-  ja.erase("planner_seconds");
-  jb.erase("planner_seconds");
-  EXPECT_EQ(ja, jb);
-  EXPECT_EQ(ja["hull_cells"], 3200);
+  expect_same_mission(dir + "/wigley.json", stl, {},
+                      {"--uavs", "2", "--s2", "9", "--seed", "3", "--json"});
+  const auto run = run_cli({"run", "--hull", dir + "/wigley.json", "--uavs", "2", "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(nlohmann::json::parse(run.out)["hull_cells"], 3200);
   fs::remove_all(dir);
 }
 
@@ -60,17 +70,8 @@ TEST(HullImport, WritesAnUnrolledHullThatRunAccepts) {
   ASSERT_TRUE(fs::exists(dir + "/both.json"));
   const auto json = nlohmann::json::parse(std::ifstream(dir + "/both.json"));
   EXPECT_EQ(json["side"], "both");
-  const std::vector<std::string> mission = {"--uavs", "3", "--seed", "2", "--json"};
-  auto from_json = mission, from_mesh = mission;
-  from_json.insert(from_json.begin(), {"run", "--hull", dir + "/both.json"});
-  from_mesh.insert(from_mesh.begin(), {"run", "--hull", stl, "--sides", "both"});
-  const auto a = run_cli(from_json), b = run_cli(from_mesh);
-  ASSERT_EQ(a.status, 0) << a.err;
-  ASSERT_EQ(b.status, 0) << b.err;
-  auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
-  ja.erase("planner_seconds");
-  jb.erase("planner_seconds");
-  EXPECT_EQ(ja, jb);
+  expect_same_mission(dir + "/both.json", stl, {"--sides", "both"},
+                      {"--uavs", "3", "--seed", "2", "--json"});
   fs::remove_all(dir);
 }
 
