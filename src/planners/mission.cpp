@@ -1,7 +1,7 @@
 #include "hullinspect/planners/mission.hpp"
 
-#include <ctime>
 #include <chrono>
+#include <ctime>
 #include <optional>
 
 #include "hullinspect/partition/fallback.hpp"
@@ -64,7 +64,8 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
 
   DirectPartitionSource direct;
   const auto starts = world::start_cells(params, hull);
-  grid::DistanceService distances = world::make_distance_service(sim.reachability());
+  grid::DistanceService distances =
+      world::make_distance_service(sim.reachability(), sim.flight_steps());
   PlannerContext context{hull,
                          params,
                          instance.prior,

@@ -7,12 +7,17 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::sim {
 
 Simulator::Simulator(const world::HullMask& hull, const world::Instance& instance,
                      const world::MissionParams& params)
-    : hull_(hull), truth_(instance.truth), params_(params), uz_(params.plane_change_steps()) {
+    : hull_(hull),
+      truth_(instance.truth),
+      params_(params),
+      uz_(params.plane_change_steps()),
+      flights_(world::neighbour_flights(hull, params)) {
   const int n = params.uavs;
   const auto starts = world::start_cells(params, hull);
   for (const auto& c : starts) {
@@ -119,6 +124,12 @@ void Simulator::step(std::span<const Action> actions) {
       advance_away(k);
       continue;
     }
+    if (u.flight_left > 0) {
+      // Still flying to the neighbour it moved to: a step on its plane without sensing.
+      --u.flight_left;
+      ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
+      continue;
+    }
     if (u.in_transit()) {
       ++count.steps_transit;
       if (--u.transit_left == 0) u.z = 3 - u.z;
@@ -150,11 +161,13 @@ void Simulator::step(std::span<const Action> actions) {
                           "position ({}, {}) at t = {}",
                           k, u.pos.x, u.pos.y, to_string(a), next.x, next.y, time_));
         }
+        u.flight_left = flights_.between(u.pos, next, u.z) - 1;
         u.pos = next;
         ++count.moves;
       }
     }
-    if (!u.in_transit()) ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
+    // A UAV is away only before the actions (handled above), so this is "not changing plane".
+    if (u.transit_left == 0) ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
   }
   ++time_;
   sense_all();
@@ -230,6 +243,7 @@ void Simulator::start_homing() {
       home.resize(static_cast<std::size_t>(total), site);
       climbed_at_[k] = total - climb;
       u.transit_left = 0;
+      u.flight_left = 0;
     }
     path = std::move(home);
     next = 0;

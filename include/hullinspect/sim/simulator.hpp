@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/sim/mission_result.hpp"
 #include "hullinspect/sim/planner_view.hpp"
@@ -24,7 +25,9 @@ class Simulator {
   Simulator(const world::HullMask& hull, const world::Instance& instance,
             const world::MissionParams& params);
 
-  /// Applies one action per UAV (ignored for UAVs in transit or failed), senses, advances t.
+  /// Applies one action per UAV (ignored for UAVs in transit or failed), senses, advances t. A move
+  /// to a neighbour k steps away (flight_steps()) arrives at once and keeps the UAV in transit for
+  /// k − 1 more steps.
   /// Throws LogicError if an action would leave the grid or enter a no-fly position (a planner
   /// error), the mission is already finished, or, with strict_separation, two UAVs conflict.
   void step(std::span<const Action> actions);
@@ -49,6 +52,8 @@ class Simulator {
   const world::MissionParams& params() const { return params_; }
   const world::HullMask& hull() const { return hull_; }
   int plane_change_steps() const { return uz_; }
+  /// Steps of each neighbour flight per plane (empty: every flight one step).
+  const grid::FlightSteps& flight_steps() const { return flights_; }
   /// Flyable positions and the hull cells that can be inspected / detected (computed at t = 0).
   const world::Reachability& reachability() const { return reach_; }
   /// True when (x, y) is a no-fly position of the mission.
@@ -87,6 +92,7 @@ class Simulator {
   world::MissionParams params_;
   world::Reachability reach_;
   int uz_ = 1;
+  grid::FlightSteps flights_;
   int time_ = 0;
 
   grid::Grid<std::int8_t> map_;
@@ -107,9 +113,9 @@ class Simulator {
   MissionResult result_;  // series and counters, filled as the mission runs
   world::LaunchLegs legs_;
   std::vector<std::vector<grid::Cell>> away_path_;  // per UAV: its position at each step away
-  std::vector<std::size_t> away_next_;               // per UAV: the next entry of away_path_
+  std::vector<std::size_t> away_next_;              // per UAV: the next entry of away_path_
   std::vector<int> climbed_at_;  // per UAV flying home: steps left when it is back on plane 2
-  bool homing_ = false;  // the hull is complete and some working UAV has not landed yet
+  bool homing_ = false;          // the hull is complete and some working UAV has not landed yet
 };
 
 }  // namespace hullinspect::sim

@@ -11,9 +11,10 @@ namespace hullinspect::sim {
 /// Values of the mission map M (eq. 2).
 inline constexpr std::int8_t kNotHull = -1;
 inline constexpr std::int8_t kUnknown = 0;
-inline constexpr std::int8_t kClean = 1;          ///< non-corroded, seen at z = 1 or 2
-inline constexpr std::int8_t kCorrosionSeen = 2;  ///< corroded, expected (prior) or detected at z = 2
-inline constexpr std::int8_t kInspected = 3;      ///< corroded, inspected at z = 1
+inline constexpr std::int8_t kClean = 1;  ///< non-corroded, seen at z = 1 or 2
+inline constexpr std::int8_t kCorrosionSeen =
+    2;                                        ///< corroded, expected (prior) or detected at z = 2
+inline constexpr std::int8_t kInspected = 3;  ///< corroded, inspected at z = 1
 
 /// Bits of the `seen` flags the simulator keeps per cell.
 inline constexpr std::uint8_t kSeenAtZ2 = 1;
@@ -48,8 +49,13 @@ struct UavState {
   /// on the ground, taking off, flying out to its start cell, or flying home and landing after the
   /// hull is complete. Like a plane change, the UAV cannot act and senses nothing meanwhile.
   int away_left = 0;
-  /// True while the UAV cannot act: changing plane, or away at its launch site.
-  bool in_transit() const { return transit_left > 0 || away_left > 0; }
+  /// Steps left of a neighbour flight longer than one step (docs/model.md "Neighbour flights"):
+  /// the UAV is already at its new position and, like a plane change, cannot act and senses
+  /// nothing until the flight's steps are flown.
+  int flight_left = 0;
+  /// True while the UAV cannot act: changing plane, flying to a distant neighbour, or away at its
+  /// launch site.
+  bool in_transit() const { return transit_left > 0 || away_left > 0 || flight_left > 0; }
 };
 
 /// Event bits of a reading.
@@ -60,9 +66,9 @@ inline constexpr std::uint8_t kEventRedundant = 8;   ///< nothing new: M unchang
 
 /// One hull cell in one UAV's footprint: what that UAV's camera reported.
 struct Reading {
-  int index = 0;                ///< flat cell index
-  std::int8_t value = 0;        ///< 1 clean, 2 corrosion seen from z = 2, 3 corrosion seen at z = 1
-  std::uint8_t events = 0;      ///< kEvent* bits
+  int index = 0;            ///< flat cell index
+  std::int8_t value = 0;    ///< 1 clean, 2 corrosion seen from z = 2, 3 corrosion seen at z = 1
+  std::uint8_t events = 0;  ///< kEvent* bits
 };
 
 }  // namespace hullinspect::sim
