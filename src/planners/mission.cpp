@@ -38,6 +38,9 @@ void add_no_fly(partition::PartitionRequest& request, const PlannerContext& cont
     request.allowed = context.reach->flyable;
     request.seen_from = context.reach->seen_from;
   }
+  if (context.distances != nullptr && context.distances->has_long_flights()) {
+    request.flights = context.distances->flight_table();
+  }
 }
 
 grid::DistanceService& distances_of(const PlannerContext& context,

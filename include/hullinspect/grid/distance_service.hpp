@@ -52,6 +52,8 @@ class DistanceService {
   /// True when distances are not the Manhattan ones (no-fly positions or long flights), so that
   /// they come from searches (field()) rather than grid::manhattan().
   bool searched() const { return has_no_fly() || has_long_flights(); }
+  /// The steps of every neighbour flight (empty: one step each).
+  const EdgeSteps& flight_table() const { return steps_; }
   /// Steps of the flight from `a` to its 4-neighbour `b`.
   int flight(Cell a, Cell b) const { return steps_.between(a, b); }
   bool allowed(Cell c) const { return allowed_.contains(c) && allowed_[c] != 0; }
