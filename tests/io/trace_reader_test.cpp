@@ -28,20 +28,24 @@ namespace {
 
 using nlohmann::json;
 
+// A lawnmower mission on `hull`, recorded.
+json record_lawnmower(const world::HullMask& hull, const world::MissionParams& params) {
+  const auto instance =
+      world::generate_instance(hull, world::CorrosionParams::homogeneous(hull.width(), 0.01, 5), 5);
+  auto planner = planners::make_planner("lawnmower");
+  TraceRecorder recorder(instance, json{{"algorithm", "lawnmower"}});
+  planners::MissionOptions options;
+  options.observers.push_back(&recorder);
+  const auto result = planners::run_mission(hull, instance, params, *planner, options);
+  return recorder.finish(result);
+}
+
 // A lawnmower mission of 4 UAVs on the default hull, recorded.
 const json& recorded_trace() {
   static const json trace = [] {
-    const auto& hull = world::default_hull();
     world::MissionParams params;
     params.uavs = 4;
-    const auto instance = world::generate_instance(
-        hull, world::CorrosionParams::homogeneous(hull.width(), 0.01, 5), 5);
-    auto planner = planners::make_planner("lawnmower");
-    TraceRecorder recorder(instance, json{{"algorithm", "lawnmower"}});
-    planners::MissionOptions options;
-    options.observers.push_back(&recorder);
-    const auto result = planners::run_mission(hull, instance, params, *planner, options);
-    return recorder.finish(result);
+    return record_lawnmower(world::default_hull(), params);
   }();
   return trace;
 }
@@ -326,18 +330,7 @@ world::MissionParams unrolled_params() {
 }
 
 const json& unrolled_trace() {
-  static const json trace = [] {
-    const world::HullMask hull = unrolled_wigley();
-    const world::MissionParams params = unrolled_params();
-    const auto instance = world::generate_instance(
-        hull, world::CorrosionParams::homogeneous(hull.width(), 0.01, 5), 5);
-    auto planner = planners::make_planner("lawnmower");
-    TraceRecorder recorder(instance, json{{"algorithm", "lawnmower"}});
-    planners::MissionOptions options;
-    options.observers.push_back(&recorder);
-    const auto result = planners::run_mission(hull, instance, params, *planner, options);
-    return recorder.finish(result);
-  }();
+  static const json trace = record_lawnmower(unrolled_wigley(), unrolled_params());
   return trace;
 }
 
