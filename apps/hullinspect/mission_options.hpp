@@ -11,6 +11,7 @@
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "mesh_options.hpp"
+#include "speed_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -45,6 +46,7 @@ struct MissionArgs {
   std::vector<std::string> launch;           // X,Y launch sites (none = the paper's model)
   double launch_transfer = world::MissionParams{}.launch_transfer_s;
   std::optional<double> takeoff_time;        // seconds; default u_z
+  SpeedArgs speed;                           // --speed, --climb-speed
 };
 
 /// Adds --no-fly FILE and --no-fly-box X0,Y0,X1,Y1 (repeatable) to a command.
