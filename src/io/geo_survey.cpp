@@ -40,14 +40,29 @@ GeoReference geo_from_survey(const SurveyedPoint& a, const SurveyedPoint& b, dou
                            dz, up, tolerance_m));
   }
   // A ship direction at angle φ counter-clockwise from the bow has the compass bearing ψ − φ, so
-  // ψ = bearing(a → b on the ground) + φ(a → b on the ship).
+  // ψ = bearing(a → b on the ground) + φ(a → b on the ship). North turns across a ship's length
+  // (by about 10⁻³° per 100 m at 53° N), so ψ and the origin are solved in the tangent plane at
+  // the origin itself: from a guess (a's plane), each round measures both points in the plane at
+  // the last origin and moves the origin to where a's ship-frame offset leads back from a; the
+  // error shrinks by the ship's length over the earth's radius each round.
   constexpr double kDeg = 180.0 / std::numbers::pi;
-  double heading = (std::atan2(east, north) + std::atan2(dy, dx)) * kDeg;
-  heading = std::fmod(heading + 720.0, 360.0);
-  // The origin: a's ship-frame offset taken back from a, in the tangent plane at a (over a ship's
-  // length the plane departs from the ellipsoid by millimetres).
-  const GeoReference from_a(a.at, heading);
-  return GeoReference(from_a.to_wgs84(-a.x, -a.y, -a.z), heading);
+  const double phi = std::atan2(dy, dx);
+  GeoPoint origin = a.at;
+  double heading = 0;
+  for (int round = 0; round < 4; ++round) {
+    const GeoReference plane(origin, 0.0);  // ship x = north, ship y = west
+    double an = 0, aw = 0, au = 0, bn = 0, bw = 0, bu = 0;
+    plane.from_wgs84(a.at, an, aw, au);
+    plane.from_wgs84(b.at, bn, bw, bu);
+    heading = std::fmod((std::atan2(aw - bw, bn - an) + phi) * kDeg + 720.0, 360.0);
+    const Enu ra = GeoReference(origin, heading).to_enu(a.x, a.y, a.z);
+    // The origin's ENU in this plane is a's minus R(ψ)·a; back to the plane's (north, west, up).
+    const double e = -aw - ra.east;
+    const double n = an - ra.north;
+    const double u = au - ra.up;
+    origin = plane.to_wgs84(n, -e, u);
+  }
+  return GeoReference(origin, heading);
 }
 
 }  // namespace hullinspect::io

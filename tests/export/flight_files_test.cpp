@@ -447,7 +447,9 @@ TEST(PreflightReport, SeparationIsTheSmallestGapOfTheTrace) {
     EXPECT_EQ(sep["min_cells"], smallest);
     EXPECT_DOUBLE_EQ(sep["min_m"].get<double>(), smallest * 0.5);
     EXPECT_EQ(sep["conflicts"], 0);
-    if (std::string(d) == "2") EXPECT_GE(smallest, 2);
+    if (std::string(d) == "2") {
+      EXPECT_GE(smallest, 2);
+    }
     const bool warned = report["warnings"].dump().find("no separation") != std::string::npos;
     EXPECT_EQ(warned, smallest == 0 && std::string(d) == "0");
     for (const auto& s : report["sorties"]) EXPECT_TRUE(s["battery_margin_s"].is_null());
