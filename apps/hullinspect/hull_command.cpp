@@ -60,12 +60,11 @@ int import(const HullImportArgs& args) {
         "  columns from {:.3f} m (port) to {:.3f} m (starboard) around the "
         "bow; Z0 = {:.3f} m\n",
         metres(g.x0), metres(g.x0 + hull.width() * g.cell_size), metres(g.z0));
-    std::cout << fmt::format("  wrote {}\n", out);
-    return 0;
+  } else {
+    std::cout << fmt::format(
+        "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
+        metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));
   }
-  std::cout << fmt::format(
-      "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
-      metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));
   std::cout << fmt::format("  wrote {}\n", out);
   check_stdout();  // a command whose printed result is lost leaves no file
   outputs.commit();
