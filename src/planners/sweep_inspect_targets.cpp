@@ -24,7 +24,6 @@ bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
   int mine = -1;
   for (std::size_t j = 0; j < uavs_.size(); ++j) {
     if (static_cast<int>(j) == k || uavs_[j].target_cell != cell) continue;
-    if (!options_.yield_claims) return true;
     const grid::Cell c = hull_cell(cell);
     if (mine < 0) {
       mine = uav_distances_[static_cast<std::size_t>(k)]->distance(
@@ -42,7 +41,7 @@ bool SweepInspectPlanner::left_to_low_sweep(int k, int i) const {
   // for the stern about 80 s in a trace (combined, s2 = 11, seed 1 000 021, UAV 0 failing at
   // 180), while the owner's z = 1 sweep inspects those cells on its way anyway (drop_observed
   // keeps them in its share).
-  if (!resplit_ || !options_.leave_to_low_sweep) return false;
+  if (!resplit_) return false;
   const int j = owner_[i];
   if (j < 0 || j == k || dense_column_.empty() ||
       dense_column_[static_cast<std::size_t>(i % width_)] == 0)
@@ -55,8 +54,7 @@ bool SweepInspectPlanner::left_to_low_sweep(int k, int i) const {
 
 bool SweepInspectPlanner::may_inspect(int k, int i) const {
   if (left_to_low_sweep(k, i)) return false;
-  return (options_.help || partition_->owner[i] == k) && reachable(k, i, world::kReachZ1) &&
-         !claimed_by_other(k, i);
+  return reachable(k, i, world::kReachZ1) && !claimed_by_other(k, i);
 }
 
 int SweepInspectPlanner::nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
@@ -88,7 +86,6 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
   if (searched) from_here_ = distances.field(pos);
   for (int i : hull_cells_) {
     if (!unobserved(view, i)) continue;
-    if (!options_.help && partition_->owner[i] != k) continue;
     if (!reachable(k, i, world::kReachZ2) || claimed_by_other(k, i)) continue;
     const grid::Cell c = view.map.cell(i);
     const grid::Cell there = reach_position(k, pos, c, h2_);
@@ -105,34 +102,6 @@ bool SweepInspectPlanner::cluster_edge(int k, int x, int y, const sim::PlannerVi
   const int i = view.map.index(x, y);
   return unobserved(view, i) && beside_inspected(view.map, x, y) &&
          reachable(k, i, world::kReachZ1) && !claimed_by_other(k, i);
-}
-
-int SweepInspectPlanner::nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
-                                              const sim::PlannerView& view) const {
-  // Corrosion comes in rectangles: an unobserved cell beside an inspected one is likely corroded
-  // too, and looking at it now from z = 1 costs a step or two, against a climb, a descent and a
-  // flight back when the sweep detects it later.
-  const auto& map = view.map;
-  int best = -1;
-  int best_d = std::numeric_limits<int>::max();
-  const int x_lo = std::max(0, around.x - radius);
-  const int x_hi = std::min(map.width() - 1, around.x + radius);
-  const int y_lo = std::max(0, around.y - radius);
-  const int y_hi = std::min(map.height() - 1, around.y + radius);
-  for (int y = y_lo; y <= y_hi; ++y) {
-    for (int x = x_lo; x <= x_hi; ++x) {
-      const int i = map.index(x, y);
-      if (!cluster_edge(k, x, y, view)) continue;
-      const grid::Cell c{x, y};
-      const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
-          pos, reach_position(k, pos, c, h1_));
-      if (d < best_d) {
-        best_d = d;
-        best = i;
-      }
-    }
-  }
-  return best;
 }
 
 grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid::Cell around,
@@ -163,13 +132,11 @@ grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid
     view_work_[at(c.x, c.y)] += 1;
     any = true;
   }
-  if (options_.follow_clusters) {
-    for (int y = std::max(0, around.y - radius); y <= std::min(y1, around.y + radius); ++y) {
-      for (int x = std::max(0, around.x - radius); x <= std::min(x1, around.x + radius); ++x) {
-        if (!cluster_edge(k, x, y, view)) continue;
-        view_work_[at(x, y)] += 1;
-        any = true;
-      }
+  for (int y = std::max(0, around.y - radius); y <= std::min(y1, around.y + radius); ++y) {
+    for (int x = std::max(0, around.x - radius); x <= std::min(x1, around.x + radius); ++x) {
+      if (!cluster_edge(k, x, y, view)) continue;
+      view_work_[at(x, y)] += 1;
+      any = true;
     }
   }
   if (!any) return grid::kNoCell;
@@ -246,8 +213,7 @@ sim::Action SweepInspectPlanner::help_step(int k, const sim::UavState& u,
     // Detected cells first (a sweep passing abreast is not sure to), then the tail of the sweep
     // that would end last (share-sweep), then unknown cells.
     p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
-    if (p.target_cell < 0 && options_.share_sweep && take_sweep_tail(k, u, view))
-      return decide_uav(k, u, view);
+    if (p.target_cell < 0 && take_sweep_tail(k, u, view)) return decide_uav(k, u, view);
     if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
     if (p.target_cell < 0) {
       p.mode = Mode::kDone;

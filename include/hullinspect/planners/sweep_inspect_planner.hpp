@@ -26,129 +26,25 @@
 namespace hullinspect::planners {
 
 struct SweepInspectOptions {
+  /// The regions' last fallback (a piece of the band partition or a column slab not
+  /// 4-connected): this partitioner, its options and seed.
   std::string partitioner{partition::kDefaultPartitioner};
   OptionMap partitioner_options;
   std::uint64_t partition_seed = 0;
-  bool help = true;  ///< after its sweep a UAV takes work anywhere (false: only its own region's)
-  bool inspect_on_the_way = true;  ///< descend when a detection is abreast (false: only at the end)
-  double radius_factor = 1.0;    ///< inspect detected cells within radius_factor·s2 of the descent
   bool prior_weights = true;     ///< partition weighted by the expected work per cell
   bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
-  bool prior_first = true;       ///< first inspect the prior's cells of the region at z = 1
-  /// After an inspection, rejoin the strip up to s2/2 columns ahead of where it was left (those
-  /// columns were already seen from there) instead of flying back to that point.
-  bool resume_ahead = true;
-  /// After an inspection, plan the sweep anew from where the UAV is (over the cells of its region
-  /// not yet observed) when that flight is shorter than the way back to the rejoin point and the
-  /// sweep planned from there (flights as the distance service gives them).
-  bool replan_rejoin = true;
-  /// Plan the sweep from where the prior's inspections ended, over the region's cells they did
-  /// not see, bottom-up or top-down, whichever end is nearer (false: the whole region bottom-up
-  /// from the start cell).
-  bool nearer_sweep_end = true;
-  /// Stop the prior's inspections (and sweep) once at least `prior_check_cells` of the prior's
-  /// cells have been seen and fewer than this fraction of them were corroded (0: never).
+  bool prior_first = true;       ///< first tour the prior's cells of the region at z = 1
+  /// Drop the prior (stop its tours) when fewer than this fraction of its cells are corroded:
+  /// at the start when the scenario's statistics say so, else once its first cells are seen
+  /// (0: never).
   double prior_trust = 0.8;
-  int prior_check_cells = 10;
-  /// Drop the prior at the start when the scenario's statistics (p_C, l_C, p_TP, p_FP) make fewer
-  /// than `prior_trust` of its cells corroded on average, instead of finding it out on a tour.
-  bool trust_statistics = true;
-  /// A failed UAV's prior cells go at once to the nearest working UAV, which interrupts its sweep
-  /// for them (false: they wait for the helpers, after their sweeps).
-  bool take_over_prior = true;
-  /// A failed UAV's unswept cells go at once to the working UAVs, split so that they end together
-  /// (each sweeps its share after its own strips; false: they wait for the helpers' nearest-cell
-  /// search after their sweeps).
-  bool take_over_sweep = true;
-  /// After a failure's re-split, a UAV leaves a detection in another working UAV's share of the
-  /// dense columns (swept at z = 1, which inspects it on its way) to that UAV, instead of
-  /// descending for it on its flight to its own share (false: whoever passes it descends).
-  bool leave_to_low_sweep = true;
-  /// After a failure's re-split, the detections not yet inspected stay in the share they went to
-  /// until inspected, also at z = 2: its bands are planned to pass abreast of them, and it
-  /// descends for them on the way (false: dropped from the share at z = 2; a failed UAV's were
-  /// left to the helpers at the mission's end).
-  bool pass_left_detections = true;
-  /// After a failure's re-split, a share's dense part is swept at z = 1 as two blocks of
-  /// columns, one after the other, where that is a shorter flight than one boustrophedon over
-  /// its bands: swept in part, the share is ragged (false: one boustrophedon).
-  bool two_block_sweep = true;
-  /// Neighbours re-split their prior cells so that their tours (estimated) end together, at the
-  /// start and after a failure's prior cells were handed over; a UAV whose tour is done takes the
-  /// part of the longest tour left (of a UAV of its flight part) that makes the later of the two
-  /// end earliest (false: each tours its region's prior cells).
-  bool share_prior = true;
-  /// A claimed target goes to a UAV nearer to it than its claimer (false: claims hold).
-  bool yield_claims = true;
-  /// The sweep's bands: "rows" (s2 rows from the grid's bottom, flown along the hull) or
-  /// "columns" (s2 columns from the region's leftmost, flown up and down the hull's height).
-  std::string strips = "auto";
-  /// Fly a band only as far as the footprint needs to reach its ends (false: end cell to end cell).
-  bool trim_strip_ends = true;
-  /// At z = 1, before climbing, also look at the unobserved cells next to a cell it inspected
-  /// (a corrosion rectangle going on beyond what was seen) within the inspection radius, instead
-  /// of climbing and descending again for its next rows.
-  bool follow_clusters = true;
-  /// At z = 1, fly to the position whose footprint takes in the most of that work (detections
-  /// within the inspection radius and, with follow_clusters, cells beside inspected ones) per step
-  /// of flight, held until reached or empty (false: to the nearest cell's nearest viewpoint,
-  /// chosen anew each step).
-  bool inspect_viewpoints = true;
-  /// While sweeping, skip the rest of a band whose cells (within the footprint of what is left of
-  /// it) have all been observed already — by a helper, or on the way of an inspection (at z = 1:
-  /// observed and, if detected, inspected).
-  bool skip_seen_bands = true;
   /// The cells of a corrosion zone whose expected corroded fraction (of what the sweep will find:
   /// without the prior's toured cells) exceeds this are swept at z = 1 in bands of s1 (1: never).
   double low_sweep_above = 0.1;
-  /// A UAV whose dense columns span at most this many bands of s1 (and that has other cells too)
-  /// sweeps them at z = 2 with its other cells (0: never).
-  int low_sweep_min_bands = 2;
-  /// A UAV whose sweep is done takes the tail of the remaining sweep (its last bands) of the
-  /// working UAV that would end last, split so that the later of the two ends earliest, before
-  /// it helps cell by cell.
-  bool share_sweep = true;
-  /// Partition in column slabs (the stripes partitioner, with the same weights) where they are
-  /// 4-connected, else with `partitioner`.
-  bool slab_partition = true;
-  /// Partition in pieces of one boustrophedon over the hull's column bands (band_partition.hpp),
-  /// each region's bands on that band grid, where the pieces are 4-connected and the flight space
-  /// is one; else slab-partition's.
-  bool band_partition = true;
-  /// In the band partition, the inspections expected at a cell the sweep detects (its weight's
-  /// excess over 1) count this many times (a toured prior cell's, prior_tour_weight times).
-  double inspection_weight = 2.0;
-  /// With share-prior, in the band partition, a prior cell toured first counts its weight's
-  /// excess over 1 this many times: share-prior re-splits the tours among neighbours after the
-  /// partition, so a piece that the partition shrank for its tour would end its sweep early
-  /// (0.25: tuning seeds, docs/sweep-inspect.md, "Regions"). Without share-prior it counts once.
-  double prior_tour_weight = 0.25;
-  /// While sweeping, also descend for a detected cell within the footprint (but not abreast)
-  /// that the current leg of the flight comes no nearer to: beyond a band's trimmed end, or
-  /// behind its start (false: such cells wait for the helpers).
-  bool inspect_band_ends = true;
-  /// Descend for a detection abreast only once it is no longer ahead on the leg being flown (up
-  /// to h1 behind), so that the z = 2 footprint has seen the rows beyond it first (false: as soon
-  /// as it is within h1 ahead).
-  bool descend_when_level = true;
-  /// Visit the prior's cells in the order of a planned open tour (open_tour.hpp: nearest
-  /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen while
-  /// it has at most kReplannedTourCells cells, repaired (seen cells dropped) above (false: the
-  /// nearest cell at every step).
-  bool plan_prior_tour = true;
-  /// Fly to the sweep's first band along the region's edge row (and a band's centre line) when
-  /// that makes the whole flight shorter: the bands it passes are then flown only as far as the
-  /// cells it did not see (false: straight there, x then y).
-  bool approach_edge = true;
-  /// Also plan sweeps that begin at the UAV's own band: the bands on one side of it (whole, or
-  /// their cells on one side of a cut along them near the UAV) first, then the rest, when that
-  /// is a shorter flight: a UAV in mid-region otherwise first crosses bands it flies again.
-  bool own_band_first = true;
-  /// Without a prior tour, move the band partition's cuts (a few rows at a time, up to
-  /// `balance_rounds` passes over them) while the UAVs' latest planned end — the flight from its
-  /// start, with the approach, plus expected inspections — gets earlier.
-  bool balance_flights = true;
-  int balance_rounds = 10;
+  /// The sweep's bands: "rows" (s2 rows from the grid's bottom, flown along the hull),
+  /// "columns" (s2 columns, flown up and down the hull's height) or "auto" (per region and
+  /// re-plan, the shorter flight; the band partition's z = 2 sweeps fly its columns).
+  std::string strips = "auto";
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -216,10 +112,6 @@ class SweepInspectPlanner final : public Planner {
   /// follow-clusters' work: cell (x, y) is unobserved, has an inspected 4-neighbour, and UAV k
   /// may look at it from z = 1 (reachable, not claimed by another UAV).
   bool cluster_edge(int k, int x, int y, const sim::PlannerView& view) const;
-  /// follow-clusters: the nearest unobserved cell with an inspected 4-neighbour within Chebyshev
-  /// radius `radius` of `around`, seen from z = 1 by UAV k; −1 if none.
-  int nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
-                           const sim::PlannerView& view) const;
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
@@ -252,7 +144,7 @@ class SweepInspectPlanner final : public Planner {
   bool prior_distrusted() const {
     if (prior_dropped_) return true;
     const int seen = prior_true_ + prior_false_;
-    return options_.prior_trust > 0 && seen >= options_.prior_check_cells &&
+    return options_.prior_trust > 0 && seen >= kPriorCheckCells &&
            prior_true_ < options_.prior_trust * seen;
   }
   /// The strips of UAV k's region flown from `from` (its cells in owner_): over its cells in dense
@@ -345,6 +237,20 @@ class SweepInspectPlanner final : public Planner {
   bool reachable(int k, int i, std::uint8_t bit) const;
   /// The move from `pos` one step along UAV k's service's shortest flight to `to`.
   sim::Action step(int k, grid::Cell pos, grid::Cell to) const;
+
+  /// The prior is judged (prior-trust) once this many of its cells have been seen.
+  static constexpr int kPriorCheckCells = 10;
+  /// In the band partition, the inspections expected at a cell the sweep detects (its weight's
+  /// excess over 1) count this many times, a prior cell's toured first kPriorTourWeight times:
+  /// the tours are re-split among neighbours after the partition (balance_prior_tours), so a
+  /// piece that the partition shrank for its whole tour would end its sweep early.
+  static constexpr double kInspectionWeight = 2.0;
+  static constexpr double kPriorTourWeight = 0.25;
+  /// Dense columns spanning at most this many bands of s1 (among other cells of a region) are
+  /// swept at z = 2 with the rest: each z = 1 band is a whole pass of the hull's height.
+  static constexpr int kLowSweepMinBands = 2;
+  /// Passes of the flight balancing over the band partition's cuts.
+  static constexpr int kBalanceRounds = 10;
 
   SweepInspectOptions options_;
   std::shared_ptr<const partition::Partition> partition_;
