@@ -1,6 +1,7 @@
-// Sweep-Inspect (docs/sweep-inspect.md): the mission's start and each step's decision per
-// UAV — prior tour, sweep, inspection, return, help — and the trace annotations. The other stages
-// are in sweep_inspect_{partition,sweep,targets,prior,failure}.cpp.
+// Sweep-Inspect (docs/sweep-inspect.md): the mission's start, the fleet-wide events of each step
+// (detections, the prior's precision, failures) and the trace annotations. Each UAV's mode and
+// its transitions are in sweep_inspect_modes.cpp; the other stages in
+// sweep_inspect_{partition,sweep,targets,prior,failure}.cpp.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -151,98 +152,6 @@ void SweepInspectPlanner::decide(const sim::PlannerView& view, std::span<sim::Ac
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     actions[k] = decide_uav(static_cast<int>(k), view.uavs[k], view);
   }
-}
-
-sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
-                                            const sim::PlannerView& view) {
-  Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (u.failed) {
-    p = Uav{};
-    p.mode = Mode::kFailed;
-    return sim::Action::kHover;
-  }
-  if (u.in_transit()) return sim::Action::kHover;
-
-  if (!prior_[static_cast<std::size_t>(k)].empty() && u.z == 2 &&
-      (p.mode == Mode::kSweep || p.mode == Mode::kHelp || p.mode == Mode::kDone)) {
-    // Prior cells handed over from a failed UAV: leave the sweep (or help) for them, come back.
-    p.after_prior = p.mode == Mode::kSweep ? Mode::kReturn : Mode::kHelp;
-    if (p.mode == Mode::kSweep) p.resume = u.pos;
-    p.target_cell = -1;
-    p.mode = Mode::kPrior;
-  }
-  if (p.mode == Mode::kPrior) {
-    if (const auto a = prior_tour_step(k, u, view)) return *a;
-  }
-
-  if (p.mode == Mode::kSweep && p.low) {
-    // low-sweep-above: dense columns are swept at z = 1; every cell seen is inspected.
-    if (p.replan) {
-      p.replan = false;
-      p.sweep.assign(sweep_from(k, u.pos));
-      if (!p.low) return decide_uav(k, u, view);
-    }
-    if (u.z == 2) return sim::Action::kChangePlane;
-    if (const auto a = follow_sweep(k, u, view)) return *a;
-  }
-  if (p.mode == Mode::kSweep || p.mode == Mode::kReturn) {
-    if (u.z == 1) {  // arrived below for an inspection
-      p.mode = Mode::kInspect;
-    } else {
-      if (p.replan) {
-        // Its cells were re-split after a failure: strips over its new share from here.
-        p.replan = false;
-        p.mode = Mode::kSweep;
-        p.sweep.assign(sweep_from(k, u.pos));
-      }
-      if (p.mode == Mode::kReturn && u.pos == p.resume) p.mode = Mode::kSweep;
-      if (p.mode == Mode::kSweep && detection_abreast(k, u.pos, view)) {
-        p.resume = u.pos;
-        return sim::Action::kChangePlane;
-      }
-      if (p.mode == Mode::kReturn) return step(k, u.pos, p.resume);
-      if (const auto a = follow_sweep(k, u, view)) return *a;
-    }
-  }
-  if (p.mode == Mode::kDone)
-    p.mode = Mode::kHelp;  // work may have appeared (a failure, a claim freed)
-  if (p.mode == Mode::kHelp && p.replan && (u.z == 2 || p.low)) {
-    // Cells re-split after a failure while it was helping: sweep them.
-    p.replan = false;
-    p.sweep.assign(sweep_from(k, u.pos));
-    p.sweep_planned = true;
-    p.target_cell = -1;
-    const sim::Action a = p.sweep.next_action(u.pos);
-    if (a != sim::Action::kHover) {
-      p.mode = Mode::kSweep;
-      return a;
-    }
-  }
-
-  if (p.mode == Mode::kInspect) {
-    if (u.z == 2) {  // climbed back: resume the sweep
-      p.mode = Mode::kReturn;
-      p.target_cell = -1;
-      return u.pos == p.resume ? decide_uav(k, u, view) : step(k, u.pos, p.resume);
-    }
-    int cell = -1;
-    p.viewpoint = inspection_viewpoint(k, u.pos, p.resume, radius_, p.viewpoint, cell, view);
-    p.target_cell = cell;
-    if (cell < 0) {
-      p.resume = rejoin_point(k, p, u.pos, view);
-      if (replan_after_inspection(k, u.pos, view) && p.low) {
-        // The sweep planned from here starts with dense columns, swept at z = 1: no climb.
-        p.mode = Mode::kSweep;
-        return decide_uav(k, u, view);
-      }
-      return sim::Action::kChangePlane;
-    }
-    p.target = p.viewpoint;
-    return step(k, u.pos, p.target);
-  }
-
-  if (p.mode == Mode::kHelp) return help_step(k, u, view);
-  return sim::Action::kHover;  // kDone
 }
 
 bool SweepInspectPlanner::idle(const sim::PlannerView& view) const {

@@ -193,20 +193,21 @@ std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::U
   if (p.approach_rest == 0) skip_seen_bands(p, u.pos, view);
   const sim::Action a = p.sweep.next_action(u.pos);
   if (a != sim::Action::kHover) return a;
-  if (p.other_part) return next_part(k, u, view);
-  p.mode = Mode::kHelp;
+  if (p.other_part) {
+    next_part(k, u);
+  } else {
+    p.mode = Mode::kHelp;
+  }
   return std::nullopt;
 }
 
-sim::Action SweepInspectPlanner::next_part(int k, const sim::UavState& u,
-                                           const sim::PlannerView& view) {
+void SweepInspectPlanner::next_part(int k, const sim::UavState& u) {
   // One part of its cells swept: the other, planned from here, on its plane.
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   p.other_part = false;
   const bool low = !p.low;
   p.sweep.assign(part_strips(k, low, u.pos));
   if (!low) p.resume = u.pos;  // from z = 1: inspect what is pending here, climb, sweep
-  return decide_uav(k, u, view);
 }
 
 bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,

@@ -196,8 +196,8 @@ grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid
   return best;
 }
 
-sim::Action SweepInspectPlanner::help_step(int k, const sim::UavState& u,
-                                           const sim::PlannerView& view) {
+std::optional<sim::Action> SweepInspectPlanner::help_step(int k, const sim::UavState& u,
+                                                          const sim::PlannerView& view) {
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   // Keep a target while it is still work; else take the nearest unclaimed work anywhere:
   // detected cells first (inspected from z = 1), then unknown cells (covered from z = 2).
@@ -213,7 +213,7 @@ sim::Action SweepInspectPlanner::help_step(int k, const sim::UavState& u,
     // Detected cells first (a sweep passing abreast is not sure to), then the tail of the sweep
     // that would end last (share-sweep), then unknown cells.
     p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
-    if (p.target_cell < 0 && take_sweep_tail(k, u, view)) return decide_uav(k, u, view);
+    if (p.target_cell < 0 && take_sweep_tail(k, u, view)) return std::nullopt;  // now sweeping
     if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
     if (p.target_cell < 0) {
       p.mode = Mode::kDone;

@@ -79,7 +79,34 @@ class SweepInspectPlanner final : public Planner {
     std::size_t tour_next = 0;
     bool repaired = false;
   };
+  // The state machine (sweep_inspect_modes.cpp). A UAV's mode, and how it leaves it:
+  //   kPrior   tours its prior cells at z = 1 → kSweep (first time), or back to what it left
+  //            for prior cells handed over (kReturn, kHelp)
+  //   kSweep   flies its bands (z = 2, or z = 1 in dense columns) → kInspect (descended for a
+  //            detection abreast), kHelp (its sweep is done)
+  //   kInspect inspects the detections around its descent at z = 1 → kReturn (climbed), kSweep
+  //            (the sweep planned from here starts at z = 1)
+  //   kReturn  flies back to where it rejoins its sweep → kSweep, kInspect
+  //   kHelp    takes the nearest unclaimed work anywhere → kSweep (a sweep's tail taken, or cells
+  //            of a failure's re-split), kDone (nothing left)
+  //   kDone    hovers → kHelp (work may appear)
+  //   kFailed  (failed)
+  // Any of kSweep, kHelp, kDone → kPrior when prior cells of a failed UAV are handed to it.
+  /// UAV k's action this step: the functions of its modes, in turn, until one acts.
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Any of kSweep, kHelp, kDone → kPrior when `prior` (the UAV's) holds cells handed over.
+  static void take_handed_prior(Uav& p, const sim::UavState& u, const std::vector<int>& prior);
+  /// Each mode's step: the action, or nullopt when the UAV moved to a mode that now decides.
+  std::optional<sim::Action> sweep_mode(int k, const sim::UavState& u,
+                                        const sim::PlannerView& view);
+  std::optional<sim::Action> return_mode(int k, const sim::UavState& u,
+                                         const sim::PlannerView& view);
+  std::optional<sim::Action> inspect_mode(int k, const sim::UavState& u,
+                                          const sim::PlannerView& view);
+  std::optional<sim::Action> help_mode(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// kSweep at z = 2: descend for a detection abreast, else on along the sweep.
+  std::optional<sim::Action> sweep_at_z2(int k, const sim::UavState& u,
+                                         const sim::PlannerView& view);
   /// Mode kPrior: UAV k's next move on its tour of the prior's cells at z = 1; nullopt when the
   /// tour is done and the UAV has moved on to its sweep (or back to what it left).
   std::optional<sim::Action> prior_tour_step(int k, const sim::UavState& u,
@@ -87,18 +114,19 @@ class SweepInspectPlanner final : public Planner {
   /// inspect-on-the-way: whether a detected cell is abreast of UAV k sweeping at `pos` (or, with
   /// inspect-band-ends, beyond the leg it flies), so that it descends now.
   bool detection_abreast(int k, grid::Cell pos, const sim::PlannerView& view) const;
-  /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere (or a sweep tail).
-  sim::Action help_step(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere; nullopt when it
+  /// took a sweep's tail (now kSweep).
+  std::optional<sim::Action> help_step(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them),
   /// but for the detections in columns swept at z = 1, which that sweep is to inspect, and those
   /// a re-split gave it (resplit_detection_), which its sweep is to pass abreast of.
   void drop_observed(int k, const sim::PlannerView& view);
-  /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
-  /// this one is done; nullopt, the UAV now helping, when its sweep is over.
+  /// UAV k's next move along its sweep (skipping bands seen already); nullopt when this part is
+  /// done: its other part planned (still kSweep), or, the sweep over, now kHelp.
   std::optional<sim::Action> follow_sweep(int k, const sim::UavState& u,
                                           const sim::PlannerView& view);
-  /// The part of UAV k's cells on the other plane, when the current part's sweep is done.
-  sim::Action next_part(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Plans the part of UAV k's cells on the other plane, when the current part's sweep is done.
+  void next_part(int k, const sim::UavState& u);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
   /// radius when radius < 0), not claimed by another UAV; −1 if none.
   int nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
