@@ -26,8 +26,8 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
   std::vector<int> band_start = column_band_starts(width_of_column);
   // An inspection on detection (a descent, a flight across the band and back, a climb) costs
   // more than its weight says, which is a planned z = 1 tour's (the prior's cells when toured).
-  // The tours, though, are re-split among neighbours after the partition (share-prior): a piece
-  // shrunk for its whole tour lost sweep to pieces that then also took part of its tour, and
+  // The tours, though, are re-split among neighbours after the partition (balance_prior_tours): a
+  // piece shrunk for its whole tour lost sweep to pieces that then also took part of its tour, and
   // ended early (inhomogeneous, s2 = 7, n = 4, 20 tuning seeds: the two UAVs of the denser half
   // ended their sweeps 25-30 s before the other two with a weight of 1, within 12 s with 0.25).
   const bool toured = options_.prior_first && !prior_dropped_;

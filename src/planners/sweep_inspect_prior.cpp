@@ -1,6 +1,6 @@
 // Sweep-Inspect's tours of the prior's cells at z = 1 (docs/sweep-inspect.md, "The prior" and
 // "Failures"): the planned tour, its estimate, and the re-splits that end neighbours' tours
-// together (share-prior), also of a failed UAV's cells.
+// together, also of a failed UAV's cells.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -238,7 +238,7 @@ std::optional<sim::Action> SweepInspectPlanner::prior_tour_step(int k, const sim
   } else {
     if (u.z == 2) return sim::Action::kChangePlane;
     // On when the cell it flew to was seen (on the way, or by another UAV) or went to another
-    // UAV (share-prior); a long tour also when its cells were re-assigned (forget_tour).
+    // UAV (the tours' re-split); a long tour also when its cells were re-assigned (forget_tour).
     const bool seen = p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen;
     const bool mine = p.repaired
                           ? p.tour_next < p.tour.size() && p.tour[p.tour_next] == p.target_cell

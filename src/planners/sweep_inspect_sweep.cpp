@@ -1,6 +1,6 @@
 // Sweep-Inspect's sweeps (docs/sweep-inspect.md, "The sweep" to "Help"): planning a UAV's bands,
 // following them (skipping what is seen), rejoining after an inspection, and taking over the tail
-// of another UAV's sweep (share-sweep).
+// of another UAV's sweep.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -287,7 +287,7 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
   tail.insert(tail.end(), rest.begin() + static_cast<std::ptrdiff_t>(leg), rest.end());
   if (chosen.backward) std::reverse(tail.begin(), tail.end());
   // The tail's cells become the taker's in owner_, so that a sweep planned again from owner_
-  // (replan-rejoin) neither drops the tail nor gives it back to the donor.
+  // (after an inspection) neither drops the tail nor gives it back to the donor.
   const int half = q.low ? h1_ : h2_;
   const auto& map = view.map;
   for (std::size_t i = 0; i + 1 < tail.size(); ++i) {
@@ -432,9 +432,9 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
                                             const sim::PlannerView& view) const {
   const Uav& p = uavs_[static_cast<std::size_t>(k)];
   // Descend when a detected cell is abreast: its position along the band within reach of
-  // the z = 1 footprint (across it, within the band's width), and with descend-when-level no
+  // the z = 1 footprint (across it, within the band's width), and no
   // longer ahead on the leg. Also, with
-  // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
+  // when this leg of the flight comes no nearer to it along the band:
   // a cell beyond the trimmed end of a band (within h2 of its last position, never within
   // h1) or behind its start would otherwise wait for the helpers at the mission's end.
   grid::Cell next = pos;
@@ -449,7 +449,7 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
   const bool leg_along = rows ? next.y == pos.y : next.x == pos.x;
   const int leg_lo = std::min(along_of(pos), leg_along ? along_of(next) : along_of(pos));
   const int leg_hi = std::max(along_of(pos), leg_along ? along_of(next) : along_of(pos));
-  // descend-when-level: the direction the leg is flown along (0: not flying along a leg), so
+  // The direction the leg is flown along (0: not flying along a leg), so
   // that a cell still ahead on it waits; once it is level, the footprint has seen h2 rows beyond
   // it, a rectangle's last rows among them.
   const int leg_dir = !leg_along || next == pos ? 0 : along_of(next) > along_of(pos) ? 1 : -1;
@@ -464,7 +464,7 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
     const bool here_or_never =
         (along <= h1_ && !ahead) || (along <= h2_ && nearest_on_leg >= along);
     // The cells nearest_pending may take, so that a UAV never descends for one it then leaves
-    // (with help off, a detection in another UAV's region: it climbed and descended for ever).
+    // (a detection it may not inspect: it would climb and descend for ever).
     if (here_or_never && across <= h2_ && may_inspect(k, i)) return true;
   }
   return false;

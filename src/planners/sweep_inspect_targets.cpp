@@ -1,6 +1,6 @@
 // Sweep-Inspect's single targets (docs/sweep-inspect.md, "Help"): the help phase of a UAV
 // whose sweep is done, the nearest detection, unobserved cell or cluster edge a UAV may take, and
-// the claims that keep two UAVs off one target (yield-claims).
+// the claims that keep two UAVs off one target.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -111,7 +111,7 @@ grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid
   // a time. Flying to the nearest cell's nearest viewpoint, chosen anew each step, saw them one
   // edge at a time and turned back and forth (imperfect, s2 = 11, n = 8, tuning seed 1 000 007:
   // 33 steps at z = 1 for a cluster of about 9 × 8 cells). Work: the detections it may inspect
-  // within `radius` of `around` and, with follow-clusters, the unobserved cells beside inspected
+  // within `radius` of `around` and the unobserved cells beside inspected
   // ones; every cell counts one. A position is worth the work its footprint takes in per step of
   // the flight there (plus one, so that a far position taking in much beats a near one taking in
   // little only by enough).
@@ -211,7 +211,7 @@ std::optional<sim::Action> SweepInspectPlanner::help_step(int k, const sim::UavS
                             !reachable(k, p.target_cell, world::kReachZ1));
   if (target_done || claimed_by_other(k, p.target_cell)) {
     // Detected cells first (a sweep passing abreast is not sure to), then the tail of the sweep
-    // that would end last (share-sweep), then unknown cells.
+    // that would end last, then unknown cells.
     p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
     if (p.target_cell < 0 && take_sweep_tail(k, u, view)) return std::nullopt;  // now sweeping
     if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);

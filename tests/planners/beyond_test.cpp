@@ -350,13 +350,7 @@ TEST(SweepInspect, SlabPartitionFallsBackWhereSlabsAreNotConnected) {
   EXPECT_THROW(partition::make_partitioner("stripes")->partition(request), Error);
 }
 
-// inspect-band-ends: a detected cell beyond a band's trimmed end (within the footprint of the
-// band's last position but never abreast of it) is inspected before the UAV leaves the band,
-// instead of waiting for the helpers. With s2 = 11 (h2 = 5, h1 = 2) three rows at each end of
-// every column band are such cells. On the imperfect and combined scenarios, s2 = 7 and 11,
-// n = 4 and 8, seeds 1–3, the cells inspected by UAVs in help mode are fewer with the option (27
-// against 81) and T_c summed is lower (4 831 against 4 898 s), every mission complete
-// under the checker.
+// Counts the cells inspected by UAVs in help mode: detections the sweeps left to the helpers.
 class HelpInspectionCounter final : public MissionObserver, public AnnotationSink {
  public:
   void on_start(const sim::Simulator& sim, const Planner& planner) override {
@@ -397,8 +391,8 @@ class HelpInspectionCounter final : public MissionObserver, public AnnotationSin
   std::vector<char> help_;
 };
 
-// A z = 1 sweep planned anew (after its approach, replan-rejoin) keeps the detections in its
-// columns: the z = 2 footprint of a UAV that descends there detects cells around it, and when
+// A z = 1 sweep planned anew (after its approach, or after an inspection) keeps the detections in
+// its columns: the z = 2 footprint of a UAV that descends there detects cells around it, and when
 // the plan dropped every observed cell those were left out of its bands and waited for the
 // helpers (combined, s2 = 11, n = 4, seed 1 000 006: T_c 279 s that way, 234 s keeping them).
 // On the combined scenario, s2 = 9 and 11, n = 4 and 8, seeds 1–5, UAVs in help mode inspect
@@ -423,15 +417,15 @@ TEST(SweepInspect, ALowSweepPlannedAgainKeepsItsDetections) {
   RecordProperty("help_inspections", help_inspections);
 }
 
-// inspect-on-the-way follows the leg being flown, not the bands' axis: an approach leg
-// (approach-edge) runs across the column bands, along the region's edge row. Taking "along" from
-// the bands' axis there, a UAV descended for a detection still h2 cells ahead on its leg, flew on
-// to it at z = 1 and, once it climbed, flew back to where it had descended (imperfect, s2 = 11,
-// n = 4, seed 1 000 000: 16 moves for one rectangle). Checked on every descent of a sweeping UAV
-// from a straight leg: some detected, uninspected cell in its footprint is abreast (within h1
-// along the leg) or one the leg comes no nearer to — never only cells the leg is still flying
-// towards (before the fix this check failed on several of these missions). With the fix,
-// T_c summed over them is 2 578 s (2 715 s when "along" is the bands' axis).
+// Descents follow the leg being flown, not the bands' axis: an approach leg runs across the column
+// bands, along the region's edge row. Taking "along" from the bands' axis there, a UAV descended
+// for a detection still h2 cells ahead on its leg, flew on to it at z = 1 and, once it climbed,
+// flew back to where it had descended (imperfect, s2 = 11, n = 4, seed 1 000 000: 16 moves for one
+// rectangle). Checked on every descent of a sweeping UAV from a straight leg: some detected,
+// uninspected cell in its footprint is abreast (within h1 along the leg) or one the leg comes no
+// nearer to — never only cells the leg is still flying towards (before the fix this check failed on
+// several of these missions). With the fix, T_c summed over them is 2 578 s (2 715 s when "along"
+// is the bands' axis).
 class EarlyDescentCounter final : public MissionObserver, public AnnotationSink {
  public:
   void on_start(const sim::Simulator& sim, const Planner&) override { remember(sim); }
@@ -454,7 +448,7 @@ class EarlyDescentCounter final : public MissionObserver, public AnnotationSink 
       const int leg = std::abs(along_x ? b.x - a.x : b.y - a.y);
       bool cause = false;
       bool ahead = false;
-      bool level = false;  // a cause not ahead on the leg (descend-when-level)
+      bool level = false;  // a cause not ahead on the leg
       for (int i = 0; i < map_.size(); ++i) {
         if (map_[i] != sim::kCorrosionSeen || (seen_[i] & sim::kSeenAtZ2) == 0) continue;
         const grid::Cell c = map_.cell(i);
@@ -561,7 +555,7 @@ TEST(SweepInspect, EveryZoneSweptLowCompletes) {
   }
 }
 
-/// Watches share-sweep's hand-overs: a sweeping UAV whose plan now holds at least two waypoints
+/// Watches a sweep's tail handed over: a sweeping UAV whose plan now holds at least two waypoints
 /// that its plan of the step before did not, all but one of them (the split point) from another
 /// sweeping UAV's plan of the step before, which no longer holds them. (A UAV that is done takes
 /// over within the decision that ends its own sweep, so its annotation may never say "help".)
@@ -699,7 +693,7 @@ TEST(SweepInspect, EveryBandDirectionCompletes) {
   }
 }
 
-// The re-split after a failure (take-over-sweep) reads the shared map, the positions and the
+// The re-split after a failure reads the shared map, the positions and the
 // failed flags only: the difference is placed where the fleet looks last (after the re-split), with
 // and without the option.
 TEST(SweepInspect, TakeOverSweepIsTruthBlind) {
@@ -780,7 +774,7 @@ TEST(SweepInspect, PriorTrustChangesNothingWhenThePriorIsRight) {
 }
 
 TEST(SweepInspect, AWrongPriorIsDroppedAfterItsFirstCellsAreSeen) {
-  // Only false positives: with prior-trust the UAVs leave the prior's tour once prior-check-cells
+  // Only false positives: with prior-trust the UAVs leave the prior's tour once its first ten
   // cells were found clean and sweep; without it they fly the whole tour at z = 1 first. (What is
   // left at z = 1 with it are the inspections: seed 1, 266 steps against 506.)
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {

@@ -8,7 +8,7 @@
 // first), climbs back and resumes its sweep where it left it, or plans it anew from there when
 // that is the shorter flight. A UAV whose sweep is done helps: it takes the nearest unclaimed
 // detected, uninspected cell (at z = 1), else the far end of the sweep that would end last
-// (share-sweep), else the nearest unknown cell (at z = 2), which also finishes the region of a
+// (a sweep's tail), else the nearest unknown cell (at z = 2), which also finishes the region of a
 // failed UAV. Communication: the shared map M and the failed flags (as Coop-Frontier), plus each
 // helper's current target (its claim).
 
@@ -63,7 +63,7 @@ class SweepInspectPlanner final : public Planner {
     WaypointFollower sweep;
     grid::Cell resume{-1, -1};        // where the sweep was left for an inspection
     grid::Cell target{-1, -1};        // the position it flies to (inspect / help)
-    int target_cell = -1;             // the cell that target serves (help claims it)
+    int target_cell = -1;             // the cell that target serves (its claim)
     bool sweep_planned = false;       // its sweep was planned (it left the prior's cells once)
     Mode after_prior = Mode::kSweep;  // where to go on when prior cells handed over are done
     bool replan = false;              // its cells were re-split (a failure): plan strips anew
@@ -71,8 +71,8 @@ class SweepInspectPlanner final : public Planner {
     bool low = false;                 // its sweep is flown at z = 1 (low-sweep-above)
     bool other_part = false;          // its cells of the other plane are swept after these
     std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
-    grid::Cell viewpoint{-1, -1};     // where it flies at z = 1 (inspect-viewpoints)
-    // plan-prior-tour: its prior cells in the planned order (empty: plan one), tour[tour_next]
+    grid::Cell viewpoint{-1, -1};     // where it flies at z = 1 (inspection_viewpoint)
+    // Its prior cells in the planned order (empty: plan one), tour[tour_next]
     // the first not yet seen when last looked; `repaired` when it was planned over more than
     // kReplannedTourCells cells, so that it is repaired, not planned anew, until re-assigned.
     std::vector<int> tour;
@@ -111,8 +111,8 @@ class SweepInspectPlanner final : public Planner {
   /// tour is done and the UAV has moved on to its sweep (or back to what it left).
   std::optional<sim::Action> prior_tour_step(int k, const sim::UavState& u,
                                              const sim::PlannerView& view);
-  /// inspect-on-the-way: whether a detected cell is abreast of UAV k sweeping at `pos` (or, with
-  /// inspect-band-ends, beyond the leg it flies), so that it descends now.
+  /// Whether a detected cell is abreast of UAV k sweeping at `pos` (or beyond the leg it
+  /// flies), so that it descends now.
   bool detection_abreast(int k, grid::Cell pos, const sim::PlannerView& view) const;
   /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere; nullopt when it
   /// took a sweep's tail (now kSweep).
@@ -131,14 +131,14 @@ class SweepInspectPlanner final : public Planner {
   /// radius when radius < 0), not claimed by another UAV; −1 if none.
   int nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
                       const sim::PlannerView& view) const;
-  /// inspect-viewpoints: the position UAV k at z = 1 flies to next, `held` while its footprint
+  /// The position UAV k at z = 1 flies to next, `held` while its footprint
   /// still takes in work, else the one taking in the most work cells within Chebyshev `radius` of
   /// `around` per step of flight; kNoCell when no work is left there. `cell` is set to a work
   /// cell it takes in (the UAV's claim), or −1.
   grid::Cell inspection_viewpoint(int k, grid::Cell pos, grid::Cell around, int radius,
                                   grid::Cell held, int& cell, const sim::PlannerView& view);
-  /// follow-clusters' work: cell (x, y) is unobserved, has an inspected 4-neighbour, and UAV k
-  /// may look at it from z = 1 (reachable, not claimed by another UAV).
+  /// Work beside an inspected cell: cell (x, y) is unobserved, has an inspected 4-neighbour, and
+  /// UAV k may look at it from z = 1 (reachable, not claimed by another UAV).
   bool cluster_edge(int k, int x, int y, const sim::PlannerView& view) const;
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
@@ -146,16 +146,16 @@ class SweepInspectPlanner final : public Planner {
   /// Whether UAV k may inspect detected cell i: in its region when help is off, seen from z = 1
   /// by some position it can reach, not claimed by another UAV, not left_to_low_sweep.
   bool may_inspect(int k, int i) const;
-  /// leave-to-low-sweep: after a re-split, whether detected cell i is in another UAV's share of
+  /// After a re-split, whether detected cell i is in another UAV's share of
   /// the dense columns while that UAV is still sweeping them at z = 1.
   bool left_to_low_sweep(int k, int i) const;
   /// low-sweep-above: marks the columns of the corrosion zones (one zone when the statistics are
   /// unknown) whose cells the sweep expects corroded more often than low-sweep-above.
   void find_dense_columns(const PlannerContext& context);
-  /// band-partition: the pieces of one boustrophedon over the hull's bands, of equal expected
+  /// The band partition: the pieces of one boustrophedon over the hull's bands, of equal expected
   /// work (the request's weights, dense columns at z = 1), and band_start_ for their sweeps;
   /// null when a piece is not 4-connected.
-  /// balance-flights: the band partition's cuts moved a few rows at a time while that makes the
+  /// The band partition's cuts moved a few rows at a time while that makes the
   /// latest planned end earlier (or keeps it and spreads the ends less).
   /// `cuts` are `pieces`' (rows.balanced_cuts()).
   partition::Partition balance_flights(const BandPieces& rows, std::vector<std::size_t> cuts,
@@ -188,33 +188,32 @@ class SweepInspectPlanner final : public Planner {
   std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                                       bool approach = true);
   /// One boustrophedon over the cells where `owner` is k (bands of s2, or of s1 when Uav::low)
-  /// flown from `from`, from the nearer end (nearer-sweep-end); led by an edge approach
-  /// (approach-edge) unless `approach` is false.
+  /// flown from `from`, from the nearer end; led by an edge approach unless `approach` is false.
   std::vector<grid::Cell> boustrophedon_from(const grid::Grid<std::int16_t>& owner, int k,
                                              grid::Cell from, bool approach);
-  /// two-block-sweep: after a failure's re-split, `waypoints` (UAV k's sweep of its cells in
+  /// After a failure's re-split, `waypoints` (UAV k's sweep of its cells in
   /// `owner` from `from`) become two blocks of columns where that is a shorter flight, if the
   /// sweep is at z = 1 (Uav::low).
   void low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                   std::vector<grid::Cell>& waypoints);
-  /// At a failure (take-over-sweep): every cell not yet observed is split anew among the working
+  /// At a failure: every cell not yet observed is split anew among the working
   /// UAVs in column slabs, left to right in the order of their positions, so that their predicted
   /// ends — the prior's cells left to visit, the flight to the slab, the slab — are as early as
   /// can be; each then sweeps its slab's strips from where it is.
   void resplit(const sim::PlannerView& view);
-  /// share-prior: UAV k at `pos`, its prior tour done, takes part of the longest prior tour left;
+  /// UAV k at `pos`, its prior tour done, takes part of the longest prior tour left;
   /// true if it took cells.
   bool take_prior_share(int k, grid::Cell pos);
   /// Splits `cells` between UAV a at pa and UAV b at pb: a takes the first t of them (the order is
   /// left in `cells`), t making the later of the two estimated tours end earliest (`*later`).
   std::size_t split_tours(int a, grid::Cell pa, int b, grid::Cell pb, std::vector<int>& cells,
                           int* later);
-  /// share-prior at the start and after a failure's prior cells were handed over: neighbours (by
+  /// At the start and after a failure's prior cells were handed over: neighbours (by
   /// x of `at`, working UAVs only when `view` is given) re-split their prior cells so that their
   /// tours from `at` end together (kBalancePasses passes over the neighbour pairs).
   void balance_prior_tours(std::span<const grid::Cell> at, const sim::PlannerView* view = nullptr);
   static constexpr int kBalancePasses = 3;
-  /// plan-prior-tour: the next cell of UAV k's planned z = 1 tour over its prior cells `cells`
+  /// The next cell of UAV k's planned z = 1 tour over its prior cells `cells`
   /// that is still to be inspected; the tour is planned from `from` when it has none left or was
   /// planned short (over at most kReplannedTourCells cells).
   int next_of_tour(int k, grid::Cell from, std::span<const int> cells,
@@ -230,18 +229,18 @@ class SweepInspectPlanner final : public Planner {
     uavs_[static_cast<std::size_t>(k)].repaired = false;
   }
   /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells` (also with
-  /// plan-prior-tour: the planned tour's own length, found by local search, cost 45 times the
-  /// planner time in share-prior's bisections and balanced the tours no better on the tuning
+  /// the planned tour's own length, found by local search, cost 45 times the
+  /// planner time in the tours' re-split and balanced the tours no better on the tuning
   /// seeds).
   int tour_steps(grid::Cell from, std::span<const int> cells);
-  /// share-sweep: UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
+  /// UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
   /// working UAV of its flight part that would end last, if that ends the two at least s2 steps
   /// sooner; true if it took one.
   bool take_sweep_tail(int j, const sim::UavState& u, const sim::PlannerView& view);
-  /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
+  /// Hands the prior cells of failed UAVs to the working UAV nearest to each.
   /// True when some cells were handed over.
   bool hand_over_prior(const sim::PlannerView& view);
-  /// skip-seen-bands: drops the follower's waypoints of UAV k's band legs ahead of `pos` whose
+  /// Drops the follower's waypoints of UAV k's band legs ahead of `pos` whose
   /// footprints would see no unobserved cell.
   void skip_seen_bands(Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Work left at cell i for a sweep at z = 1 (`low`) or z = 2: sweep_work, or a detection a
@@ -251,10 +250,10 @@ class SweepInspectPlanner final : public Planner {
   /// `low`: with the s1 footprint, or a detected cell to inspect).
   bool leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
                            const sim::PlannerView& view) const;
-  /// replan-rejoin: UAV k, its inspection done at `pos`, plans its sweep from `pos` when that is
+  /// UAV k, its inspection done at `pos`, plans its sweep from `pos` when that is
   /// shorter than flying back to Uav::resume and on; true (and Uav::resume = pos) if it did.
   bool replan_after_inspection(int k, grid::Cell pos, const sim::PlannerView& view);
-  /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
+  /// Where to rejoin the sweep after an inspection ending at `pos`.
   grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
   /// footprint square); with no-fly zones, when that is not flyable by UAV k, the viewpoint of c
@@ -282,14 +281,15 @@ class SweepInspectPlanner final : public Planner {
 
   SweepInspectOptions options_;
   std::shared_ptr<const partition::Partition> partition_;
-  /// band-partition: per column, the first column of its band (empty: each region's own bands).
+  /// The band partition's grid: per column, the first column of its band (empty: each region's own
+  /// bands).
   std::vector<int> band_start_;
   std::vector<Uav> uavs_;
   std::vector<int> pending_;  // detected (seen at z = 2), not yet inspected cells, flat indices
   std::vector<int> hull_cells_;
   std::vector<std::vector<int>> prior_;  // per UAV: the prior's cells of its region still M = 2
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
-  // observed among the working UAVs (take-over-sweep; -1: nobody's).
+  // observed among the working UAVs (-1: nobody's).
   grid::Grid<std::int16_t> owner_;
   std::vector<char> handed_over_;  // per UAV: its failure was handled
   bool resplit_ = false;           // owner_ is a failure's re-split
@@ -324,7 +324,7 @@ class SweepInspectPlanner final : public Planner {
   /// costs about this many steps.
   static constexpr double kSweepRate = 0.6;
   static constexpr double kPriorVisitSteps = 1.5;
-  /// share-sweep's estimate of a sweep's steps per step of its waypoints' walk (inspections,
+  /// The tail split's estimate of a sweep's steps per step of its waypoints' walk (inspections,
   /// turns); a flight to the tail costs one step per step.
   static constexpr double kTailWalkCost = 1.2;
   grid::DistanceService own_distances_;
@@ -338,7 +338,7 @@ class SweepInspectPlanner final : public Planner {
   mutable grid::Grid<int> from_here_;
   int width_ = 0;
   grid::Cell hull_cell(int index) const { return {index % width_, index / width_}; }
-  bool prior_dropped_ = false;  // trust-statistics: the prior is not worth a tour
+  bool prior_dropped_ = false;  // the statistics say the prior is not worth a tour
   int prior_true_ = 0;          // prior cells found corroded so far (fleet-wide)
   int prior_false_ = 0;         // prior cells found clean so far
   int h1_ = 2;
