@@ -82,7 +82,8 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
 Params<SweepInspectOptions> sweep_inspect_params() {
   Params<SweepInspectOptions> p("sweep-inspect");
   p.choice("partitioner", &SweepInspectOptions::partitioner, partitioner_names,
-           "partitioner by name")
+           "partitioner by name, for the regions where neither band pieces nor column slabs are "
+           "4-connected")
       .integer("partition-seed", &SweepInspectOptions::partition_seed, 0, kMaxPartitionSeed,
                "seed of the partitioner")
       .flag("prior-first", &SweepInspectOptions::prior_first,
