@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "hullinspect/planners/nearer_claims.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 #include "sweep_inspect_detail.hpp"
@@ -18,20 +19,15 @@ using sweep_inspect_detail::chebyshev;
 using sweep_inspect_detail::unobserved;
 
 bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
-  // A claim holds against UAVs no nearer to the cell than the claimer: a UAV that is done takes
-  // over a far claimer's target instead of hovering while the claimer crosses the hull.
   if (cell < 0) return false;
-  int mine = -1;
-  for (std::size_t j = 0; j < uavs_.size(); ++j) {
-    if (static_cast<int>(j) == k || uavs_[j].target_cell != cell) continue;
-    const grid::Cell c = hull_cell(cell);
-    if (mine < 0) {
-      mine = uav_distances_[static_cast<std::size_t>(k)]->distance(
-          positions_[static_cast<std::size_t>(k)], c);
-    }
-    if (uav_distances_[j]->distance(positions_[j], c) <= mine) return true;
-  }
-  return false;
+  const grid::Cell c = hull_cell(cell);
+  return claim_held_against(
+      static_cast<int>(uavs_.size()), k, cell,
+      [&](int j) { return uavs_[static_cast<std::size_t>(j)].target_cell; },
+      [&](int j) {
+        const auto u = static_cast<std::size_t>(j);
+        return uav_distances_[u]->distance(positions_[u], c);
+      });
 }
 
 bool SweepInspectPlanner::left_to_low_sweep(int k, int i) const {
