@@ -143,8 +143,8 @@ class SweepInspectPlanner final : public Planner {
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
-  /// Whether UAV k may inspect detected cell i: in its region when help is off, seen from z = 1
-  /// by some position it can reach, not claimed by another UAV, not left_to_low_sweep.
+  /// Whether UAV k may inspect detected cell i: seen from z = 1 by some position it can reach,
+  /// not claimed by another UAV, not left_to_low_sweep.
   bool may_inspect(int k, int i) const;
   /// After a re-split, whether detected cell i is in another UAV's share of
   /// the dense columns while that UAV is still sweeping them at z = 1.
