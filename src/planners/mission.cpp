@@ -1,7 +1,7 @@
 #include "hullinspect/planners/mission.hpp"
 
-#include <ctime>
 #include <chrono>
+#include <ctime>
 #include <optional>
 
 #include "hullinspect/partition/fallback.hpp"

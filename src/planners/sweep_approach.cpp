@@ -9,7 +9,7 @@ namespace hullinspect::planners {
 
 namespace {
 
-/// The waypoints flown backwards when their far end is nearer to `from` (nearer-sweep-end).
+/// The waypoints flown backwards when their far end is nearer to `from`.
 void nearer_end_first(std::vector<grid::Cell>& waypoints, grid::Cell from, bool nearer_end) {
   if (nearer_end && waypoints.size() > 1 &&
       grid::manhattan(from, waypoints.back()) < grid::manhattan(from, waypoints.front()))
@@ -34,7 +34,7 @@ OwnedBox owned_box(const grid::Grid<std::int16_t>& owner, int uav) {
   return box;
 }
 
-/// own-band-first: the plans in two parts (approach_and_sweep's doc) over `region` (the owner's
+/// The own-band plans: in two parts (approach_and_sweep's doc) over `region` (the owner's
 /// bands of request.uav), taken into `best` when shorter than `best_length`.
 void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
                     const RegionBands& region, grid::Cell from, int across_lo, int across_hi,
@@ -192,7 +192,7 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
   within.x_hi = x_hi;
   if (scratch.width() != owner.width() || scratch.height() != owner.height())
     scratch = grid::Grid<std::int16_t>(owner.width(), owner.height(), -1);
-  // The region's bands, read once: the plain sweep's, and cut in two by own-band-first.
+  // The region's bands, read once: the plain sweep's, and cut in two for the own-band plans.
   const RegionBands region =
       region_bands(owner, request.uav, request.band, request.axis, request.band_start, x_lo, x_hi);
   const int across_size = request.axis == BandAxis::kRows ? owner.height() : owner.width();

@@ -1,6 +1,6 @@
 // Sweep-Inspect's tours of the prior's cells at z = 1 (docs/sweep-inspect.md, "The prior" and
 // "Failures"): the planned tour, its estimate, and the re-splits that end neighbours' tours
-// together (share-prior), also of a failed UAV's cells.
+// together, also of a failed UAV's cells.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -219,7 +219,7 @@ std::optional<sim::Action> SweepInspectPlanner::prior_tour_step(int k, const sim
   // Inspect the prior's cells of the region first, nearest first, then sweep.
   auto& cells = prior_[static_cast<std::size_t>(k)];
   if (prior_distrusted()) cells.clear();  // a prior this wrong is not worth a tour: sweep
-  if (cells.empty() && options_.share_prior && u.z == 1 && !prior_distrusted()) {
+  if (cells.empty() && u.z == 1 && !prior_distrusted()) {
     take_prior_share(k, u.pos);  // the longest tour left gives it the part it ends sooner
   }
   if (cells.empty()) {
@@ -231,36 +231,20 @@ std::optional<sim::Action> SweepInspectPlanner::prior_tour_step(int k, const sim
       p.sweep_planned = true;
       // Plan the sweep from where the prior's inspections ended, over the region's cells they
       // did not see (a strip band's ends that the tour saw are not flown again).
-      if (options_.nearer_sweep_end) {
-        drop_observed(k, view);
-        p.sweep.assign(sweep_from(k, u.pos));
-        p.replan = false;
-      }
+      drop_observed(k, view);
+      p.sweep.assign(sweep_from(k, u.pos));
+      p.replan = false;
     }
   } else {
     if (u.z == 2) return sim::Action::kChangePlane;
-    if (options_.plan_prior_tour) {
-      // On when the cell it flew to was seen (on the way, or by another UAV) or went to another
-      // UAV (share-prior); a long tour also when its cells were re-assigned (forget_tour).
-      const bool seen = p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen;
-      const bool mine = p.repaired
-                            ? p.tour_next < p.tour.size() && p.tour[p.tour_next] == p.target_cell
-                            : std::find(cells.begin(), cells.end(), p.target_cell) != cells.end();
-      if (seen || !mine) p.target_cell = next_of_tour(k, u.pos, cells, view);
-      p.target = reach_position(k, u.pos, view.map.cell(p.target_cell), h1_);
-      return step(k, u.pos, p.target);
-    }
-    int best = -1;
-    int best_d = std::numeric_limits<int>::max();
-    for (int i : cells) {
-      const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
-          u.pos, reach_position(k, u.pos, view.map.cell(i), h1_));
-      if (d < best_d) {
-        best_d = d;
-        best = i;
-      }
-    }
-    p.target = reach_position(k, u.pos, view.map.cell(best), h1_);
+    // On when the cell it flew to was seen (on the way, or by another UAV) or went to another
+    // UAV (the tours' re-split); a long tour also when its cells were re-assigned (forget_tour).
+    const bool seen = p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen;
+    const bool mine = p.repaired
+                          ? p.tour_next < p.tour.size() && p.tour[p.tour_next] == p.target_cell
+                          : std::find(cells.begin(), cells.end(), p.target_cell) != cells.end();
+    if (seen || !mine) p.target_cell = next_of_tour(k, u.pos, cells, view);
+    p.target = reach_position(k, u.pos, view.map.cell(p.target_cell), h1_);
     return step(k, u.pos, p.target);
   }
   return std::nullopt;  // its tour is done: on to the mode it now has

@@ -1,6 +1,6 @@
 // Sweep-Inspect's sweeps (docs/sweep-inspect.md, "The sweep" to "Help"): planning a UAV's bands,
 // following them (skipping what is seen), rejoining after an inspection, and taking over the tail
-// of another UAV's sweep (share-sweep).
+// of another UAV's sweep.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -37,24 +37,22 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
   const bool auto_axis = options_.strips == "auto" && (band_start_.empty() || low);
   axis = options_.strips == "rows" || auto_axis ? BandAxis::kRows : BandAxis::kColumns;
   const int band = low ? h1_ * 2 + 1 : h2_ * 2 + 1;
-  auto waypoints = band_sweep(owner, k, band, axis, options_.trim_strip_ends, from, band_start_);
+  auto waypoints = band_sweep(owner, k, band, axis, true, from, band_start_);
   if (auto_axis) {
     // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
-    auto columns =
-        band_sweep(owner, k, band, BandAxis::kColumns, options_.trim_strip_ends, from, band_start_);
+    auto columns = band_sweep(owner, k, band, BandAxis::kColumns, true, from, band_start_);
     if (flight_length(from, columns) < flight_length(from, waypoints)) {
       waypoints = std::move(columns);
       axis = BandAxis::kColumns;
     }
   }
   uavs_[static_cast<std::size_t>(k)].approach_rest = 0;
-  if (approach && (options_.approach_edge || options_.own_band_first) && reach_ == nullptr) {
-    // approach-edge: fly to the sweep along the region's edge where that sees the bands' ends;
-    // own-band-first: begin with the bands on one side of the UAV's, where that is shorter.
-    SweepRequest request{
-        k, band, axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
-    request.edge_approach = options_.approach_edge;
-    request.own_band_first = options_.own_band_first;
+  if (approach && reach_ == nullptr) {
+    // Candidate plans chosen by their whole flight: the sweep approached along the region's edge
+    // where that sees the bands' ends, or begun with the bands on one side of the UAV's.
+    SweepRequest request{k, band, axis, true, band_start_, true};
+    request.edge_approach = true;
+    request.own_band_first = true;
     SweepPlan plan = approach_and_sweep(owner, request, from, sweep_scratch_);
     if (plan.approach > 0)
       uavs_[static_cast<std::size_t>(k)].approach_rest = plan.waypoints.size() - plan.approach;
@@ -72,7 +70,7 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
     waypoints = std::move(flyable);
   }
   // The same strips top to bottom when their far end is nearer (after the prior's inspections).
-  if (options_.nearer_sweep_end && waypoints.size() > 1 &&
+  if (waypoints.size() > 1 &&
       distances.distance(from, waypoints.back()) < distances.distance(from, waypoints.front())) {
     std::reverse(waypoints.begin(), waypoints.end());
   }
@@ -93,7 +91,7 @@ std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::
 void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                                      std::vector<grid::Cell>& waypoints) {
   Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (!p.low || !options_.two_block_sweep || !resplit_ || reach_ != nullptr) return;
+  if (!p.low || !resplit_ || reach_ != nullptr) return;
   // A share after a failure's re-split holds cells other UAVs left part-swept, and one
   // boustrophedon over its ragged bands can leave a band for last on its far side (combined,
   // s2 = 7, tuning seed 1 000 148, UAV 1 failing at 74 s: T_c 417 s, 337 s in two blocks).
@@ -102,8 +100,7 @@ void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int 
   // columns, against 1.2861 / 1.2486 / 1.2660 with one boustrophedon; no mission without a
   // failure changes. (Two blocks at z = 2 gain less and lose more: 1.2759 / 1.2468 / 1.2649, up
   // to +82 s in a mission, so they are not planned there.)
-  const SweepRequest request{
-      k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
+  const SweepRequest request{k, 2 * h1_ + 1, p.axis, true, band_start_, true};
   auto blocks = two_block_sweep(owner, request, from, waypoints);
   if (blocks != waypoints) {
     waypoints = std::move(blocks);
@@ -135,8 +132,7 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
   }
   // A dense part that a few z = 1 bands would cover is swept at z = 2 with the rest: each z = 1
   // band is a whole pass of the hull's height (and a plane change), for a few columns.
-  if (sparse > 0 && dense > 0 &&
-      dense_hi - dense_lo + 1 <= options_.low_sweep_min_bands * (2 * h1_ + 1))
+  if (sparse > 0 && dense > 0 && dense_hi - dense_lo + 1 <= kLowSweepMinBands * (2 * h1_ + 1))
     dense = 0;
   if (dense == 0) {
     waypoints = strips_from(owner_, k, from);
@@ -179,8 +175,7 @@ bool SweepInspectPlanner::sweep_work_left(const sim::PlannerView& view, int i, b
   // middle of the hull for it, T_c 478 s against 435 s with this and 276 s with no failure).
   if (sweep_work(view, i, low)) return true;
   // Only a re-split marks resplit_detection_.
-  return options_.pass_left_detections && resplit_detection_[i] != 0 &&
-         view.map[i] == sim::kCorrosionSeen;
+  return resplit_detection_[i] != 0 && view.map[i] == sim::kCorrosionSeen;
 }
 
 std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::UavState& u,
@@ -195,23 +190,24 @@ std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::U
                                 : strips_from(owner_, k, u.pos, false));
   }
   // An approach's legs are not bands: none is skipped (its line leg may see nothing new).
-  if (options_.skip_seen_bands && p.approach_rest == 0) skip_seen_bands(p, u.pos, view);
+  if (p.approach_rest == 0) skip_seen_bands(p, u.pos, view);
   const sim::Action a = p.sweep.next_action(u.pos);
   if (a != sim::Action::kHover) return a;
-  if (p.other_part) return next_part(k, u, view);
-  p.mode = Mode::kHelp;
+  if (p.other_part) {
+    next_part(k, u);
+  } else {
+    p.mode = Mode::kHelp;
+  }
   return std::nullopt;
 }
 
-sim::Action SweepInspectPlanner::next_part(int k, const sim::UavState& u,
-                                           const sim::PlannerView& view) {
+void SweepInspectPlanner::next_part(int k, const sim::UavState& u) {
   // One part of its cells swept: the other, planned from here, on its plane.
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   p.other_part = false;
   const bool low = !p.low;
   p.sweep.assign(part_strips(k, low, u.pos));
   if (!low) p.resume = u.pos;  // from z = 1: inspect what is pending here, climb, sweep
-  return decide_uav(k, u, view);
 }
 
 bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
@@ -291,7 +287,7 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
   tail.insert(tail.end(), rest.begin() + static_cast<std::ptrdiff_t>(leg), rest.end());
   if (chosen.backward) std::reverse(tail.begin(), tail.end());
   // The tail's cells become the taker's in owner_, so that a sweep planned again from owner_
-  // (replan-rejoin) neither drops the tail nor gives it back to the donor.
+  // (after an inspection) neither drops the tail nor gives it back to the donor.
   const int half = q.low ? h1_ : h2_;
   const auto& map = view.map;
   for (std::size_t i = 0; i + 1 < tail.size(); ++i) {
@@ -336,7 +332,7 @@ bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
   // flights, where the way back around a zone is longer still); the state that planning sets is
   // the UAV's again unless the plan from here is taken.
   Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (!options_.replan_rejoin || p.resume == pos) return false;
+  if (p.resume == pos) return false;
   drop_observed(k, view);
   const auto restore = [&p, low = p.low, other_part = p.other_part, axis = p.axis,
                         approach_rest = p.approach_rest, resume = p.resume] {
@@ -436,9 +432,9 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
                                             const sim::PlannerView& view) const {
   const Uav& p = uavs_[static_cast<std::size_t>(k)];
   // Descend when a detected cell is abreast: its position along the band within reach of
-  // the z = 1 footprint (across it, within the band's width), and with descend-when-level no
+  // the z = 1 footprint (across it, within the band's width), and no
   // longer ahead on the leg. Also, with
-  // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
+  // when this leg of the flight comes no nearer to it along the band:
   // a cell beyond the trimmed end of a band (within h2 of its last position, never within
   // h1) or behind its start would otherwise wait for the helpers at the mission's end.
   grid::Cell next = pos;
@@ -453,12 +449,10 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
   const bool leg_along = rows ? next.y == pos.y : next.x == pos.x;
   const int leg_lo = std::min(along_of(pos), leg_along ? along_of(next) : along_of(pos));
   const int leg_hi = std::max(along_of(pos), leg_along ? along_of(next) : along_of(pos));
-  // descend-when-level: the direction the leg is flown along (0: not flying along a leg), so
+  // The direction the leg is flown along (0: not flying along a leg), so
   // that a cell still ahead on it waits; once it is level, the footprint has seen h2 rows beyond
   // it, a rectangle's last rows among them.
-  const int leg_dir = !options_.descend_when_level || !leg_along || next == pos ? 0
-                      : along_of(next) > along_of(pos)                          ? 1
-                                                                                : -1;
+  const int leg_dir = !leg_along || next == pos ? 0 : along_of(next) > along_of(pos) ? 1 : -1;
   for (int i : pending_) {
     const grid::Cell c = view.map.cell(i);
     const int along = std::abs(along_of(c) - along_of(pos));
@@ -468,10 +462,9 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
                                                       : 0;
     const bool ahead = leg_dir * (along_of(c) - along_of(pos)) > 0;
     const bool here_or_never =
-        (along <= h1_ && !ahead) ||
-        (options_.inspect_band_ends && along <= h2_ && nearest_on_leg >= along);
+        (along <= h1_ && !ahead) || (along <= h2_ && nearest_on_leg >= along);
     // The cells nearest_pending may take, so that a UAV never descends for one it then leaves
-    // (with help off, a detection in another UAV's region: it climbed and descended for ever).
+    // (a detection it may not inspect: it would climb and descend for ever).
     if (here_or_never && across <= h2_ && may_inspect(k, i)) return true;
   }
   return false;

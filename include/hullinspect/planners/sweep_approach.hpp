@@ -25,8 +25,8 @@ struct SweepRequest {
   bool nearer_end = true;           ///< fly the sweep backwards when its last waypoint is nearer
   int x_lo = 0;                     ///< only these columns hold the UAV's cells (band_sweep's)
   int x_hi = -1;
-  bool edge_approach = true;    ///< consider approaches along the region's edge (approach-edge)
-  bool own_band_first = false;  ///< consider sweeps that begin at the UAV's band (own-band-first)
+  bool edge_approach = true;    ///< consider approaches along the region's edge
+  bool own_band_first = false;  ///< consider sweeps that begin at the UAV's band
 };
 
 /// A sweep's waypoints, the first `approach` of them its approach's.
