@@ -40,7 +40,7 @@ TEST(PartTspRegistry, BothPlannersDeclareTheirOptions) {
     EXPECT_EQ(info(name).options[0].default_value, "2");
     EXPECT_EQ(info(name).options[1].default_value, "0");
     EXPECT_EQ(info(name).options[2].default_value, "exact");
-    EXPECT_EQ(info(name).options[3].default_value, "25");
+    EXPECT_EQ(info(name).options[3].default_value, "30");
   }
 }
 
@@ -71,7 +71,7 @@ TEST(PartTspRegistry, ReadsTheOptions) {
   EXPECT_EQ(d.tsp_solver, "exact");
   EXPECT_FALSE(d.skip_resolved);
   EXPECT_FALSE(d.trim_ends);
-  EXPECT_EQ(d.tsp_max_segments, 25);
+  EXPECT_EQ(d.tsp_max_segments, 30);
 }
 
 TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {

@@ -32,9 +32,9 @@ struct PartTspOptions {
   OptionMap tsp_solver_options;
   /// A plan over more segments is ordered by the local search (the `heuristic` solver with the
   /// exact solver's first-tour settings) instead of `tsp_solver`, without a proof: every solve's
-  /// work stays bounded as regions grow. 25 is the most segments a plan of the paper's grid has, so
+  /// work stays bounded as regions grow. The paper preset's largest plan has 28 segments, so
   /// its plans are unchanged. 0 = no cap.
-  int tsp_max_segments = 25;
+  int tsp_max_segments = 30;
   std::string partitioner{partition::kDefaultPartitioner};  ///< by name
   OptionMap partitioner_options;
   std::uint64_t partition_seed = 0;  ///< seed of the partitioner (not of the instance)
