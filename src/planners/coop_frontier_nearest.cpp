@@ -17,9 +17,7 @@ void NearestSourceIndex::reset(int width, int height) {
   count_ = 0;
   additions_ = 0;
   const auto cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  cached_distance_.assign(cells, 0);
-  cached_source_.assign(cells, -1);
-  cached_at_.assign(cells, -1);
+  cached_.assign(cells, Cached{});
 }
 
 void NearestSourceIndex::set(int index, bool member) {
@@ -72,19 +70,17 @@ int NearestSourceIndex::nearest_in_column(int x, int y, int& row) const {
 
 int NearestSourceIndex::distance(int index) const {
   if (count_ == 0) return grid::kUnreachable;
-  const auto i = static_cast<std::size_t>(index);
-  const int source = cached_source_[i];
+  Cached& cached = cached_[static_cast<std::size_t>(index)];
   // The set only lost members since: the cached nearest, still a member, is still the nearest.
-  if (cached_at_[i] == additions_ && source >= 0) {
-    const std::uint64_t word =
-        columns_[static_cast<std::size_t>(source % width_) * static_cast<std::size_t>(words_) +
-                 static_cast<std::size_t>(source / width_ / 64)];
-    if ((word >> (source / width_ % 64)) & 1) return cached_distance_[i];
+  if (cached.at == additions_ && cached.word >= 0 &&
+      (columns_[static_cast<std::size_t>(cached.word)] & cached.bit) != 0) {
+    return cached.distance;
   }
   const int x = index % width_;
   const int y = index / width_;
   int best = grid::kUnreachable;
-  int best_source = -1;
+  int best_column = -1;
+  int best_row = -1;
   for (int dx = 0; dx < best && (x - dx >= 0 || x + dx < width_); ++dx) {
     for (const int c : {x - dx, x + dx}) {
       if (c < 0 || c >= width_ || column_count_[static_cast<std::size_t>(c)] == 0) continue;
@@ -92,14 +88,16 @@ int NearestSourceIndex::distance(int index) const {
       const int dy = nearest_in_column(c, y, row);
       if (dy >= 0 && dx + dy < best) {
         best = dx + dy;
-        best_source = row * width_ + c;
+        best_column = c;
+        best_row = row;
       }
       if (dx == 0) break;  // x − 0 and x + 0 are one column
     }
   }
-  cached_distance_[i] = best;
-  cached_source_[i] = best_source;
-  cached_at_[i] = additions_;
+  cached.at = additions_;
+  cached.distance = best;
+  cached.word = best_column < 0 ? -1 : best_column * words_ + best_row / 64;
+  cached.bit = best_column < 0 ? 0 : std::uint64_t{1} << (best_row % 64);
   return best;
 }
 

@@ -29,9 +29,15 @@ class NearestSourceIndex {
   std::vector<int> column_count_;       // members per column
   int count_ = 0;
   long long additions_ = 0;  // members added so far: a cached answer older is void
-  mutable std::vector<int> cached_distance_;
-  mutable std::vector<int> cached_source_;
-  mutable std::vector<long long> cached_at_;  // additions_ when cached; −1 never
+  // Per cell, its last answer: one record, so that a reused answer costs one memory access (and
+  // the nearest member's column word, kept as an index into columns_, needs no division).
+  struct Cached {
+    long long at = -1;  // additions_ when cached; −1 never
+    int distance = 0;
+    int word = -1;  // columns_ index of the nearest member's word; −1 none
+    std::uint64_t bit = 0;
+  };
+  mutable std::vector<Cached> cached_;
 };
 
 }  // namespace hullinspect::planners
