@@ -2,9 +2,11 @@
 
 namespace hullinspect::planners {
 
-void SourceDistanceField::reset(int width, int height, grid::DistanceService* distances) {
+void SourceDistanceField::reset(int width, int height, grid::DistanceService* distances,
+                                int on_demand_cells) {
   distances_ = distances;
-  on_demand_ = distances == nullptr || !distances->has_no_fly();
+  on_demand_ = (distances == nullptr || !distances->has_no_fly()) &&
+               static_cast<long long>(width) * height > on_demand_cells;
   member_ = grid::Grid<std::uint8_t>(width, height, 0);
   if (on_demand_) {
     nearest_.reset(width, height);
@@ -30,7 +32,11 @@ void SourceDistanceField::set(int index, bool member) {
 
 void SourceDistanceField::refresh() {
   if (!stale_) return;
-  distances_->distances_from(member_, distance_);
+  if (distances_ != nullptr) {
+    distances_->distances_from(member_, distance_);
+  } else {
+    grid::manhattan_distance_transform(member_, distance_);
+  }
   ++transforms_;
   stale_ = false;
 }

@@ -79,15 +79,16 @@ TEST(SourceDistanceField, WithNoFlyPositionsRecomputesOnlyWhenReadAfterAChange) 
   EXPECT_EQ(f.distance(0), grid::kUnreachable);
 }
 
-// Without no-fly positions every read is answered on demand; it must equal the definition after
-// any sequence of additions and removals, on grids taller than one 64-row word.
+// Read on demand (no no-fly positions, a grid above the size limit, here 0), every read must equal
+// the definition after any sequence of additions and removals, on grids taller than one 64-row
+// word; small grids keep the transform.
 TEST(SourceDistanceField, ManhattanReadsMatchBruteForceThroughAddsAndRemovals) {
   world::RandomStream rng(7, 0);
   for (int trial = 0; trial < 40; ++trial) {
     const int w = 1 + static_cast<int>(rng.below(30));
     const int h = 1 + static_cast<int>(rng.below(trial % 2 == 0 ? 12 : 150));
     SourceDistanceField f;
-    f.reset(w, h);
+    f.reset(w, h, nullptr, 0);  // on demand at every size
     grid::Grid<std::uint8_t> members(w, h, 0);
     for (int step = 0; step < 60; ++step) {
       // Mostly removals after a first filling, as with the prior's cells being seen.
@@ -106,6 +107,17 @@ TEST(SourceDistanceField, ManhattanReadsMatchBruteForceThroughAddsAndRemovals) {
             << "trial " << trial << " " << w << "x" << h << " step " << step << " cell " << i;
       }
     }
+  }
+}
+
+TEST(SourceDistanceField, SmallGridsKeepTheTransformLargeOnesReadOnDemand) {
+  for (const int side : {50, 200}) {
+    SourceDistanceField f;
+    f.reset(side, side);
+    f.set(3, true);
+    f.refresh();
+    EXPECT_EQ(f.distance(0), 3);
+    EXPECT_EQ(f.transforms(), side * side > SourceDistanceField::kOnDemandCells ? 0 : 1) << side;
   }
 }
 
