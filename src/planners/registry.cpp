@@ -52,6 +52,9 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
                "steps since the last inspection (or arrival at z = 1) before ascending")
       .choice("tsp-solver", &PartTspOptions::tsp_solver, tsp_solver_names,
               "segment-TSP solver by name")
+      .integer("tsp-max-segments", &PartTspOptions::tsp_max_segments, 0, 1 << 20,
+               "a plan over more segments is ordered by local search, without a proof (0 = no "
+               "cap)")
       .choice("partitioner", &PartTspOptions::partitioner, partitioner_names, "partitioner by name")
       .integer("partition-seed", &PartTspOptions::partition_seed, 0, kMaxPartitionSeed,
                "seed of the partitioner")
