@@ -1,0 +1,121 @@
+// The files an experiment config names (prior:, truth:, prior-defects:, truth-defects:, a no-fly
+// mask) enter its fingerprint by their content and by the name the config gives them: the
+// fingerprint and runs.csv do not depend on how the config's own path is spelled, --resume works
+// from another directory, and a file whose content changed under the same name is another
+// experiment.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/cli_runner.hpp"
+#include "support/dir_snapshot.hpp"
+
+namespace hullinspect::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs the CLI with `cwd` as the working directory.
+CliResult run_in(const fs::path& cwd, const std::vector<std::string>& args) {
+  const fs::path before = fs::current_path();
+  fs::current_path(cwd);
+  const CliResult r = run_cli(args);
+  fs::current_path(before);
+  return r;
+}
+
+std::string fingerprint_of(const fs::path& results) {
+  const std::string manifest = slurp(results / "manifest.json");
+  const auto at = manifest.find("\"fingerprint\"");
+  if (at == std::string::npos) return {};
+  return manifest.substr(at, manifest.find('\n', at) - at);
+}
+
+// An 8 x 4 hull with a prior mask, a truth from a defect survey and a no-fly mask beside it.
+fs::path write_experiment(const std::string& name) {
+  const fs::path dir = fs::absolute(make_temp_dir(name));
+  fs::create_directories(dir / "k");
+  std::ofstream(dir / "k" / "hull.txt") << "XXXXXXXX\nXXXXXXXX\nXXXXXXXX\nXXXXXXXX\n";
+  std::ofstream(dir / "k" / "prior.txt") << "XX......\nXX......\n........\n......X.\n";
+  std::ofstream(dir / "k" / "nofly.txt") << "........\n....X...\n........\n........\n";
+  std::ofstream(dir / "k" / "survey.csv") << "x_m,z_m,side,w_m,h_m\n1.0,0.5,starboard,1.0,0.5\n";
+  std::ofstream(dir / "k" / "k.yaml")
+      << "name: k\nhull: hull.txt\nprior: prior.txt\ntruth-defects: survey.csv\n"
+         "no-fly: {file: nofly.txt}\ns1: 1\ns2: 3\nuavs: 1\nalgorithms: [lawnmower]\n"
+         "instances: 2\ncurve: {step: 10, end: 100}\n";
+  return dir;
+}
+
+TEST(ConfigFileIdentity, TheConfigPathsSpellingChangesNoIdAndResumeWorksFromElsewhere) {
+  const fs::path dir = write_experiment("config-file-identity");
+  const struct {
+    fs::path cwd;
+    std::string config;
+  } spellings[] = {{dir / "k", "k.yaml"},
+                   {dir / "k", "./k.yaml"},
+                   {dir, "k/k.yaml"},
+                   {"/", (dir / "k" / "k.yaml").string()}};
+  std::string first_fingerprint;
+  std::string runs;
+  int n = 0;
+  for (const auto& s : spellings) {
+    SCOPED_TRACE(s.config);
+    const fs::path out = dir / ("r" + std::to_string(n++));
+    const auto r =
+        run_in(s.cwd, {"experiment", "--config", s.config, "--out", out.string(), "--jobs", "1"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    if (runs.empty()) {
+      first_fingerprint = fingerprint_of(out);
+      runs = slurp(out / "runs.csv");
+      ASSERT_FALSE(first_fingerprint.empty());
+    }
+    EXPECT_EQ(fingerprint_of(out), first_fingerprint);
+    EXPECT_EQ(slurp(out / "runs.csv"), runs);
+  }
+  // Started as k.yaml inside k/, resumed as ./k.yaml there and by its absolute path from /.
+  auto r = run_in(dir / "k", {"experiment", "--config", "./k.yaml", "--out", (dir / "r0").string(),
+                              "--resume", "--jobs", "1"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = run_in("/", {"experiment", "--config", (dir / "k" / "k.yaml").string(), "--out",
+                   (dir / "r0").string(), "--resume", "--jobs", "1"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(dir / "r0" / "runs.csv"), runs);
+  fs::remove_all(dir);
+}
+
+TEST(ConfigFileIdentity, AFileChangedUnderTheSameNameIsAnotherExperiment) {
+  const struct {
+    std::string file;
+    std::string changed;
+  } changes[] = {{"prior.txt", "XX......\nXX......\n........\n.......X\n"},
+                 {"survey.csv", "x_m,z_m,side,w_m,h_m\n3.0,0.5,starboard,1.0,0.5\n"},
+                 {"nofly.txt", "........\n.....X..\n........\n........\n"}};
+  for (const auto& c : changes) {
+    SCOPED_TRACE(c.file);
+    const fs::path dir = write_experiment("config-file-changed");
+    const fs::path out = dir / "r";
+    auto r = run_in(dir / "k",
+                    {"experiment", "--config", "k.yaml", "--out", out.string(), "--jobs", "1"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string fingerprint = fingerprint_of(out);
+    std::ofstream(dir / "k" / c.file) << c.changed;
+    const auto before = snapshot(out);
+    r = run_in(dir / "k", {"experiment", "--config", "k.yaml", "--out", out.string(), "--resume",
+                           "--jobs", "1"});
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("holds results of a different experiment"), std::string::npos) << r.err;
+    EXPECT_TRUE(snapshot(out) == before) << "the refused --resume changed " << out;
+    // The changed file is another experiment: run afresh, its fingerprint differs.
+    r = run_in(dir / "k",
+               {"experiment", "--config", "k.yaml", "--out", (dir / "r2").string(), "--jobs", "1"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(fingerprint_of(dir / "r2"), fingerprint);
+    fs::remove_all(dir);
+  }
+}
+
+}  // namespace
+}  // namespace hullinspect::testing
