@@ -10,29 +10,13 @@
 #include <fstream>
 #include <string>
 
-#include "support/cli_runner.hpp"
+#include "support/config_spellings.hpp"
 #include "support/dir_snapshot.hpp"
 
 namespace hullinspect::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Runs the CLI with `cwd` as the working directory.
-CliResult run_in(const fs::path& cwd, const std::vector<std::string>& args) {
-  const fs::path before = fs::current_path();
-  fs::current_path(cwd);
-  const CliResult r = run_cli(args);
-  fs::current_path(before);
-  return r;
-}
-
-std::string fingerprint_of(const fs::path& results) {
-  const std::string manifest = slurp(results / "manifest.json");
-  const auto at = manifest.find("\"fingerprint\"");
-  if (at == std::string::npos) return {};
-  return manifest.substr(at, manifest.find('\n', at) - at);
-}
 
 // An 8 x 4 hull with a prior mask, a truth from a defect survey and a no-fly mask beside it.
 fs::path write_experiment(const std::string& name) {
@@ -51,38 +35,7 @@ fs::path write_experiment(const std::string& name) {
 
 TEST(ConfigFileIdentity, TheConfigPathsSpellingChangesNoIdAndResumeWorksFromElsewhere) {
   const fs::path dir = write_experiment("config-file-identity");
-  const struct {
-    fs::path cwd;
-    std::string config;
-  } spellings[] = {{dir / "k", "k.yaml"},
-                   {dir / "k", "./k.yaml"},
-                   {dir, "k/k.yaml"},
-                   {"/", (dir / "k" / "k.yaml").string()}};
-  std::string first_fingerprint;
-  std::string runs;
-  int n = 0;
-  for (const auto& s : spellings) {
-    SCOPED_TRACE(s.config);
-    const fs::path out = dir / ("r" + std::to_string(n++));
-    const auto r =
-        run_in(s.cwd, {"experiment", "--config", s.config, "--out", out.string(), "--jobs", "1"});
-    ASSERT_EQ(r.status, 0) << r.err;
-    if (runs.empty()) {
-      first_fingerprint = fingerprint_of(out);
-      runs = slurp(out / "runs.csv");
-      ASSERT_FALSE(first_fingerprint.empty());
-    }
-    EXPECT_EQ(fingerprint_of(out), first_fingerprint);
-    EXPECT_EQ(slurp(out / "runs.csv"), runs);
-  }
-  // Started as k.yaml inside k/, resumed as ./k.yaml there and by its absolute path from /.
-  auto r = run_in(dir / "k", {"experiment", "--config", "./k.yaml", "--out", (dir / "r0").string(),
-                              "--resume", "--jobs", "1"});
-  EXPECT_EQ(r.status, 0) << r.err;
-  r = run_in("/", {"experiment", "--config", (dir / "k" / "k.yaml").string(), "--out",
-                   (dir / "r0").string(), "--resume", "--jobs", "1"});
-  EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(slurp(dir / "r0" / "runs.csv"), runs);
+  expect_one_experiment_however_spelled(dir, "k", "k.yaml");
   fs::remove_all(dir);
 }
 
@@ -97,20 +50,20 @@ TEST(ConfigFileIdentity, AFileChangedUnderTheSameNameIsAnotherExperiment) {
     SCOPED_TRACE(c.file);
     const fs::path dir = write_experiment("config-file-changed");
     const fs::path out = dir / "r";
-    auto r = run_in(dir / "k",
-                    {"experiment", "--config", "k.yaml", "--out", out.string(), "--jobs", "1"});
+    auto r = run_cli_in(dir / "k",
+                        {"experiment", "--config", "k.yaml", "--out", out.string(), "--jobs", "1"});
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string fingerprint = fingerprint_of(out);
     std::ofstream(dir / "k" / c.file) << c.changed;
     const auto before = snapshot(out);
-    r = run_in(dir / "k", {"experiment", "--config", "k.yaml", "--out", out.string(), "--resume",
-                           "--jobs", "1"});
+    r = run_cli_in(dir / "k", {"experiment", "--config", "k.yaml", "--out", out.string(),
+                               "--resume", "--jobs", "1"});
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_NE(r.err.find("holds results of a different experiment"), std::string::npos) << r.err;
     EXPECT_TRUE(snapshot(out) == before) << "the refused --resume changed " << out;
     // The changed file is another experiment: run afresh, its fingerprint differs.
-    r = run_in(dir / "k",
-               {"experiment", "--config", "k.yaml", "--out", (dir / "r2").string(), "--jobs", "1"});
+    r = run_cli_in(dir / "k", {"experiment", "--config", "k.yaml", "--out", (dir / "r2").string(),
+                               "--jobs", "1"});
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(fingerprint_of(dir / "r2"), fingerprint);
     fs::remove_all(dir);
