@@ -28,7 +28,7 @@ case "$MODE" in
   stdout) echo "partial"; echo "hullinspect: $*: bad" >&2; exit 2 ;;
   leaves) touch left-behind; echo "hullinspect: $*: bad" >&2; exit 2 ;;
   overwrites) for f in input.*; do echo x > "$f"; done; exit 0 ;;
-  hangs) sleep 30 ;;
+  hangs) exec sleep 30 ;;
   signal) kill -SEGV $$ ;;
 esac
 """
