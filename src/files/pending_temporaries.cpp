@@ -44,26 +44,26 @@ void empty_directory(int fd, int depth) noexcept {
       const long n = ::syscall(SYS_getdents64, fd, buffer, sizeof buffer);
       if (n <= 0) break;
       for (long at = 0; at < n;) {
-        struct Entry {
-          std::uint64_t inode;
-          std::int64_t offset;
-          unsigned short length;
-          unsigned char type;
-          char name[1];
-        };
-        const auto* e = reinterpret_cast<const Entry*>(buffer + at);
-        at += e->length;
-        if (std::strcmp(e->name, ".") == 0 || std::strcmp(e->name, "..") == 0) continue;
-        if (e->type == DT_DIR && depth > 0) {
-          const int sub = ::openat(fd, e->name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-          if (sub >= 0) {
-            empty_directory(sub, depth - 1);
-            ::close(sub);
-          }
-          removed |= ::unlinkat(fd, e->name, AT_REMOVEDIR) == 0;
-        } else {
-          removed |= ::unlinkat(fd, e->name, 0) == 0;
+        // A linux_dirent64: inode (8 bytes), offset (8), record length (2), type (1), name.
+        const char* record = buffer + at;
+        unsigned short length = 0;
+        std::memcpy(&length, record + 16, sizeof length);
+        const unsigned char type = static_cast<unsigned char>(record[18]);
+        const char* name = record + 19;
+        if (length == 0) break;  // never from the kernel; guards the loop
+        at += length;
+        if (std::strcmp(name, ".") == 0 || std::strcmp(name, "..") == 0) continue;
+        // A file system that does not give the type (DT_UNKNOWN) refuses to unlink a directory.
+        if (type != DT_DIR && ::unlinkat(fd, name, 0) == 0) {
+          removed = true;
+          continue;
         }
+        if (depth <= 0) continue;
+        const int sub = ::openat(fd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+        if (sub < 0) continue;
+        empty_directory(sub, depth - 1);
+        ::close(sub);
+        removed |= ::unlinkat(fd, name, AT_REMOVEDIR) == 0;
       }
     }
     if (!removed) return;
