@@ -2,7 +2,7 @@
 // mask) enter its fingerprint by their content and by the name the config gives them: the
 // fingerprint and runs.csv do not depend on how the config's own path is spelled, --resume works
 // from another directory, and a file whose content changed under the same name is another
-// experiment.
+// experiment (and a changed map gives other run ids).
 
 #include <gtest/gtest.h>
 
@@ -66,6 +66,17 @@ TEST(ConfigFileIdentity, AFileChangedUnderTheSameNameIsAnotherExperiment) {
                                "--jobs", "1"});
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(fingerprint_of(dir / "r2"), fingerprint);
+    // And so are its runs: a run id names the maps it was flown with (a config-wide no-fly mask
+    // is in the fingerprint only, so that the runs of existing results keep their ids).
+    const std::string old_runs = slurp(out / "runs.csv");
+    const std::string new_runs = slurp(dir / "r2" / "runs.csv");
+    const auto first_id = [](const std::string& runs) {
+      const auto line = runs.find('\n') + 1;
+      return runs.substr(line, runs.find(',', line) - line);
+    };
+    if (c.file != "nofly.txt") {
+      EXPECT_NE(first_id(new_runs), first_id(old_runs));
+    }
     fs::remove_all(dir);
   }
 }
