@@ -45,7 +45,7 @@ class MutationChecker(unittest.TestCase):
             (seeds / "survey.csv").write_text("x_m,z_m,side,w_m,h_m\n1.0,0.5,starboard,1,0.5\n")
             r = subprocess.run(
                 [sys.executable, str(TOOL), "--cli", str(cli), "--seeds", str(seeds.parent),
-                 "--count", "1", "--jobs", "1", "--timeout", "2", "--out", str(Path(tmp) / "out")],
+                 "--count", "1", "--jobs", "1", "--timeout", "1", "--out", str(Path(tmp) / "out")],
                 capture_output=True, text=True, env=dict(os.environ, MODE=mode))
             return r.returncode, r.stdout
 
