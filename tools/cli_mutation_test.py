@@ -13,8 +13,9 @@ fixture files. Every run must:
     environment fails here), a signal, a run longer than --timeout or a sanitizer report;
   - on exit 2, print exactly one stderr line "hullinspect: ..." that names the mutated file (or
     the option or config key it came through), nothing on stdout;
-  - on a failure, leave the directory exactly as it was (nothing created, changed or removed);
-    on success, leave every file that was there unchanged (outputs are new files).
+  - on a refusal (exit 2), leave the directory exactly as it was (nothing created, changed or
+    removed); otherwise (exit 0 or 3, a result) leave every file that was there unchanged
+    (outputs are new files).
 Failing inputs are copied to OUT/findings/ with the command and its stderr. Prints a summary;
 exit status 0 when nothing was found.
 """
@@ -200,7 +201,7 @@ def check(cli, fixtures, case, timeout):
         problem = "printed to stdout on failure"
     elif status == 2 and not names_its_input(err, path, args, config):
         problem = "names neither the file nor its option"
-    elif status != 0 and after != before:
+    elif status == 2 and after != before:
         changed = sorted(k for k in set(before) | set(after) if before.get(k) != after.get(k))
         problem = "left the directory changed on failure: " + ", ".join(changed[:3])
     elif any(after.get(k) != v for k, v in before.items()):
