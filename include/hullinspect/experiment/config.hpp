@@ -67,10 +67,15 @@ struct ExperimentConfig {
   /// No-fly positions (null = none) and how the config stated them ({file, boxes-m, hash}).
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
   nlohmann::json no_fly_spec;
-  std::string prior_path, truth_path;   ///< the user's C′ and C ("prior:", "truth:"), resolved
-  /// The same as defects in ship coordinates ("prior-defects:", "truth-defects:"), resolved, and
-  /// the frame spacing for defects placed by frame ("frame-spacing:").
+  /// The user's C′ and C ("prior:", "truth:") as the config names them (relative to its
+  /// directory).
+  std::string prior_path, truth_path;
+  /// The same as defects in ship coordinates ("prior-defects:", "truth-defects:"), as the config
+  /// names them, and the frame spacing for defects placed by frame ("frame-spacing:").
   std::string prior_defects_path, truth_defects_path;
+  /// Stable ids of the loaded C′ and C (from a mask or defects; empty without), so that the
+  /// fingerprint follows the files' contents.
+  std::string prior_hash, truth_hash;
   std::optional<double> frame_spacing;
   world::UserMaps maps;                 ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
