@@ -5,10 +5,12 @@
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <limits>
 
 #include "hullinspect/planners/sweep_approach.hpp"
+#include "hullinspect/planners/sweep_chooser.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 #include "sweep_inspect_detail.hpp"
@@ -37,19 +39,20 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
   const bool auto_axis = options_.strips == "auto" && (band_start_.empty() || low);
   axis = options_.strips == "rows" || auto_axis ? BandAxis::kRows : BandAxis::kColumns;
   const int band = low ? h1_ * 2 + 1 : h2_ * 2 + 1;
-  auto waypoints = band_sweep(owner, k, band, axis, true, from, band_start_);
+  std::vector<grid::Cell> waypoints;
   if (auto_axis) {
-    // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
-    auto columns = band_sweep(owner, k, band, BandAxis::kColumns, true, from, band_start_);
-    if (flight_length(from, columns) < flight_length(from, waypoints)) {
-      waypoints = std::move(columns);
-      axis = BandAxis::kColumns;
-    }
+    // Rows (listed first) or columns, whichever the chooser takes.
+    auto candidates = axis_candidates(owner, k, band, from, band_start_);
+    const std::size_t chosen = choose_plan(candidates);
+    axis = chosen == 0 ? BandAxis::kRows : BandAxis::kColumns;
+    waypoints = std::move(candidates[chosen].plan.waypoints);
+  } else {
+    waypoints = band_sweep(owner, k, band, axis, true, from, band_start_);
   }
   uavs_[static_cast<std::size_t>(k)].approach_rest = 0;
   if (approach && reach_ == nullptr) {
-    // Candidate plans chosen by their whole flight: the sweep approached along the region's edge
-    // where that sees the bands' ends, or begun with the bands on one side of the UAV's.
+    // The plain sweep, the sweep approached along the region's edge where that sees the bands'
+    // ends, or begun with the bands on one side of the UAV's: the chooser takes one.
     SweepRequest request{k, band, axis, true, band_start_, true};
     request.edge_approach = true;
     request.own_band_first = true;
@@ -101,11 +104,10 @@ void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int 
   // failure changes. (Two blocks at z = 2 gain less and lose more: 1.2759 / 1.2468 / 1.2649, up
   // to +82 s in a mission, so they are not planned there.)
   const SweepRequest request{k, 2 * h1_ + 1, p.axis, true, band_start_, true};
-  auto blocks = two_block_sweep(owner, request, from, waypoints);
-  if (blocks != waypoints) {
-    waypoints = std::move(blocks);
-    p.approach_rest = 0;  // the blocks have no approach
-  }
+  auto candidates = two_block_candidates(owner, request, from, std::move(waypoints));
+  const std::size_t chosen = choose_plan(candidates);
+  waypoints = std::move(candidates[chosen].plan.waypoints);
+  if (chosen != 0) p.approach_rest = 0;  // the blocks have no approach
 }
 
 std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
@@ -342,11 +344,15 @@ bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
     p.approach_rest = approach_rest;
     p.resume = resume;
   };
-  const double back = flight(k, pos, p.resume) + planned_sweep_steps(k, p.resume);
+  // Two candidates for the chooser, costs only: back to the band (listed first, so a tie keeps
+  // it), or planned anew from here (planned again if chosen, as planning sets the UAV's state).
+  std::array<SweepCandidate, 2> candidates;
+  candidates[0].cost.reach = flight(k, pos, p.resume);
+  candidates[0].cost.bands = planned_sweep_steps(k, p.resume);
   restore();
-  const double here = planned_sweep_steps(k, pos);
+  candidates[1].cost.bands = planned_sweep_steps(k, pos);
   restore();
-  if (here >= back) return false;
+  if (choose_plan(candidates) == 0) return false;
   p.sweep.assign(sweep_from(k, pos));
   p.resume = pos;
   return true;
