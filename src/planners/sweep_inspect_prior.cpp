@@ -56,9 +56,8 @@ int SweepInspectPlanner::next_of_tour(int k, grid::Cell from, std::span<const in
   // A short tour (or one forgotten) is planned anew from here: the rest may be ordered better
   // from where it is.
   for (const int i : cells) tour_points_.push_back(hull_cell(i));
-  // The tour's end is free: pulling it towards the nearer end of the sweep after it (half the
-  // flight there added to its cost) lowered T_m by 1.2 s and raised T_c by 0.9 s on the tuning
-  // seeds.
+  // The tour's end is free (not pulled towards the sweep after it): the sweep is planned from
+  // wherever the tour ends.
   plan_open_tour(from, tour_points_, {.reach = h1_});
   p.tour.clear();
   for (const grid::Cell c : tour_points_) p.tour.push_back(c.y * width_ + c.x);

@@ -228,10 +228,9 @@ class SweepInspectPlanner final : public Planner {
     uavs_[static_cast<std::size_t>(k)].tour_next = 0;
     uavs_[static_cast<std::size_t>(k)].repaired = false;
   }
-  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells` (also with
-  /// the planned tour's own length, found by local search, cost 45 times the
-  /// planner time in the tours' re-split and balanced the tours no better on the tuning
-  /// seeds).
+  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells`: cheap enough for
+  /// the tours' re-split, which evaluates many candidate splits (a tour found by local search
+  /// for each would cost far more planner time).
   int tour_steps(grid::Cell from, std::span<const int> cells);
   /// UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
   /// working UAV of its flight part that would end last, if that ends the two at least s2 steps
@@ -253,8 +252,6 @@ class SweepInspectPlanner final : public Planner {
   /// UAV k, its inspection done at `pos`, plans its sweep from `pos` when that is
   /// shorter than flying back to Uav::resume and on; true (and Uav::resume = pos) if it did.
   bool replan_after_inspection(int k, grid::Cell pos, const sim::PlannerView& view);
-  /// Where to rejoin the sweep after an inspection ending at `pos`.
-  grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
   /// footprint square); with no-fly zones, when that is not flyable by UAV k, the viewpoint of c
   /// in UAV k's service (kNoCell when its part of the flight space has none).
@@ -320,7 +317,7 @@ class SweepInspectPlanner final : public Planner {
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
   /// The planning estimates of the split: a sweep sees about this fraction of s2 new cells per
-  /// step (its inspections included; measured on the tuning seeds), a visit of a prior cell
+  /// step (its inspections included), a visit of a prior cell
   /// costs about this many steps.
   static constexpr double kSweepRate = 0.6;
   static constexpr double kPriorVisitSteps = 1.5;
