@@ -20,6 +20,7 @@
 #include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/prior_tour_split.hpp"
 #include "hullinspect/planners/sweep_approach.hpp"
 #include "hullinspect/planners/waypoint_follower.hpp"
 
@@ -204,10 +205,11 @@ class SweepInspectPlanner final : public Planner {
   /// UAV k at `pos`, its prior tour done, takes part of the longest prior tour left;
   /// true if it took cells.
   bool take_prior_share(int k, grid::Cell pos);
-  /// Splits `cells` between UAV a at pa and UAV b at pb: a takes the first t of them (the order is
-  /// left in `cells`), t making the later of the two estimated tours end earliest (`*later`).
-  std::size_t split_tours(int a, grid::Cell pa, int b, grid::Cell pb, std::vector<int>& cells,
-                          int* later);
+  /// Splits `cells` between UAV a at pa and UAV b at pb (PriorTourSplitter::split, with the
+  /// cells each may reach at z = 1): a takes the first `first` of them (the order is left in
+  /// `cells`).
+  PriorTourSplitter::Split split_tours(int a, grid::Cell pa, int b, grid::Cell pb,
+                                       std::vector<int>& cells);
   /// At the start and after a failure's prior cells were handed over: neighbours (by
   /// x of `at`, working UAVs only when `view` is given) re-split their prior cells so that their
   /// tours from `at` end together (kBalancePasses passes over the neighbour pairs).
@@ -228,10 +230,6 @@ class SweepInspectPlanner final : public Planner {
     uavs_[static_cast<std::size_t>(k)].tour_next = 0;
     uavs_[static_cast<std::size_t>(k)].repaired = false;
   }
-  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells`: cheap enough for
-  /// the tours' re-split, which evaluates many candidate splits (a tour found by local search
-  /// for each would cost far more planner time).
-  int tour_steps(grid::Cell from, std::span<const int> cells);
   /// UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
   /// working UAV of its flight part that would end last, if that ends the two at least s2 steps
   /// sooner; true if it took one.
@@ -296,7 +294,7 @@ class SweepInspectPlanner final : public Planner {
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
-  std::vector<int> tour_left_;           // scratch of tour_steps
+  PriorTourSplitter tours_;              // the prior tours' estimates and splits
   std::vector<grid::Cell> tour_points_;  // scratch of next_of_tour
   std::vector<int> split_cells_;
   std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
