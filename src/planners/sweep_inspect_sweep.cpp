@@ -12,6 +12,7 @@
 #include "hullinspect/planners/band_rejoin.hpp"
 #include "hullinspect/planners/sweep_approach.hpp"
 #include "hullinspect/planners/sweep_chooser.hpp"
+#include "hullinspect/planners/sweep_tail.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 #include "sweep_inspect_detail.hpp"
@@ -213,11 +214,8 @@ void SweepInspectPlanner::next_part(int k, const sim::UavState& u) {
 bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
                                           const sim::PlannerView& view) {
   // The UAVs' sweeps end tens of steps apart (their shares' inspections differ): the one that
-  // is done takes the far end of the
-  // sweep that would end last — its last bands, or the far part of its last band — which keeps
-  // the bands' structure where helping cell by cell flies to scattered cells. A sweep left is
-  // estimated as the walk through its waypoints (Manhattan) times kTailWalkCost (inspections on
-  // the way); the split is anywhere along a band, or at a leg between two bands (not flown).
+  // is done takes the far end of the sweep that would end last (split_sweep_tail), among the
+  // working UAVs of its flight part whose sweep is one part in one plane.
   grid::DistanceService& mine = *uav_distances_[static_cast<std::size_t>(j)];
   int donor = -1;
   double donor_alone = 0.0;
@@ -230,49 +228,12 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
     const auto rest = q.sweep.remaining();
     if (rest.empty()) continue;
     const bool sweeping = q.mode == Mode::kSweep;
-    const grid::Cell from = sweeping ? view.uavs[k].pos : q.resume;
-    const int back = sweeping ? 0 : grid::manhattan(view.uavs[k].pos, q.resume);
-    // tail_walk_[i]: the walk from `from` to rest[i].
-    tail_walk_.assign(rest.size(), grid::manhattan(from, rest[0]));
-    for (std::size_t i = 1; i < rest.size(); ++i)
-      tail_walk_[i] = tail_walk_[i - 1] + grid::manhattan(rest[i - 1], rest[i]);
-    const double alone = back + kTailWalkCost * tail_walk_.back();
+    const SweepLeft left{rest, sweeping ? view.uavs[k].pos : q.resume,
+                         sweeping ? 0 : grid::manhattan(view.uavs[k].pos, q.resume), q.axis};
+    const double alone = sweep_left_end(left);
     if (donor >= 0 && alone <= donor_alone) continue;
-    // distance(a, b) searches from b: from here once for every candidate (flights are symmetric).
-    const int to_end = mine.distance(rest.back(), u.pos);
-    const double total = tail_walk_.back();
-    TailSplit split;
-    split.end = alone - (2 * h2_ + 1);  // a split must save at least s2 steps
-    const auto consider = [&](std::size_t leg, grid::Cell at, double kept, bool skip_leg) {
-      // k flies to `at` (on leg `leg`, the leg into rest[leg]) and stops; the UAV j takes the
-      // rest: from `at` (or, skipping a leg between bands, from rest[leg]) to the end.
-      const grid::Cell first = skip_leg ? rest[leg] : at;
-      const double taken = total - (skip_leg ? tail_walk_[leg] : kept);
-      const int to_first = mine.distance(first, u.pos);
-      if (to_first == grid::kUnreachable) return;
-      const double keeps = back + kTailWalkCost * kept;
-      const double takes = std::min(to_first, to_end) + kTailWalkCost * taken;
-      const double end = std::max(keeps, takes);
-      if (end >= split.end) return;
-      split = {end, static_cast<int>(leg), at, skip_leg, to_end < to_first};
-    };
-    for (std::size_t leg = 0; leg < rest.size(); ++leg) {
-      const grid::Cell a = leg == 0 ? from : rest[leg - 1];
-      const grid::Cell b = rest[leg];
-      const double before = leg == 0 ? 0.0 : tail_walk_[leg - 1];
-      if (back + kTailWalkCost * before >= split.end) break;  // k's share only grows
-      const bool band_leg = q.axis == BandAxis::kRows ? a.y == b.y : a.x == b.x;
-      if (!band_leg) {
-        if (leg > 0) consider(leg, a, before, true);
-        continue;
-      }
-      const int length = grid::manhattan(a, b);
-      const grid::Cell dir{(b.x > a.x) - (b.x < a.x), (b.y > a.y) - (b.y < a.y)};
-      for (int d = 1; d < length; ++d) {
-        const grid::Cell at{a.x + d * dir.x, a.y + d * dir.y};
-        if (mine.allowed(at)) consider(leg, at, before + d, false);
-      }
-    }
+    // A split must save at least s2 steps.
+    const TailSplit split = split_sweep_tail(left, u.pos, mine, 2 * h2_ + 1, tail_walk_);
     if (split.leg < 0) continue;
     donor = static_cast<int>(k);
     donor_alone = alone;

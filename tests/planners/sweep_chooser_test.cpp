@@ -105,12 +105,7 @@ TEST(SweepCandidates, OwnBandFirstCandidatesOnARectangle) {
 // The ragged region of SweepApproach.TwoBlockSweepOnARaggedRegion (row bands of 5, so cuts at
 // x = 5, 10, ..., 35): the plain sweep (188 steps) and each cut with either block first.
 TEST(SweepCandidates, TwoBlockCandidatesOnARaggedRegion) {
-  grid::Grid<std::int16_t> owner(40, 30, -1);
-  for (int y = 0; y < 30; ++y) {
-    for (int x = 0; x < 40; ++x) {
-      if (x >= 20 || y < 10) owner(x, y) = 0;
-    }
-  }
+  const auto owner = sweep_coverage::ragged_region();
   const SweepRequest request{0, 5, BandAxis::kRows, true, {}, true};
   const grid::Cell from{10, 7};
   const auto plain = plain_sweep(owner, request, from);

@@ -297,21 +297,11 @@ class SweepInspectPlanner final : public Planner {
   PriorTourSplitter tours_;              // the prior tours' estimates and splits
   std::vector<grid::Cell> tour_points_;  // scratch of next_of_tour
   std::vector<int> split_cells_;
-  std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
+  std::vector<int> tail_walk_;  // scratch of split_sweep_tail: walk lengths along a sweep
   // Scratch of inspection_viewpoint: work cells per position of the window around the inspection,
   // and their 2D prefix sums (one more row and column).
   std::vector<int> view_work_;
   std::vector<int> view_work_sums_;
-  /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its
-  /// remaining waypoint `leg`); the taker flies from `at`, or from that waypoint when the leg runs
-  /// between two bands (`skip_leg`), to the end, or the other way round (`backward`).
-  struct TailSplit {
-    double end = 0.0;  // the later of the two estimated ends
-    int leg = -1;
-    grid::Cell at{-1, -1};
-    bool skip_leg = false;
-    bool backward = false;
-  };
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
   /// The planning estimates of the split: a sweep sees about this fraction of s2 new cells per
@@ -319,9 +309,6 @@ class SweepInspectPlanner final : public Planner {
   /// costs about this many steps.
   static constexpr double kSweepRate = 0.6;
   static constexpr double kPriorVisitSteps = 1.5;
-  /// The tail split's estimate of a sweep's steps per step of its waypoints' walk (inspections,
-  /// turns); a flight to the tail costs one step per step.
-  static constexpr double kTailWalkCost = 1.2;
   grid::DistanceService own_distances_;
   grid::DistanceService* distances_ = nullptr;
   FlightDistances flights_;
