@@ -5,6 +5,8 @@
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
+#include "hullinspect/planners/band_rejoin.hpp"
+
 namespace hullinspect::planners {
 
 sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
@@ -126,7 +128,8 @@ std::optional<sim::Action> SweepInspectPlanner::inspect_mode(int k, const sim::U
   p.target_cell = cell;
   if (cell < 0) {
     // Nothing left to inspect here: rejoin the sweep, or plan it anew from here.
-    p.resume = rejoin_point(k, p, u.pos, view);
+    p.resume = band_rejoin_point({p.resume, p.sweep.target(), p.axis}, u.pos, h2_, view,
+                                 *uav_distances_[static_cast<std::size_t>(k)]);
     if (replan_after_inspection(k, u.pos, view) && p.low) {
       // The sweep planned from here starts with dense columns, swept at z = 1: no climb.
       p.mode = Mode::kSweep;

@@ -27,9 +27,8 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
   // An inspection on detection (a descent, a flight across the band and back, a climb) costs
   // more than its weight says, which is a planned z = 1 tour's (the prior's cells when toured).
   // The tours, though, are re-split among neighbours after the partition (balance_prior_tours): a
-  // piece shrunk for its whole tour lost sweep to pieces that then also took part of its tour, and
-  // ended early (inhomogeneous, s2 = 7, n = 4, 20 tuning seeds: the two UAVs of the denser half
-  // ended their sweeps 25-30 s before the other two with a weight of 1, within 12 s with 0.25).
+  // piece shrunk for its whole tour would lose sweep to pieces that then also take part of its
+  // tour, and end early; so a toured prior cell weighs only kPriorTourWeight of an inspection.
   const bool toured = options_.prior_first && !prior_dropped_;
   grid::Grid<double> extra = request.weights;
   for (int i = 0; i < extra.size(); ++i) {

@@ -103,8 +103,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   }
   positions_.assign(context.starts.begin(), context.starts.end());
   width_ = context.hull.width();
-  tour_left_.clear();
-  tour_left_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
+  tours_ = PriorTourSplitter(width_, h1_, static_cast<std::size_t>(context.hull.cell_count()));
   tour_points_.clear();
   tour_points_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
   if (options_.prior_first) balance_prior_tours(context.starts);

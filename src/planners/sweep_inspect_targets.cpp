@@ -33,10 +33,10 @@ bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
 bool SweepInspectPlanner::left_to_low_sweep(int k, int i) const {
   // After a re-split a survivor may fly far across the others' shares to its own (the failed
   // UAV's cells at one end of the hull shift every share along it), and at z = 2 it detects
-  // corrosion in their dense columns on the way. Descending for it there kept the survivor bound
-  // for the stern about 80 s in a trace (combined, s2 = 11, seed 1 000 021, UAV 0 failing at
-  // 180), while the owner's z = 1 sweep inspects those cells on its way anyway (drop_observed
-  // keeps them in its share).
+  // corrosion in their dense columns on the way. It leaves those detections to the owner's z = 1
+  // sweep, which inspects them on its way anyway (drop_observed keeps them in its share):
+  // descending for each would hold the survivor back from its own share, possibly for a long
+  // stretch of the hull.
   if (!resplit_) return false;
   const int j = owner_[i];
   if (j < 0 || j == k || dense_column_.empty() ||
@@ -104,9 +104,9 @@ grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid
                                                      int radius, grid::Cell held, int& cell,
                                                      const sim::PlannerView& view) {
   // The z = 1 footprint takes in every cell within h1 of the UAV, a rectangle's cells several at
-  // a time. Flying to the nearest cell's nearest viewpoint, chosen anew each step, saw them one
-  // edge at a time and turned back and forth (imperfect, s2 = 11, n = 8, tuning seed 1 000 007:
-  // 33 steps at z = 1 for a cluster of about 9 × 8 cells). Work: the detections it may inspect
+  // a time, so the viewpoint is chosen by the work it takes in, not by the nearest cell: flying
+  // to the nearest cell's nearest viewpoint, chosen anew each step, sees a cluster one edge at a
+  // time and turns back and forth over it. Work: the detections it may inspect
   // within `radius` of `around` and the unobserved cells beside inspected
   // ones; every cell counts one. A position is worth the work its footprint takes in per step of
   // the flight there (plus one, so that a far position taking in much beats a near one taking in

@@ -20,6 +20,7 @@
 #include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/prior_tour_split.hpp"
 #include "hullinspect/planners/sweep_approach.hpp"
 #include "hullinspect/planners/waypoint_follower.hpp"
 
@@ -204,10 +205,11 @@ class SweepInspectPlanner final : public Planner {
   /// UAV k at `pos`, its prior tour done, takes part of the longest prior tour left;
   /// true if it took cells.
   bool take_prior_share(int k, grid::Cell pos);
-  /// Splits `cells` between UAV a at pa and UAV b at pb: a takes the first t of them (the order is
-  /// left in `cells`), t making the later of the two estimated tours end earliest (`*later`).
-  std::size_t split_tours(int a, grid::Cell pa, int b, grid::Cell pb, std::vector<int>& cells,
-                          int* later);
+  /// Splits `cells` between UAV a at pa and UAV b at pb (PriorTourSplitter::split, with the
+  /// cells each may reach at z = 1): a takes the first `first` of them (the order is left in
+  /// `cells`).
+  PriorTourSplitter::Split split_tours(int a, grid::Cell pa, int b, grid::Cell pb,
+                                       std::vector<int>& cells);
   /// At the start and after a failure's prior cells were handed over: neighbours (by
   /// x of `at`, working UAVs only when `view` is given) re-split their prior cells so that their
   /// tours from `at` end together (kBalancePasses passes over the neighbour pairs).
@@ -228,11 +230,6 @@ class SweepInspectPlanner final : public Planner {
     uavs_[static_cast<std::size_t>(k)].tour_next = 0;
     uavs_[static_cast<std::size_t>(k)].repaired = false;
   }
-  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells` (also with
-  /// the planned tour's own length, found by local search, cost 45 times the
-  /// planner time in the tours' re-split and balanced the tours no better on the tuning
-  /// seeds).
-  int tour_steps(grid::Cell from, std::span<const int> cells);
   /// UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
   /// working UAV of its flight part that would end last, if that ends the two at least s2 steps
   /// sooner; true if it took one.
@@ -253,8 +250,6 @@ class SweepInspectPlanner final : public Planner {
   /// UAV k, its inspection done at `pos`, plans its sweep from `pos` when that is
   /// shorter than flying back to Uav::resume and on; true (and Uav::resume = pos) if it did.
   bool replan_after_inspection(int k, grid::Cell pos, const sim::PlannerView& view);
-  /// Where to rejoin the sweep after an inspection ending at `pos`.
-  grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
   /// footprint square); with no-fly zones, when that is not flyable by UAV k, the viewpoint of c
   /// in UAV k's service (kNoCell when its part of the flight space has none).
@@ -299,34 +294,21 @@ class SweepInspectPlanner final : public Planner {
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
-  std::vector<int> tour_left_;           // scratch of tour_steps
+  PriorTourSplitter tours_;              // the prior tours' estimates and splits
   std::vector<grid::Cell> tour_points_;  // scratch of next_of_tour
   std::vector<int> split_cells_;
-  std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
+  std::vector<int> tail_walk_;  // scratch of split_sweep_tail: walk lengths along a sweep
   // Scratch of inspection_viewpoint: work cells per position of the window around the inspection,
   // and their 2D prefix sums (one more row and column).
   std::vector<int> view_work_;
   std::vector<int> view_work_sums_;
-  /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its
-  /// remaining waypoint `leg`); the taker flies from `at`, or from that waypoint when the leg runs
-  /// between two bands (`skip_leg`), to the end, or the other way round (`backward`).
-  struct TailSplit {
-    double end = 0.0;  // the later of the two estimated ends
-    int leg = -1;
-    grid::Cell at{-1, -1};
-    bool skip_leg = false;
-    bool backward = false;
-  };
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
   /// The planning estimates of the split: a sweep sees about this fraction of s2 new cells per
-  /// step (its inspections included; measured on the tuning seeds), a visit of a prior cell
+  /// step (its inspections included), a visit of a prior cell
   /// costs about this many steps.
   static constexpr double kSweepRate = 0.6;
   static constexpr double kPriorVisitSteps = 1.5;
-  /// The tail split's estimate of a sweep's steps per step of its waypoints' walk (inspections,
-  /// turns); a flight to the tail costs one step per step.
-  static constexpr double kTailWalkCost = 1.2;
   grid::DistanceService own_distances_;
   grid::DistanceService* distances_ = nullptr;
   FlightDistances flights_;
