@@ -13,6 +13,7 @@
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
@@ -235,8 +236,8 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
   c.hull_hash =
       stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
-  if (const auto g = root["grid"]; c.hull->geometry() && g && g["cell_size"] &&
-                                   c.cell_size != c.hull->geometry()->cell_size) {
+  if (const auto g = root["grid"];
+      c.hull->geometry() && g && g["cell_size"] && c.cell_size != c.hull->geometry()->cell_size) {
     f.fail(g["cell_size"], "grid.cell_size",
            fmt::format("is {} but the hull's geometry has cells of {} m", c.cell_size,
                        c.hull->geometry()->cell_size));
@@ -360,7 +361,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "sweeps",        "s1",          "s2",        "theta",         "uavs",
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly",      "launch",        "separation"});
+                "frame-spacing", "no-fly",      "launch",    "separation"});
   for (const char* key :
        {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
     remember_line(c, root, key);
@@ -386,7 +387,8 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
   } else {
-    c.algorithms = {AlgorithmSpec{"lawnmower", "lawnmower", {}, 0}};
+    const std::string algorithm = planners::MissionSpec{}.algorithm;  // the one default planner
+    c.algorithms = {AlgorithmSpec{algorithm, algorithm, {}, 0}};
   }
   read_instances(f, root, c);
   if (const auto curve = root["curve"]) {
@@ -561,7 +563,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     c.time_limit = j.at("time_limit").get<int>();
     if (j.contains("launch")) {
       const auto& l = j.at("launch");
-      for (const auto& s : l.at("sites")) c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
+      for (const auto& s : l.at("sites"))
+        c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
       c.launch_transfer = l.at("transfer").get<double>();
       if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
     }
