@@ -43,6 +43,8 @@ world::Instance mission_instance(const MissionSpec& spec, const world::HullMask&
 
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const world::Instance& instance, const MissionOptions& options) {
+  // Failures the caller gives instead of the spec's were not part of validate(spec).
+  if (!options.failures.empty()) world::validate(options.failures, spec.params.uavs);
   auto planner = make_planner(spec.algorithm, spec.planner_options);
   MissionOptions with_spec = options;
   if (with_spec.failures.empty()) with_spec.failures = spec.failures;
