@@ -332,14 +332,8 @@ PYBIND11_MODULE(_core, m) {
          const OptionMap& scenario_options) {
         const std::uint64_t seed = python::seed_value(seed_arg);
         const HullPtr hull = hull_or_default(hull_arg);
-        world::CorrosionParams corrosion;
-        try {
-          corrosion = world::scenario(scenario, scenario_options).corrosion(hull->width());
-        } catch (const ParameterError& e) {  // "perfect.p-c" is p-c, as in build_spec
-          const auto dot = e.name().find('.');
-          if (dot == std::string::npos) throw;
-          throw ParameterError(e.name().substr(dot + 1), e.problem());
-        }
+        const world::CorrosionParams corrosion =
+            planners::scenario_corrosion(scenario, scenario_options, hull->width());
         world::validate(corrosion, *hull);
         return world::generate_instance(*hull, corrosion, seed);
       },

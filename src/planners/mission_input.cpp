@@ -415,6 +415,18 @@ std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& 
       world::make_no_fly_mask(hull, file, cell_boxes));
 }
 
+world::CorrosionParams scenario_corrosion(const std::string& name, const OptionMap& options,
+                                          int width) {
+  try {
+    return world::scenario(name, options).corrosion(width);
+  } catch (const ParameterError& e) {
+    // "perfect.p-c" is the mission option p-c.
+    const auto dot = e.name().find('.');
+    if (dot == std::string::npos) throw;
+    throw ParameterError(e.name().substr(dot + 1), e.problem());
+  }
+}
+
 MissionSpec build_spec(const MissionInput& a, const world::HullMask& hull) {
   if (!a.prior.empty() && !a.prior_defects.empty()) {
     throw ParameterError("prior-defects", "excludes --prior");
@@ -452,14 +464,7 @@ MissionSpec build_spec(const MissionInput& a, const world::HullMask& hull) {
   set("front-l-c", a.front_l_c);
   set("p-tp", a.p_tp);
   set("p-fp", a.p_fp);
-  try {
-    spec.corrosion = world::scenario(a.scenario, scenario_options).corrosion(hull.width());
-  } catch (const ParameterError& e) {
-    // "perfect.p-c" is the mission option p-c.
-    const auto dot = e.name().find('.');
-    if (dot == std::string::npos) throw;
-    throw ParameterError(e.name().substr(dot + 1), e.problem());
-  }
+  spec.corrosion = scenario_corrosion(a.scenario, scenario_options, hull.width());
   spec.maps = world::load_user_maps(a.prior, a.truth, hull);
   world::FrameSpacing frames;
   frames.frame_spacing_m = a.frame_spacing;

@@ -127,6 +127,12 @@ std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& 
                                                              const std::vector<std::string>& boxes,
                                                              const world::HullMask& hull);
 
+/// The corrosion statistics of scenario `name` with its parameters overridden by `options`
+/// ("p-c" → "0.01") on a hull `width` cells long; a refused parameter is ParameterError naming
+/// the mission option ("p-c"), not the scenario's own key ("perfect.p-c").
+world::CorrosionParams scenario_corrosion(const std::string& name, const OptionMap& options,
+                                          int width);
+
 /// Turns the input into a spec for `hull`; throws ParameterError naming the option.
 MissionSpec build_spec(const MissionInput& input, const world::HullMask& hull);
 
