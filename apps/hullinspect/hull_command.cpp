@@ -11,7 +11,7 @@
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/output_set.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
-#include "mesh_options.hpp"
+#include "mission_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -20,7 +20,7 @@ namespace {
 struct HullImportArgs {
   std::string mesh;
   std::string out;
-  MeshArgs options;
+  MissionArgs options;  // only its mesh options are registered
 };
 
 std::string output_path(const std::string& out) {
@@ -33,13 +33,13 @@ int import(const HullImportArgs& args) {
   io::OutputSet outputs;
   outputs.add_output(out, "out");
   outputs.check();
-  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
+  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options.mesh);
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
   outputs.write(out, world::to_hull_json(hull));
   if (g.unrolled()) {
     std::cout << fmt::format("{}: {} facets, unrolled (port, bow, starboard{})\n", args.mesh,
-                             imported.facets, args.options.include.empty() ? "" : ", transom");
+                             imported.facets, args.options.mesh.include.empty() ? "" : ", transom");
   } else {
     std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
                              imported.facing_facets, world::to_string(g.side));

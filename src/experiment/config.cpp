@@ -13,6 +13,7 @@
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
@@ -401,7 +402,8 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
   } else {
-    c.algorithms = {AlgorithmSpec{"lawnmower", "lawnmower", {}, 0}};
+    const std::string algorithm = planners::MissionSpec{}.algorithm;  // the one default planner
+    c.algorithms = {AlgorithmSpec{algorithm, algorithm, {}, 0}};
   }
   read_instances(f, root, c);
   if (const auto curve = root["curve"]) {

@@ -237,7 +237,7 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   p.plan_z = z;
   p.plan_value = target_value(z, maps_->corrosion_to_inspect(k));
   if (p.plans++ > 0) ++stats_.replans;
-  const int trim = options_.trim_ends ? (maps_->layout(z).s - 1) / 2 : 0;
+  const int trim = options_.trim_ends ? world::footprint_half(maps_->layout(z).s) : 0;
   grid::DistanceService& distances = flights_.of(k);
   problem_.distances = &distances;
   if (distances.has_no_fly()) {

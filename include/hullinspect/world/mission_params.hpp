@@ -12,16 +12,22 @@
 
 namespace hullinspect::world {
 
+/// The half-side h of a square footprint of odd side s = 2h + 1: a position's footprint holds the
+/// cells within Chebyshev distance h of it. The one place a side becomes a half-side.
+constexpr int footprint_half(int side) {
+  return (side - 1) / 2;
+}
+
 struct MissionParams {
-  int uavs = 4;                      ///< n, fleet size (>= 1, <= hull cells)
-  int s1 = 5;                        ///< footprint side at z = 1 (close-up), odd, cells
-  int s2 = 7;                        ///< footprint side at z = 2 (detection), odd, > s1, cells
-  double theta_deg = 90.0;           ///< camera aperture θ, degrees, in (0, 180)
-  double cell_size_m = 0.5;          ///< side of one cell in metres (for reports and exports)
-  double plane_speed_cells = 1.0;    ///< standoff change per step, cells per step (> 0)
-  int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
-  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
-  int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
+  int uavs = 4;                    ///< n, fleet size (>= 1, <= hull cells)
+  int s1 = 5;                      ///< footprint side at z = 1 (close-up), odd, cells
+  int s2 = 7;                      ///< footprint side at z = 2 (detection), odd, > s1, cells
+  double theta_deg = 90.0;         ///< camera aperture θ, degrees, in (0, 180)
+  double cell_size_m = 0.5;        ///< side of one cell in metres (for reports and exports)
+  double plane_speed_cells = 1.0;  ///< standoff change per step, cells per step (> 0)
+  int start_z = 2;                 ///< plane every UAV starts on (1 or 2)
+  std::vector<grid::Cell> starts;  ///< explicit start cells; empty = model.md §1 default spacing
+  int time_limit = 20000;          ///< steps after which an unfinished mission is "incomplete"
   /// Launch sites (docs/model.md, "Launch sites"): the UAVs start on the ground at a site and end
   /// the mission landed at it. Empty = the paper's model (start airborne at the start cells).
   std::vector<grid::Cell> launch_sites;
@@ -43,6 +49,8 @@ struct MissionParams {
   int plane_change_steps() const;
   /// Footprint side on plane z.
   int footprint(int z) const { return z == 1 ? s1 : s2; }
+  /// Half-side of the footprint on plane z (footprint_half(footprint(z))).
+  int half_side(int z) const { return footprint_half(footprint(z)); }
 };
 
 /// The most UAVs the separation D leaves room for on a w × h grid: ceil(w/D)·ceil(h/D) (positions
