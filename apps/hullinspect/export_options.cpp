@@ -12,6 +12,7 @@
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/files/bounded_read.hpp"
 #include "hullinspect/io/geo_survey.hpp"
+#include "hullinspect/planners/mission_input.hpp"
 #include "hullinspect/world/ship_frame_bounds.hpp"
 
 #include <algorithm>
@@ -242,7 +243,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
                          fmt::format("'{}' is not a finish (expected land or rtl)", a.finish));
   }
   r.settings.drone = io::parse_dji_drone(a.drone);
-  for (const auto& text : a.launch) r.settings.launch_sites.push_back(parse_xy(text, "launch"));
+  for (const auto& text : a.launch) r.settings.launch_sites.push_back(planners::parse_xy(text, "launch"));
   if (a.max_waypoints) {
     if (*a.max_waypoints < io::kMinWaypointCap) {
       throw ParameterError("max-waypoints",

@@ -90,9 +90,7 @@ int run(const RunArgs& args) {
     declare_export_files(outputs, *export_request, spec.params.uavs);
     outputs.check();
   }
-  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
-  world::apply(spec.maps, instance);
-  auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
+  const auto instance = planners::mission_instance(spec, hull);
   const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;
   planners::MissionOptions options;
@@ -100,10 +98,7 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
-  options.failures = spec.failures;
-  options.corrosion = planners::prior_statistics(spec);
-  const sim::MissionResult result =
-      planners::run_mission(hull, instance, spec.params, *planner, options);
+  const sim::MissionResult result = planners::run_mission(spec, hull, instance, options);
   if (tracing) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");

@@ -14,6 +14,7 @@
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
@@ -96,25 +97,37 @@ void read_mesh_hull(const YamlFields& f, const YAML::Node& h, const std::filesys
   }
 }
 
+// The stable id of a map's cells (-1 not hull, 0 clean, 1 corroded), row by row.
+std::string map_hash(const world::CorrosionMap& map) {
+  std::string cells;
+  for (const auto v : map.cells.values()) cells += static_cast<char>('1' + v);
+  return stable_id(cells);
+}
+
 void read_user_maps(const YamlFields& f, const YAML::Node& root,
                     const std::filesystem::path& base_dir, ExperimentConfig& c) {
-  const auto path = [&](const char* key) {
-    return root[key] ? resolved(f.as_string(root[key], key), base_dir).string() : std::string();
+  // Each file is recorded as the config names it and found from the config's directory, so that
+  // the fingerprint does not depend on how the config's own path was spelled.
+  const auto name = [&](const char* key) {
+    return root[key] ? f.as_string(root[key], key) : std::string();
   };
-  c.prior_path = path("prior");
-  c.truth_path = path("truth");
+  const auto path = [&](const std::string& named) {
+    return named.empty() ? named : resolved(named, base_dir).string();
+  };
+  c.prior_path = name("prior");
+  c.truth_path = name("truth");
   try {
-    c.maps.prior = world::load_user_maps(c.prior_path, "", *c.hull).prior;
+    c.maps.prior = world::load_user_maps(path(c.prior_path), "", *c.hull).prior;
   } catch (const InputError& e) {
     f.fail(root["prior"], "prior", e.what());
   }
   try {
-    c.maps.truth = world::load_user_maps("", c.truth_path, *c.hull).truth;
+    c.maps.truth = world::load_user_maps("", path(c.truth_path), *c.hull).truth;
   } catch (const InputError& e) {
     f.fail(root["truth"], "truth", e.what());
   }
-  c.prior_defects_path = path("prior-defects");
-  c.truth_defects_path = path("truth-defects");
+  c.prior_defects_path = name("prior-defects");
+  c.truth_defects_path = name("truth-defects");
   if (root["frame-spacing"]) {
     c.frame_spacing = f.as_number(root["frame-spacing"], "frame-spacing", 1e-3, 1e3);
   }
@@ -128,13 +141,16 @@ void read_user_maps(const YamlFields& f, const YAML::Node& root,
     }
     try {
       map = std::make_shared<const world::CorrosionMap>(
-          world::load_defect_map(file, *c.hull, frames));
+          world::load_defect_map(path(file), *c.hull, frames));
     } catch (const InputError& e) {
       f.fail(root[key], key, e.what());
     }
   };
   defects("prior-defects", "prior", c.prior_defects_path, c.maps.prior);
   defects("truth-defects", "truth", c.truth_defects_path, c.maps.truth);
+  // The maps' contents identify the experiment, so a file changed under the same name is another.
+  if (c.maps.prior) c.prior_hash = map_hash(*c.maps.prior);
+  if (c.maps.truth) c.truth_hash = map_hash(*c.maps.truth);
 }
 
 /// `prior:` replaces the generated C′ and `truth:` the generated C (docs/model.md): a scenario or
@@ -236,8 +252,8 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
   c.hull_hash =
       stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
-  if (const auto g = root["grid"]; c.hull->geometry() && g && g["cell_size"] &&
-                                   c.cell_size != c.hull->geometry()->cell_size) {
+  if (const auto g = root["grid"];
+      c.hull->geometry() && g && g["cell_size"] && c.cell_size != c.hull->geometry()->cell_size) {
     f.fail(g["cell_size"], "grid.cell_size",
            fmt::format("is {} but the hull's geometry has cells of {} m", c.cell_size,
                        c.hull->geometry()->cell_size));
@@ -397,7 +413,8 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
   } else {
-    c.algorithms = {AlgorithmSpec{"lawnmower", "lawnmower", {}, 0}};
+    const std::string algorithm = planners::MissionSpec{}.algorithm;  // the one default planner
+    c.algorithms = {AlgorithmSpec{algorithm, algorithm, {}, 0}};
   }
   read_instances(f, root, c);
   if (const auto curve = root["curve"]) {
@@ -474,6 +491,8 @@ nlohmann::json config_json(const ExperimentConfig& c) {
   if (!c.truth_path.empty()) j["truth"] = c.truth_path;
   if (!c.prior_defects_path.empty()) j["prior_defects"] = c.prior_defects_path;
   if (!c.truth_defects_path.empty()) j["truth_defects"] = c.truth_defects_path;
+  if (!c.prior_hash.empty()) j["prior_hash"] = c.prior_hash;
+  if (!c.truth_hash.empty()) j["truth_hash"] = c.truth_hash;
   if (c.frame_spacing) j["frame_spacing"] = *c.frame_spacing;
   json scenarios = json::array();
   for (const auto& s : c.scenarios) {
@@ -538,6 +557,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       c.prior_defects_path = j.at("prior_defects").get<std::string>();
     if (j.contains("truth_defects"))
       c.truth_defects_path = j.at("truth_defects").get<std::string>();
+    if (j.contains("prior_hash")) c.prior_hash = j.at("prior_hash").get<std::string>();
+    if (j.contains("truth_hash")) c.truth_hash = j.at("truth_hash").get<std::string>();
     if (j.contains("frame_spacing")) c.frame_spacing = j.at("frame_spacing").get<double>();
     for (const auto& s : j.at("scenarios")) {
       ScenarioSpec spec;
@@ -574,7 +595,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     c.time_limit = j.at("time_limit").get<int>();
     if (j.contains("launch")) {
       const auto& l = j.at("launch");
-      for (const auto& s : l.at("sites")) c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
+      for (const auto& s : l.at("sites"))
+        c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
       c.launch_transfer = l.at("transfer").get<double>();
       if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
     }

@@ -54,7 +54,9 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
          (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
          (s.no_fly_spec.is_null() ? std::string()
                                   : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
-         launch_key(c) + speed_key(c) +
+         // The user's maps by content, as no-fly zones: only configs with them say so.
+         (c.prior_hash.empty() ? std::string() : "|prior=" + c.prior_hash) +
+         (c.truth_hash.empty() ? std::string() : "|truth=" + c.truth_hash) + launch_key(c) + speed_key(c) +
          (c.separation == 0 ? std::string() : fmt::format("|separation={}", c.separation));
 }
 

@@ -351,7 +351,12 @@ TEST(ExperimentConfig, DefectListsBecomeThePriorAndTruth) {
   int corroded = 0;
   for (int i = 0; i < c.maps.prior->cells.size(); ++i) corroded += c.maps.prior->cells[i] == 1;
   EXPECT_EQ(corroded, 2);  // x ∈ [0.5, 1.5) at row 0: columns 1 and 2
-  EXPECT_EQ(config_json(c)["prior_defects"], (dir / "survey.csv").string());
+  // As the config names it (found from its directory), identified by the map it gives.
+  EXPECT_EQ(config_json(c)["prior_defects"], "survey.csv");
+  EXPECT_EQ(config_json(c)["prior_hash"].get<std::string>().size(), 16u);
+  EXPECT_EQ(config_json(c)["prior_hash"], config_json(c)["truth_hash"]);
+  EXPECT_EQ(config_fingerprint(config_from_json(config_json(c), "manifest.json")),
+            config_fingerprint(c));
   EXPECT_EQ(config_json(c)["frame_spacing"], 0.5);
 
   try {

@@ -21,6 +21,7 @@
 #include "hullinspect/io/trace_reader.hpp"
 #include "source_dir.hpp"
 #include "support/cli_runner.hpp"
+#include "support/mesh_fixtures.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -338,6 +339,61 @@ TEST_F(FlightFiles, KmlDrawsEachSortieTheSitesAndTheNoFlyBoxes) {
   // The 5 × 7 box: one box per row of it, six faces each.
   EXPECT_EQ(folders["No-fly zones"], 7);
   EXPECT_EQ(faces, 6);
+}
+
+// An unrolled hull (both sides and the bow in one grid) in DJI's and Google Earth's formats: every
+// DJI placemark comes back to its waypoint's stand-off pose around the ship, and each no-fly cell
+// is a KML box of its own (a row of cells curves around the hull).
+TEST(UnrolledFlightFiles, DjiKmzAndKmlPlaceTheWaypointsAroundTheShip) {
+  const std::string dir = make_temp_dir("flight-files-unrolled");
+  const std::string trace = dir + "/trace.json";
+  auto r = run_cli({"plan", "--hull", wigley_stl(WigleyHull{}).string(), "--sides", "both",
+                    "--cell-size", "1", "-a", "part-tsp", "-n", "2", "--seed", "3", "--no-fly-box",
+                    "99,7,101,7", "--trace", trace});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> args = {"export",   trace,     "--out",           dir + "/out",
+                                   "--format", "dji-kmz", "--format",        "kml",
+                                   "--drone",  "m3e",     "--max-waypoints", "1000"};
+  args.insert(args.end(), kGeo.begin(), kGeo.end());
+  r = run_cli(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto p = io::export_plan(io::read_trace(trace));
+  ASSERT_TRUE(p.frame.unrolled());
+  int port = 0, starboard = 0;
+  for (int k = 0; k < 2; ++k) {
+    const auto entries = unzip(dir + "/out/uav" + std::to_string(k) + ".kmz");
+    ASSERT_TRUE(entries.count("wpmz/waylines.wpml"));
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_string(entries.at("wpmz/waylines.wpml").c_str()));
+    const auto& want = p.uavs[static_cast<std::size_t>(k)];
+    const auto home = home_of(p, k);
+    std::size_t i = 0;
+    for (const auto pm : doc.child("kml").child("Document").child("Folder").children("Placemark")) {
+      ASSERT_LT(i, want.size());
+      const auto lonlat = split(pm.child("Point").child_value("coordinates"), ',');
+      ASSERT_EQ(lonlat.size(), 2u);
+      const auto got = ship_point(std::stod(lonlat[1]), std::stod(lonlat[0]),
+                                  pm.child("wpml:executeHeight").text().as_double(), home);
+      expect_at(got, want[i], "uav" + std::to_string(k) + " placemark " + std::to_string(i));
+      (got.y > p.frame.spec().ys ? port : starboard) += 1;
+      ++i;
+    }
+    EXPECT_EQ(i, want.size());
+  }
+  // One mission on both sides of the ship.
+  EXPECT_GT(port, 0);
+  EXPECT_GT(starboard, 0);
+  pugi::xml_document kml;
+  ASSERT_TRUE(kml.load_file((dir + "/out/mission.kml").c_str()));
+  std::map<std::string, int> folders;
+  for (const auto folder : kml.child("kml").child("Document").children("Folder")) {
+    int n = 0;
+    for (auto pm = folder.child("Placemark"); pm; pm = pm.next_sibling("Placemark")) ++n;
+    folders[folder.child_value("name")] = n;
+  }
+  EXPECT_EQ(folders["Flights"], 2);
+  EXPECT_EQ(folders["No-fly zones"], 3);
+  fs::remove_all(dir);
 }
 
 TEST_F(FlightFiles, AllFormatsInOneCommandStayUnderTheirCaps) {

@@ -9,6 +9,9 @@
 //  * reach: a cell is observed only from a position whose footprint holds it, and a UAV needs at
 //    least the Manhattan distance to get there (+ u_z to descend for a corroded cell).
 
+#include <span>
+
+#include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/mission_params.hpp"
@@ -24,7 +27,11 @@ struct LowerBound {
   int reach_t_m = 0;
 };
 
-/// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded).
+/// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded), its UAVs
+/// starting at `starts` (world::start_cells of the mission, computed once by its caller).
+LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
+                       const world::MissionParams& params, std::span<const grid::Cell> starts);
+/// The same on world::start_cells(params, hull).
 LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
                        const world::MissionParams& params);
 

@@ -20,7 +20,11 @@ namespace hullinspect::sim {
 
 class Simulator {
  public:
-  /// Places the UAVs on their start cells at start_z and senses (t = 0). `params` must be valid.
+  /// Places the UAVs on `starts` (world::start_cells of the mission, computed once by its caller)
+  /// at start_z and senses (t = 0). `params` must be valid.
+  Simulator(const world::HullMask& hull, const world::Instance& instance,
+            const world::MissionParams& params, std::span<const grid::Cell> starts);
+  /// The same on world::start_cells(params, hull).
   Simulator(const world::HullMask& hull, const world::Instance& instance,
             const world::MissionParams& params);
 
@@ -48,6 +52,8 @@ class Simulator {
   int failed_uavs() const { return failed_; }
   const world::MissionParams& params() const { return params_; }
   const world::HullMask& hull() const { return hull_; }
+  /// The start cell of each UAV.
+  std::span<const grid::Cell> starts() const { return starts_; }
   int plane_change_steps() const { return uz_; }
   /// Flyable positions and the hull cells that can be inspected / detected (computed at t = 0).
   const world::Reachability& reachability() const { return reach_; }
@@ -85,6 +91,7 @@ class Simulator {
   const world::HullMask& hull_;
   const grid::Grid<std::int8_t>& truth_;
   world::MissionParams params_;
+  std::vector<grid::Cell> starts_;
   world::Reachability reach_;
   int uz_ = 1;
   int time_ = 0;
@@ -107,9 +114,9 @@ class Simulator {
   MissionResult result_;  // series and counters, filled as the mission runs
   world::LaunchLegs legs_;
   std::vector<std::vector<grid::Cell>> away_path_;  // per UAV: its position at each step away
-  std::vector<std::size_t> away_next_;               // per UAV: the next entry of away_path_
+  std::vector<std::size_t> away_next_;              // per UAV: the next entry of away_path_
   std::vector<int> climbed_at_;  // per UAV flying home: steps left when it is back on plane 2
-  bool homing_ = false;  // the hull is complete and some working UAV has not landed yet
+  bool homing_ = false;          // the hull is complete and some working UAV has not landed yet
 };
 
 }  // namespace hullinspect::sim

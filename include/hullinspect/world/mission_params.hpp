@@ -12,6 +12,12 @@
 
 namespace hullinspect::world {
 
+/// The half-side h of a square footprint of odd side s = 2h + 1: a position's footprint holds the
+/// cells within Chebyshev distance h of it. The one place a side becomes a half-side.
+constexpr int footprint_half(int side) {
+  return (side - 1) / 2;
+}
+
 /// The speeds (--speed, --climb-speed) validate() accepts, m/s.
 inline constexpr double kMinSpeedMs = 1e-3;
 inline constexpr double kMaxSpeedMs = 1e3;
@@ -63,6 +69,8 @@ struct MissionParams {
   double seconds(long long steps) const;
   /// Footprint side on plane z.
   int footprint(int z) const { return z == 1 ? s1 : s2; }
+  /// Half-side of the footprint on plane z (footprint_half(footprint(z))).
+  int half_side(int z) const { return footprint_half(footprint(z)); }
 };
 
 /// The most UAVs the separation D leaves room for on a w × h grid: ceil(w/D)·ceil(h/D) (positions
