@@ -113,9 +113,7 @@ int plan(const PlanArgs& args) {
     outputs.commit();
     return result.complete ? 0 : 3;
   }
-  auto time = [](const std::optional<int>& t) {
-    return t ? fmt::format("{} s", *t) : std::string("—");
-  };
+  auto time = [&](const std::optional<int>& t) { return io::seconds_text(spec.params, t); };
   const auto total = result.totals();
   std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: planned on {}{}\n",
                            spec.algorithm, plural(spec.params.uavs, "UAV"), spec.params.s1,

@@ -48,9 +48,7 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
     }
     std::cout << fmt::format("  failed: {}\n", which);
   }
-  auto time = [](const std::optional<int>& t) {
-    return t ? fmt::format("{} s", *t) : std::string("—");
-  };
+  auto time = [&](const std::optional<int>& t) { return io::seconds_text(spec.params, t); };
   std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
                            time(r.t_m), r.corroded_cells, r.hull_cells);
   if (r.unreachable_cells > 0 || r.unreachable_z2_cells > 0) {

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "config_launch.hpp"
+#include "config_speed.hpp"
 #include "config_no_fly.hpp"
 #include "config_scenarios.hpp"
 #include "hullinspect/core/errors.hpp"
@@ -352,6 +353,14 @@ std::vector<int> CurveGrid::times() const {
   return t;
 }
 
+world::MissionParams ExperimentConfig::timing() const {
+  world::MissionParams p;
+  p.cell_size_m = cell_size;
+  p.speed_m_s = speed;
+  p.climb_speed_m_s = climb_speed;
+  return p;
+}
+
 int ExperimentConfig::line_of(const std::string& key) const {
   auto it = lines.find(key);
   return it == lines.end() ? 0 : it->second;
@@ -376,7 +385,8 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "sweeps",        "s1",          "s2",        "theta",         "uavs",
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly",      "launch",    "separation"});
+                "frame-spacing", "no-fly",      "launch",        "separation",    "speed",
+                "climb-speed"});
   for (const char* key :
        {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
     remember_line(c, root, key);
@@ -398,6 +408,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
     c.separation = f.as_int(root["separation"], "separation", 0, kMaxSide);
   }
   if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
+  detail::read_speed(f, root, c);
   detail::read_launch(f, root, c);
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
@@ -520,6 +531,8 @@ nlohmann::json config_json(const ExperimentConfig& c) {
     j["launch"] = {{"sites", sites}, {"transfer", c.launch_transfer}};
     if (c.takeoff_time) j["launch"]["takeoff_time"] = *c.takeoff_time;
   }
+  if (c.speed) j["speed"] = *c.speed;  // only when given: manifests unchanged
+  if (c.climb_speed) j["climb_speed"] = *c.climb_speed;
   j["curve"] = {{"step", c.curve.step}, {"end", c.curve.end}};
   return j;
 }
@@ -587,6 +600,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       c.launch_transfer = l.at("transfer").get<double>();
       if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
     }
+    if (j.contains("speed")) c.speed = j.at("speed").get<double>();
+    if (j.contains("climb_speed")) c.climb_speed = j.at("climb_speed").get<double>();
     c.curve.step = j.at("curve").at("step").get<int>();
     c.curve.end = j.at("curve").at("end").get<int>();
     if (c.curve.step < 1) throw InputError(source, 0, "config.curve.step must be at least 1");

@@ -20,6 +20,14 @@ std::string launch_key(const ExperimentConfig& c) {
   return key;
 }
 
+// Likewise only configs with a speed: every other run keeps its id.
+std::string speed_key(const ExperimentConfig& c) {
+  std::string key;
+  if (c.speed) key += fmt::format("|speed={}", *c.speed);
+  if (c.climb_speed) key += fmt::format("|climb_speed={}", *c.climb_speed);
+  return key;
+}
+
 // Doubles are written in their shortest round-trip form, so the string (and the id) only changes
 // when a value does.
 std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
@@ -48,7 +56,7 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
                                   : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
          // The user's maps by content, as no-fly zones: only configs with them say so.
          (c.prior_hash.empty() ? std::string() : "|prior=" + c.prior_hash) +
-         (c.truth_hash.empty() ? std::string() : "|truth=" + c.truth_hash) + launch_key(c) +
+         (c.truth_hash.empty() ? std::string() : "|truth=" + c.truth_hash) + launch_key(c) + speed_key(c) +
          (c.separation == 0 ? std::string() : fmt::format("|separation={}", c.separation));
 }
 
@@ -119,6 +127,8 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.launch_sites = c.launch_sites;
   spec.params.launch_transfer_s = c.launch_transfer;
   spec.params.takeoff_time_s = c.takeoff_time;
+  spec.params.speed_m_s = c.speed;
+  spec.params.climb_speed_m_s = c.climb_speed;
   spec.params.separation = c.separation;
   const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;

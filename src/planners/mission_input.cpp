@@ -248,6 +248,16 @@ std::vector<MissionOptionDecl> declare() {
       [](MissionInput& in, const std::string& t) {
         in.takeoff_time = literal<double>("takeoff-time", t);
       });
+  add("speed", "M/S", InputKind::kValue,
+      "Horizontal speed in m/s: a move to a neighbouring cell takes cell / speed seconds, the "
+      "length of one step (default: one cell per second)",
+      [](MissionInput& in, const std::string& t) { in.speed = literal<double>("speed", t); });
+  add("climb-speed", "M/S", InputKind::kValue,
+      "Climb speed in m/s for plane changes and the take-off, rounded up to whole steps "
+      "(default: one cell per second, u_z steps at the default speed)",
+      [](MissionInput& in, const std::string& t) {
+        in.climb_speed = literal<double>("climb-speed", t);
+      });
 
   // How a mesh --hull is imported. The defaults shown are MeshImportOptions{}'s (mesh_hull.hpp);
   // the inputs stay unset so that a named mesh hull can start from its own.
@@ -453,6 +463,8 @@ MissionSpec build_spec(const MissionInput& a, const world::HullMask& hull) {
   for (const auto& s : a.launch) p.launch_sites.push_back(parse_xy(s, "launch"));
   p.launch_transfer_s = a.launch_transfer;
   p.takeoff_time_s = a.takeoff_time;
+  p.speed_m_s = a.speed;
+  p.climb_speed_m_s = a.climb_speed;
 
   OptionMap scenario_options;
   auto set = [&](const char* key, const std::optional<std::string>& v) {

@@ -104,6 +104,8 @@ class RunMission(unittest.TestCase):
                                                               options={"tsp-solver": "foo"})),
             (["-a", "part-tsp", "--hull", "/nonexistent/hull.txt"],
              dict(algorithm="part-tsp", hull="/nonexistent/hull.txt")),
+            (["--speed", "0"], dict(speed=0)),
+            (["--climb-speed", "-1"], dict(climb_speed=-1)),
             (["--fail-one-within", "abc"], dict(fail_one_within="abc")),
             (["--launch", "0,0", "--launch-transfer", "nan"],
              dict(launch=[(0, 0)], launch_transfer=float("nan"))),
@@ -117,6 +119,13 @@ class RunMission(unittest.TestCase):
                 with self.assertRaises(ValueError) as caught:
                     hullinspect.run_mission(**kwargs)
                 self.assertEqual(str(caught.exception), python_message(message))
+
+    def test_speed_gives_the_same_steps_in_seconds_of_the_step(self):
+        # 0.5 m cells at 1 m/s: steps of 0.5 s; climbing at 1 m/s keeps one step per plane change.
+        paper = hullinspect.run_mission("lawnmower", uavs=4)
+        fast = hullinspect.run_mission("lawnmower", uavs=4, speed=1, climb_speed=1)
+        self.assertEqual(fast.T_c, paper.T_c * 0.5)
+        self.assertEqual(fast.T_m, paper.T_m * 0.5)
 
     def test_unknown_algorithm_lists_the_registered_python_planners_too(self):
         message = cli_error("run", "-a", "part_tsp")

@@ -94,12 +94,16 @@ struct ExperimentConfig {
   std::vector<grid::Cell> launch_sites;
   double launch_transfer = world::MissionParams{}.launch_transfer_s;  ///< seconds each way
   std::optional<double> takeoff_time;                                 ///< seconds; empty = u_z
+  /// "speed:" and "climb-speed:" in m/s (docs/model.md, "Speed and time"); empty = the paper's.
+  std::optional<double> speed, climb_speed;
   CurveGrid curve;
   /// Config line of each key and list item ("s1", "s2[1]", "uavs[0]", "time_limit"), so that an
   /// error found later (when cells are validated) can still name its line. 0 = not in the file.
   std::map<std::string, int> lines;
 
   int line_of(const std::string& key) const;
+  /// The parameters that convert this experiment's steps to seconds (cell size and speeds).
+  world::MissionParams timing() const;
 };
 
 /// Parses a config. `source` names it in errors ("FILE:LINE: key: problem"); a relative hull path

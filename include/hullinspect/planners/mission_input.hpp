@@ -69,6 +69,8 @@ struct MissionInput {
   std::vector<std::string> launch;           ///< X,Y launch sites (none = the paper's model)
   double launch_transfer = world::MissionParams{}.launch_transfer_s;
   std::optional<double> takeoff_time;  ///< seconds; default u_z
+  std::optional<double> speed;         ///< m/s; empty = one cell per second (the paper's)
+  std::optional<double> climb_speed;   ///< m/s; empty = the paper's plane change
 };
 
 /// How an option takes its value.
