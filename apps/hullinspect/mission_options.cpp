@@ -156,6 +156,7 @@ void add_mission_options(CLI::App& cmd, MissionArgs& a) {
                  "Seconds from the ground to plane 2 at a launch site, and back down (default: a "
                  "plane change, u_z)")
       ->type_name("S");
+  add_battery_options(cmd, a.battery);
   add_mesh_options(cmd, a.mesh);
   add_no_fly_options(cmd, a.no_fly, a.no_fly_boxes);
   cmd.footer("Planners and their options (-O KEY=VALUE):\n" + planner_help);
@@ -205,6 +206,7 @@ planners::MissionSpec build_spec(const MissionArgs& a, const world::HullMask& hu
   for (const auto& s : a.launch) p.launch_sites.push_back(parse_xy(s, "launch"));
   p.launch_transfer_s = a.launch_transfer;
   p.takeoff_time_s = a.takeoff_time;
+  apply_battery_args(a.battery, p);
 
   OptionMap scenario_options;
   auto set = [&](const char* key, const std::optional<std::string>& v) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "battery_options.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "mesh_options.hpp"
@@ -44,7 +45,8 @@ struct MissionArgs {
   std::optional<double> frame_spacing;       // metres between frames, for defects given by frame
   std::vector<std::string> launch;           // X,Y launch sites (none = the paper's model)
   double launch_transfer = world::MissionParams{}.launch_transfer_s;
-  std::optional<double> takeoff_time;        // seconds; default u_z
+  std::optional<double> takeoff_time;  // seconds; default u_z
+  BatteryArgs battery;                 // --endurance, --reserve, --swap-time
 };
 
 /// Adds --no-fly FILE and --no-fly-box X0,Y0,X1,Y1 (repeatable) to a command.

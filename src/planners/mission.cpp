@@ -1,12 +1,13 @@
 #include "hullinspect/planners/mission.hpp"
 
-#include <ctime>
 #include <chrono>
+#include <ctime>
 #include <optional>
 
 #include "hullinspect/partition/fallback.hpp"
 #include "hullinspect/sim/deconfliction.hpp"
 #include "hullinspect/sim/lower_bound.hpp"
+#include "hullinspect/sim/sortie_layer.hpp"
 
 namespace hullinspect::planners {
 
@@ -87,8 +88,11 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
     deconfliction.emplace(params.separation, params.uavs, hull.width(), hull.height(),
                           params.no_fly.get());
   }
+  std::optional<sim::SortieLayer> sorties;
+  if (sim.battery().limited) sorties.emplace(sim);
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
+    if (sorties) sorties->before_step(sim);
     t0 = Clock::now();
     planner.decide(sim.view(), actions);
     planner_seconds += seconds_since(t0);

@@ -21,6 +21,8 @@ UavCounters MissionResult::totals() const {
     total.steps_z1 += u.steps_z1;
     total.steps_z2 += u.steps_z2;
     total.steps_transit += u.steps_transit;
+    total.flight_steps += u.flight_steps;
+    total.swaps += u.swaps;
   }
   return total;
 }

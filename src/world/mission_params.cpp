@@ -10,6 +10,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/launch_sites.hpp"
 
 namespace hullinspect::world {
@@ -160,6 +161,7 @@ void validate(const MissionParams& p, const HullMask& hull) {
     }
   }
   validate_launch_sites(p, hull);
+  validate_battery(p);
   // Explicit starts that snap onto one hull cell: refused here, before any planning starts.
   if (!p.starts.empty()) {
     const auto snapped = start_cells(p, hull);

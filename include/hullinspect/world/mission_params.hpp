@@ -13,15 +13,15 @@
 namespace hullinspect::world {
 
 struct MissionParams {
-  int uavs = 4;                      ///< n, fleet size (>= 1, <= hull cells)
-  int s1 = 5;                        ///< footprint side at z = 1 (close-up), odd, cells
-  int s2 = 7;                        ///< footprint side at z = 2 (detection), odd, > s1, cells
-  double theta_deg = 90.0;           ///< camera aperture θ, degrees, in (0, 180)
-  double cell_size_m = 0.5;          ///< side of one cell in metres (for reports and exports)
-  double plane_speed_cells = 1.0;    ///< standoff change per step, cells per step (> 0)
-  int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
-  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
-  int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
+  int uavs = 4;                    ///< n, fleet size (>= 1, <= hull cells)
+  int s1 = 5;                      ///< footprint side at z = 1 (close-up), odd, cells
+  int s2 = 7;                      ///< footprint side at z = 2 (detection), odd, > s1, cells
+  double theta_deg = 90.0;         ///< camera aperture θ, degrees, in (0, 180)
+  double cell_size_m = 0.5;        ///< side of one cell in metres (for reports and exports)
+  double plane_speed_cells = 1.0;  ///< standoff change per step, cells per step (> 0)
+  int start_z = 2;                 ///< plane every UAV starts on (1 or 2)
+  std::vector<grid::Cell> starts;  ///< explicit start cells; empty = model.md §1 default spacing
+  int time_limit = 20000;          ///< steps after which an unfinished mission is "incomplete"
   /// Launch sites (docs/model.md, "Launch sites"): the UAVs start on the ground at a site and end
   /// the mission landed at it. Empty = the paper's model (start airborne at the start cells).
   std::vector<grid::Cell> launch_sites;
@@ -34,6 +34,11 @@ struct MissionParams {
   /// With D > 0, the deconfliction layer (sim/deconfliction.hpp) adjusts the planner's actions so
   /// that no conflict happens; false hands them to the simulator as they are (conflicts counted).
   bool deconflict = true;
+  /// Batteries (docs/model.md, "Batteries and sorties"): seconds of flight per battery; empty =
+  /// unlimited, the paper's model. Needs at least one launch site, where batteries are swapped.
+  std::optional<double> endurance_s;
+  std::optional<double> reserve_s;  ///< seconds left on landing; default 10 % of the endurance
+  double swap_time_s = 120;         ///< seconds on the ground at a site to swap a battery
   /// No-fly positions (1 = no UAV may be there, on either plane), the hull's size; null = none.
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
 
