@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "config_battery.hpp"
 #include "config_launch.hpp"
 #include "config_no_fly.hpp"
 #include "config_scenarios.hpp"
@@ -235,8 +236,8 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
   c.hull_hash =
       stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
-  if (const auto g = root["grid"]; c.hull->geometry() && g && g["cell_size"] &&
-                                   c.cell_size != c.hull->geometry()->cell_size) {
+  if (const auto g = root["grid"];
+      c.hull->geometry() && g && g["cell_size"] && c.cell_size != c.hull->geometry()->cell_size) {
     f.fail(g["cell_size"], "grid.cell_size",
            fmt::format("is {} but the hull's geometry has cells of {} m", c.cell_size,
                        c.hull->geometry()->cell_size));
@@ -360,7 +361,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "sweeps",        "s1",          "s2",        "theta",         "uavs",
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly",      "launch",        "separation"});
+                "frame-spacing", "no-fly",      "launch",    "separation",    "battery"});
   for (const char* key :
        {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
     remember_line(c, root, key);
@@ -383,6 +384,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   }
   if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
   detail::read_launch(f, root, c);
+  detail::read_battery(f, root, c);
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
   } else {
@@ -501,6 +503,10 @@ nlohmann::json config_json(const ExperimentConfig& c) {
     j["launch"] = {{"sites", sites}, {"transfer", c.launch_transfer}};
     if (c.takeoff_time) j["launch"]["takeoff_time"] = *c.takeoff_time;
   }
+  if (c.endurance) {  // only then, so that every other manifest keeps its bytes
+    j["battery"] = {{"endurance", *c.endurance}, {"swap_time", c.swap_time}};
+    if (c.reserve) j["battery"]["reserve"] = *c.reserve;
+  }
   j["curve"] = {{"step", c.curve.step}, {"end", c.curve.end}};
   return j;
 }
@@ -561,9 +567,16 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     c.time_limit = j.at("time_limit").get<int>();
     if (j.contains("launch")) {
       const auto& l = j.at("launch");
-      for (const auto& s : l.at("sites")) c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
+      for (const auto& s : l.at("sites"))
+        c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
       c.launch_transfer = l.at("transfer").get<double>();
       if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
+    }
+    if (j.contains("battery")) {
+      const auto& b = j.at("battery");
+      c.endurance = b.at("endurance").get<double>();
+      c.swap_time = b.at("swap_time").get<double>();
+      if (b.contains("reserve")) c.reserve = b.at("reserve").get<double>();
     }
     c.curve.step = j.at("curve").at("step").get<int>();
     c.curve.end = j.at("curve").at("end").get<int>();

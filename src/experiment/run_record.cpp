@@ -4,6 +4,7 @@
 
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_row_check.hpp"
+#include "hullinspect/world/battery.hpp"
 
 namespace hullinspect::experiment {
 
@@ -11,6 +12,11 @@ namespace {
 
 std::string optional_time(const std::optional<int>& t) {
   return t ? std::to_string(*t) : "";
+}
+
+// Seconds of a number of steps (world/battery.hpp converts), in their shortest form.
+std::string seconds_field(int steps) {
+  return fmt::format("{}", world::battery_seconds(steps));
 }
 
 template <class T>
@@ -73,7 +79,11 @@ std::vector<std::string> runs_header() {
           "partition_fallbacks",
           "separation",
           "separation_conflicts",
-          "min_separation"};
+          "min_separation",
+          "sorties",
+          "flight_s",
+          "battery_crashes",
+          "min_battery_s"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -170,7 +180,11 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
                             std::to_string(r.planner.partition_fallbacks),
                             std::to_string(plan.config().separation),
                             std::to_string(r.separation_conflicts),
-                            optional_time(r.min_separation)}) {
+                            optional_time(r.min_separation),
+                            std::to_string(r.sorties()),
+                            seconds_field(total.flight_steps),
+                            std::to_string(r.battery_crashes),
+                            r.min_battery() ? seconds_field(*r.min_battery()) : std::string()}) {
     fields.push_back(std::move(value));
   }
   record.runs = csv_line(fields);

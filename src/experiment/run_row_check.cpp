@@ -9,6 +9,7 @@
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_record.hpp"
+#include "hullinspect/world/battery.hpp"
 
 namespace hullinspect::experiment {
 
@@ -48,6 +49,16 @@ class Outcome {
   long long get(const std::string& name, long long max = kMaxStoredCount) const {
     return *parse(name, max);
   }
+  /// A field of seconds in [0, max]; an empty min_battery_s gives nothing.
+  std::optional<double> seconds(const std::string& name, double max) const {
+    const std::string& v = text(name);
+    if (v.empty() && name == "min_battery_s") return std::nullopt;
+    try {
+      return parse_real(v, 0, max);
+    } catch (const NumberError& e) {
+      throw Error(fmt::format("{} {}", name, e.what()));
+    }
+  }
 
  private:
   const std::vector<std::string>& fields_;
@@ -74,7 +85,7 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
        {"detections", "observations", "redundant_observations", "moves", "hovers", "plane_changes",
         "steps_z1", "steps_z2", "steps_transit", "tsp_solves", "tsp_unproven", "tsp_fallbacks",
         "replans", "assignments", "bound_T_c", "bound_T_m", "partition_fallbacks",
-       "separation_conflicts"}) {
+        "separation_conflicts"}) {
     (void)o.get(counter);
   }
   if (o.text("separation") != std::to_string(c.separation)) {
@@ -82,6 +93,32 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
                        escape_for_message(o.text("separation")), c.separation);
   }
   (void)o.parse("min_separation", kMaxStoredCount);
+  const long long sorties = o.get("sorties");
+  const auto flight = o.seconds("flight_s", 1e18);
+  const long long crashes = o.get("battery_crashes", uavs);
+  const auto least_battery = o.seconds("min_battery_s", c.endurance.value_or(0));
+  if (least_battery.has_value() != c.endurance.has_value()) {
+    return c.endurance
+               ? "min_battery_s is empty but this experiment's UAVs have batteries"
+               : fmt::format("min_battery_s is {} but this experiment's flight is unlimited",
+                             *least_battery);
+  }
+  if (crashes > o.get("failed_uavs", uavs)) {
+    return fmt::format("battery_crashes is {} but failed_uavs is only {} (a crash fails the UAV)",
+                       crashes, o.get("failed_uavs", uavs));
+  }
+  if (c.launch_sites.empty() && sorties != 0) {
+    return fmt::format(
+        "sorties is {} but this experiment's UAVs start in the air (no launch "
+        "site)",
+        sorties);
+  }
+  const double flight_limit =
+      static_cast<double>(uavs) * world::battery_seconds(1) * static_cast<double>(steps);
+  if (*flight > flight_limit) {
+    return fmt::format("flight_s is {} but {} UAVs × {} steps fly at most {} s", *flight, uavs,
+                       steps, flight_limit);
+  }
 
   if (complete != t_m.has_value()) {
     return complete ? "complete is 1 but T_m is empty (a complete mission has a T_m)"

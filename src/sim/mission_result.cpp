@@ -27,4 +27,18 @@ UavCounters MissionResult::totals() const {
   return total;
 }
 
+int MissionResult::sorties() const {
+  int n = 0;
+  for (const auto& u : uavs) n += static_cast<int>(u.sorties.size());
+  return n;
+}
+
+std::optional<int> MissionResult::min_battery() const {
+  std::optional<int> least;
+  for (const auto& u : uavs) {
+    if (u.min_battery >= 0 && (!least || u.min_battery < *least)) least = u.min_battery;
+  }
+  return least;
+}
+
 }  // namespace hullinspect::sim

@@ -43,7 +43,7 @@ int sortie_margin_steps(const MissionParams& p) {
   return 2 * p.plane_change_steps() + 1;
 }
 
-void validate_battery(const MissionParams& p) {
+void validate_battery(const MissionParams& p, const HullMask& hull) {
   check_seconds("swap-time", p.swap_time_s, true);
   if (p.reserve_s) check_seconds("reserve", *p.reserve_s, true);
   if (!p.endurance_s) {
@@ -61,6 +61,9 @@ void validate_battery(const MissionParams& p) {
     throw ParameterError("endurance",
                          "needs a launch site (--launch) where the UAVs land to swap batteries");
   }
+  const auto starts = start_cells(p, hull);
+  const auto reach = compute_reachability(hull, p.no_fly.get(), p.s1, p.s2, starts);
+  check_endurance_reaches(p, hull, reach, plan_launch_legs(p, reach, starts));
 }
 
 void check_endurance_reaches(const MissionParams& p, const HullMask& hull,

@@ -161,7 +161,6 @@ void validate(const MissionParams& p, const HullMask& hull) {
     }
   }
   validate_launch_sites(p, hull);
-  validate_battery(p);
   // Explicit starts that snap onto one hull cell: refused here, before any planning starts.
   if (!p.starts.empty()) {
     const auto snapped = start_cells(p, hull);
@@ -181,6 +180,7 @@ void validate(const MissionParams& p, const HullMask& hull) {
     }
   }
   validate_separation(p, hull);
+  validate_battery(p, hull);
 }
 
 std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull) {

@@ -18,6 +18,7 @@
 #include "hullinspect/world/failures.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/user_maps.hpp"
 
 namespace hullinspect::experiment {
@@ -67,7 +68,7 @@ struct ExperimentConfig {
   /// No-fly positions (null = none) and how the config stated them ({file, boxes-m, hash}).
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
   nlohmann::json no_fly_spec;
-  std::string prior_path, truth_path;   ///< the user's C′ and C ("prior:", "truth:"), resolved
+  std::string prior_path, truth_path;  ///< the user's C′ and C ("prior:", "truth:"), resolved
   /// The same as defects in ship coordinates ("prior-defects:", "truth-defects:"), resolved, and
   /// the frame spacing for defects placed by frame ("frame-spacing:").
   std::string prior_defects_path, truth_defects_path;
@@ -87,6 +88,10 @@ struct ExperimentConfig {
   std::vector<grid::Cell> launch_sites;
   double launch_transfer = 0;          ///< seconds each way beyond the grid
   std::optional<double> takeoff_time;  ///< seconds; empty = u_z
+  /// Batteries ("battery:", docs/model.md); no endurance = unlimited flight, the paper's model.
+  std::optional<double> endurance;  ///< seconds of flight per battery
+  std::optional<double> reserve;    ///< seconds; empty = 10 % of the endurance
+  double swap_time = world::MissionParams{}.swap_time_s;
   CurveGrid curve;
   /// Config line of each key and list item ("s1", "s2[1]", "uavs[0]", "time_limit"), so that an
   /// error found later (when cells are validated) can still name its line. 0 = not in the file.

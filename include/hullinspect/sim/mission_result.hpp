@@ -82,6 +82,10 @@ struct MissionResult {
   double c_percent(int t) const;  ///< c(t), 100 when there is no corrosion
   double m_percent(int t) const;  ///< m(t)
   UavCounters totals() const;
+  /// Take-offs of the whole fleet (0 without launch sites: the UAVs start in the air).
+  int sorties() const;
+  /// The least battery any UAV had left while airborne, in steps; empty with unlimited flight.
+  std::optional<int> min_battery() const;
 };
 
 }  // namespace hullinspect::sim

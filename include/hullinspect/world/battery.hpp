@@ -28,8 +28,9 @@ int sortie_margin_steps(const MissionParams& params);
 
 /// Throws ParameterError naming "endurance", "reserve" or "swap-time": a time that is not finite,
 /// negative (or zero for the endurance), a reserve or swap time without an endurance, a reserve
-/// not below the endurance, or an endurance without a launch site to swap batteries at.
-void validate_battery(const MissionParams& params);
+/// not below the endurance, an endurance without a launch site to swap batteries at, or one too
+/// short for the hull (check_endurance_reaches). Call after the launch sites are validated.
+void validate_battery(const MissionParams& params, const HullMask& hull);
 
 /// Throws ParameterError naming "endurance" when a full battery cannot fly from a UAV's launch
 /// site to the farthest flyable hull cell and back with the reserve and the margin left: the
