@@ -16,7 +16,7 @@ constexpr double kMaxSeconds = 1e7;
 void check_seconds(const char* name, double seconds, bool zero_allowed) {
   if (!std::isfinite(seconds) || seconds < 0.0 || (!zero_allowed && seconds == 0.0) ||
       seconds > kMaxSeconds) {
-    throw ParameterError(name, fmt::format("must be a number of seconds in {}0, {:g}] (got {})",
+    throw ParameterError(name, fmt::format("must be a number of seconds in {}0, {}] (got {})",
                                            zero_allowed ? "[" : "(", kMaxSeconds, seconds));
   }
 }
