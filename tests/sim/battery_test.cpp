@@ -12,35 +12,22 @@
 #include "hullinspect/sim/uav_rules.hpp"
 #include "hullinspect/world/battery.hpp"
 #include "support/printers.hpp"
+#include "support/strip_world.hpp"
 
 namespace hullinspect::sim {
 namespace {
 
 using grid::Cell;
 
-// A 20 × 5 grid whose hull is rows 1..3; one UAV starting at (5, 2), a launch site at (0, 0).
-struct Strip {
-  world::HullMask hull{make_mask(), "test"};
-  world::Instance instance;
-  world::MissionParams params;
+// The strip world with a launch site at (0, 0), a take-off of 1 s, 100 s per battery, a reserve
+// of 5 s and a swap of 4 s.
+struct Strip : testing::StripWorld {
   Strip() {
-    instance.truth = grid::Grid<std::int8_t>(20, 5, 0);
-    instance.prior = grid::Grid<std::int8_t>(20, 5, 0);
-    params.uavs = 1;
-    params.s1 = 1;
-    params.s2 = 3;
-    params.starts = {{5, 2}};
     params.launch_sites = {{0, 0}};
     params.takeoff_time_s = 1;
     params.endurance_s = 100;
     params.reserve_s = 5;
     params.swap_time_s = 4;
-  }
-  static grid::Grid<std::uint8_t> make_mask() {
-    grid::Grid<std::uint8_t> m(20, 5, 0);
-    for (int y = 1; y <= 3; ++y)
-      for (int x = 0; x < 20; ++x) m(x, y) = 1;
-    return m;
   }
 };
 
