@@ -2,7 +2,7 @@
 // map M at the replay time, the UAVs at their stand-off positions with their footprints, their
 // recent paths and the no-fly positions; orbit and zoom with three.js's OrbitControls. three.js
 // comes inlined in the page as the global THREE_VIEW (cmake/EmbedViewer.cmake), only for traces
-// whose hull was imported from a mesh (the trace's ship_frame).
+// whose hull was imported from a mesh (the trace's ship_frame: one side, or the unrolled hull).
 'use strict';
 
 (function (hv) {
@@ -14,34 +14,48 @@
   const LABEL_SIZE = [40, 26]; // a UAV's number, screen pixels
   const LABEL_LIFT = 0.6; // gap between a UAV and its label, in label heights
 
-  // Per cell of the grid: its 3D surface point, outward normal and the unit direction in which
-  // the UAVs stand off from it, in the ship frame (X stern → bow, Y to port, Z up), in metres.
-  // Everything the 3D view draws is placed from these points, so a grid whose cells carry their
-  // own 3D points (not one side plane) only needs another branch here. For a side-plane grid
-  // (SPEC §9): X = X0 + (x + ½)·cell, Z = Z0 + (y + ½)·cell, the surface at Y = Ys ∓ depth and the
-  // stand-off along ∓Y (− for starboard, + for port).
+  // Per cell of the grid: its 3D surface point, outward normal, the unit direction in which the
+  // UAVs stand off from it, and the unit directions of the grid's x (along) and y (up) on the
+  // surface, in the ship frame (X stern → bow, Y to port, Z up), in metres. Everything the 3D view
+  // draws is placed from these. For a side-plane grid (SPEC §9): X = X0 + (x + ½)·cell,
+  // Z = Z0 + (y + ½)·cell, the surface at Y = Ys ∓ depth and the stand-off along ∓Y (− for
+  // starboard, + for port), x along +X. An unrolled hull (side "both", docs/hulls.md) carries its
+  // surface points; the UAVs stand off along the normal and x runs along the horizontal tangent
+  // n × Z (toward the bow on port, away from it on starboard).
   function cellPoints3d(trace) {
     const W = trace.grid.width;
     const H = trace.grid.height;
     const cell = trace.grid.cell_size_m || 1;
     const frame = trace.ship_frame;
     const [x0, z0] = frame.origin;
+    const unrolled = frame.side === 'both';
     const sign = frame.side === 'port' ? 1 : -1;
     const point = new Float32Array(W * H * 3);
     const normal = new Float32Array(W * H * 3);
     const standoff = new Float32Array(W * H * 3);
+    const along = new Float32Array(W * H * 3);
+    const up = new Float32Array(W * H * 3);
     for (let y = 0; y < H; ++y) {
       for (let x = 0; x < W; ++x) {
         const i = y * W + x;
+        const n = frame.normal[y][x];
+        normal.set(n, 3 * i);
+        up.set([0, 0, 1], 3 * i);
+        if (unrolled) {
+          point.set(frame.surface[y][x], 3 * i);
+          standoff.set(n, 3 * i);
+          const h = Math.hypot(n[0], n[1]);
+          along.set(h > 1e-6 ? [n[1] / h, -n[0] / h, 0] : [1, 0, 0], 3 * i);
+          continue;
+        }
         point[3 * i] = x0 + (x + 0.5) * cell;
         point[3 * i + 1] = frame.side_plane_y + sign * frame.depth[y][x];
         point[3 * i + 2] = z0 + (y + 0.5) * cell;
-        const n = frame.normal[y][x];
-        normal.set(n, 3 * i);
         standoff.set([0, sign, 0], 3 * i);
+        along.set([1, 0, 0], 3 * i);
       }
     }
-    return {W, H, cell, point, normal, standoff};
+    return {W, H, cell, point, normal, standoff, along, up, unrolled};
   }
 
   // ζ_z in metres: the stand-off of plane z (SPEC §9), from the footprint and the camera aperture.
@@ -88,14 +102,15 @@
     // Corner (cx, cy) of the cell lattice (0 ≤ cx ≤ W, 0 ≤ cy ≤ H) on the surface: the mean of the
     // hull cells around it, shifted half a cell towards the corner, so neighbouring tiles meet.
     corner(cx, cy, out) {
-      const {W, H, cell, point} = this.geo;
+      const {W, H, cell, point, along, up} = this.geo;
       let n = 0;
       out[0] = out[1] = out[2] = 0;
       for (const [x, y] of [[cx - 1, cy - 1], [cx, cy - 1], [cx - 1, cy], [cx, cy]]) {
         if (x < 0 || y < 0 || x >= W || y >= H || !this.isHull[y * W + x]) continue;
-        out[0] += point[3 * (y * W + x)] + (cx - x - 0.5) * cell;
-        out[1] += point[3 * (y * W + x) + 1];
-        out[2] += point[3 * (y * W + x) + 2] + (cy - y - 0.5) * cell;
+        const i = 3 * (y * W + x);
+        for (let d = 0; d < 3; ++d) {
+          out[d] += point[i + d] + ((cx - x - 0.5) * along[i + d] + (cy - y - 0.5) * up[i + d]) * cell;
+        }
         ++n;
       }
       out[0] /= n; out[1] /= n; out[2] /= n;
@@ -213,20 +228,22 @@
 
     // A cell-sized square tile at cell i, `lift` metres out from its surface, into pos[at...].
     tile(i, lift, pos, at) {
-      const {cell} = this.geo;
+      const {cell, along, up} = this.geo;
       const p = new Float32Array(3);
       this.lifted(i, lift, p);
       const h = cell / 2;
       const corners = [[-h, -h], [h, -h], [h, h], [-h, h]];
       [0, 1, 2, 0, 2, 3].forEach((v, j) => {
-        pos[at + j * 3] = p[0] + corners[v][0];
-        pos[at + j * 3 + 1] = p[1];
-        pos[at + j * 3 + 2] = p[2] + corners[v][1];
+        for (let d = 0; d < 3; ++d) {
+          pos[at + j * 3 + d] = p[d] + corners[v][0] * along[3 * i + d] + corners[v][1] * up[3 * i + d];
+        }
       });
     }
 
     // The camera looks at the inspected side from outside and a little from the bow and above,
-    // as far as the whole hull needs to fill the view's width (called again on resizing).
+    // as far as the whole hull needs to fill the view's width (called again on resizing); an
+    // unrolled hull is seen from starboard, ahead and higher up, so that the bow and the deck
+    // line of the far side show too.
     frameCamera() {
       const T = THREE_VIEW;
       this.center = this.box.getCenter(new T.Vector3());
@@ -235,7 +252,8 @@
       const halfWidth = Math.atan(Math.tan((this.camera.fov * Math.PI) / 360) * this.camera.aspect);
       const d = Math.max((0.66 * size.x) / Math.tan(halfWidth), (0.8 * size.z) /
                          Math.tan((this.camera.fov * Math.PI) / 360));
-      const dir = new T.Vector3(0.2, sign, 0.25).normalize();
+      const dir = this.geo.unrolled ? new T.Vector3(0.45, -1, 0.7).normalize()
+                                    : new T.Vector3(0.2, sign, 0.25).normalize();
       this.camera.position.copy(this.center).addScaledVector(dir, d);
       this.camera.lookAt(this.center);
     }

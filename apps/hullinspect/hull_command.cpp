@@ -11,7 +11,7 @@
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/output_set.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
-#include "mesh_options.hpp"
+#include "mission_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -20,7 +20,7 @@ namespace {
 struct HullImportArgs {
   std::string mesh;
   std::string out;
-  MeshArgs options;
+  MissionArgs options;  // only its mesh options are registered
 };
 
 std::string output_path(const std::string& out) {
@@ -33,13 +33,13 @@ int import(const HullImportArgs& args) {
   io::OutputSet outputs;
   outputs.add_output(out, "out");
   outputs.check();
-  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
+  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options.mesh);
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
   outputs.write(out, world::to_hull_json(hull));
   if (g.unrolled()) {
     std::cout << fmt::format("{}: {} facets, unrolled (port, bow, starboard{})\n", args.mesh,
-                             imported.facets, args.options.include.empty() ? "" : ", transom");
+                             imported.facets, args.options.mesh.include.empty() ? "" : ", transom");
   } else {
     std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
                              imported.facing_facets, world::to_string(g.side));
@@ -60,12 +60,11 @@ int import(const HullImportArgs& args) {
         "  columns from {:.3f} m (port) to {:.3f} m (starboard) around the "
         "bow; Z0 = {:.3f} m\n",
         metres(g.x0), metres(g.x0 + hull.width() * g.cell_size), metres(g.z0));
-    std::cout << fmt::format("  wrote {}\n", out);
-    return 0;
+  } else {
+    std::cout << fmt::format(
+        "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
+        metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));
   }
-  std::cout << fmt::format(
-      "  origin X0 = {:.3f} m, Z0 = {:.3f} m; side plane Y = {:.3f} m; depth up to {:.3f} m\n",
-      metres(g.x0), metres(g.z0), metres(g.side_plane_y), metres(max_depth));
   std::cout << fmt::format("  wrote {}\n", out);
   check_stdout();  // a command whose printed result is lost leaves no file
   outputs.commit();

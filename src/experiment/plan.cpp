@@ -24,6 +24,14 @@ std::string launch_key(const ExperimentConfig& c) {
   return key;
 }
 
+// Likewise only configs with a speed: every other run keeps its id.
+std::string speed_key(const ExperimentConfig& c) {
+  std::string key;
+  if (c.speed) key += fmt::format("|speed={}", *c.speed);
+  if (c.climb_speed) key += fmt::format("|climb_speed={}", *c.climb_speed);
+  return key;
+}
+
 // Doubles are written in their shortest round-trip form, so the string (and the id) only changes
 // when a value does.
 std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
@@ -50,7 +58,9 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
          (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
          (s.no_fly_spec.is_null() ? std::string()
                                   : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
-         launch_key(c) +
+         // The user's maps by content, as no-fly zones: only configs with them say so.
+         (c.prior_hash.empty() ? std::string() : "|prior=" + c.prior_hash) +
+         (c.truth_hash.empty() ? std::string() : "|truth=" + c.truth_hash) + launch_key(c) + speed_key(c) +
          (c.separation == 0 ? std::string() : fmt::format("|separation={}", c.separation));
 }
 
@@ -124,6 +134,8 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.endurance_s = c.endurance;
   spec.params.reserve_s = c.reserve;
   spec.params.swap_time_s = c.swap_time;
+  spec.params.speed_m_s = c.speed;
+  spec.params.climb_speed_m_s = c.climb_speed;
   spec.params.separation = c.separation;
   const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;

@@ -40,7 +40,11 @@ void add_no_fly_boxes(pugi::xml_node folder, const ExportPlan& plan, const GeoRe
     // A run of no-fly cells along one row becomes one box.
     const grid::Cell first = *it;
     grid::Cell last = first;
-    while (++it != cells.end() && it->y == last.y && it->x == last.x + 1) last = *it;
+    // (On an unrolled hull each cell is a box of its own: a row curves around the ship.)
+    while (++it != cells.end() && !plan.frame.unrolled() && it->y == last.y &&
+           it->x == last.x + 1) {
+      last = *it;
+    }
     const auto a1 = plan.frame.pose(first, 1), a2 = plan.frame.pose(first, 2);
     const auto b1 = plan.frame.pose(last, 1), b2 = plan.frame.pose(last, 2);
     const double x0 = a1.x - half, x1 = b1.x + half;

@@ -33,12 +33,29 @@ double ShipFrame::depth_m(grid::Cell cell) const {
 
 ShipPose ShipFrame::pose(grid::Cell cell, int z) const {
   ShipPose p;
-  p.x = spec_.x0 + (cell.x + 0.5) * spec_.cell_m;
-  p.z = spec_.z0 + (cell.y + 0.5) * spec_.cell_m;
-  p.y = spec_.ys + sign_ * (standoff_m(z) + depth_m(cell));
   // The camera looks along −normal; a flat side's normal points at the viewer (0, ±1, 0).
   double nx = 0;
   double ny = sign_;
+  if (unrolled()) {
+    if (!spec_.surface.contains(cell) || !spec_.normal.contains(cell)) {
+      throw InputError(spec_.source, 0,
+                       fmt::format("cell ({}, {}) is outside the unrolled hull's {} × {} grid",
+                                   cell.x, cell.y, spec_.surface.width(), spec_.surface.height()));
+    }
+    // The stand-off is along the normal; a face seen from above or below (n horizontal part 0)
+    // keeps the yaw toward the centre plane.
+    const auto& s = spec_.surface[cell];
+    const auto& n = spec_.normal[cell];
+    const double d = standoff_m(z);
+    p.x = s[0] + d * n[0];
+    p.y = s[1] + d * n[1];
+    p.z = s[2] + d * n[2];
+    ny = s[1] >= spec_.ys ? 1.0 : -1.0;
+  } else {
+    p.x = spec_.x0 + (cell.x + 0.5) * spec_.cell_m;
+    p.z = spec_.z0 + (cell.y + 0.5) * spec_.cell_m;
+    p.y = spec_.ys + sign_ * (standoff_m(z) + depth_m(cell));
+  }
   if (spec_.normal.size() != 0 && spec_.normal.contains(cell)) {
     const auto& n = spec_.normal[cell];
     if (std::hypot(n[0], n[1]) > 1e-9) {  // a horizontal face (deck, keel) keeps the side's yaw
@@ -59,6 +76,17 @@ ShipPose ShipFrame::pose(grid::Cell cell, int z) const {
 }
 
 bool ShipFrame::same_surface(grid::Cell a, grid::Cell b) const {
+  if (unrolled()) {
+    // One plane: the same normal and the same offset n·S (a straight leg between two points at
+    // one stand-off from a plane stays at that stand-off). The surface points are kept to 0.1 mm.
+    if (!spec_.normal.contains(a) || !spec_.normal.contains(b)) return false;
+    const auto& n = spec_.normal[a];
+    if (n != spec_.normal[b]) return false;
+    const auto& sa = spec_.surface[a];
+    const auto& sb = spec_.surface[b];
+    const double offset = n[0] * (sa[0] - sb[0]) + n[1] * (sa[1] - sb[1]) + n[2] * (sa[2] - sb[2]);
+    return std::abs(offset) < 1e-3;
+  }
   if (depth_m(a) != depth_m(b)) return false;
   if (spec_.normal.size() == 0) return true;
   const bool ia = spec_.normal.contains(a);
@@ -85,6 +113,32 @@ int ShipFrame::plane_at(grid::Cell cell, double y, double tolerance_m) const {
   return best;
 }
 
+ShipFrame::Located ShipFrame::locate(double x, double y, double z, double tolerance_m) const {
+  Located found;
+  if (!unrolled()) {
+    found.cell = cell_at(x, z);
+    found.plane = plane_at(found.cell, y, tolerance_m);
+    return found;
+  }
+  // Every cell's two poses: the nearest one within the tolerance.
+  double best = tolerance_m;
+  for (int cy = 0; cy < spec_.surface.height(); ++cy) {
+    for (int cx = 0; cx < spec_.surface.width(); ++cx) {
+      const auto& s = spec_.surface(cx, cy);
+      const auto& n = spec_.normal(cx, cy);
+      for (int plane : {1, 2}) {
+        const double d = standoff_m(plane);
+        const double e = std::hypot(s[0] + d * n[0] - x, s[1] + d * n[1] - y, s[2] + d * n[2] - z);
+        if (e <= best) {
+          best = e;
+          found = {{cx, cy}, plane};
+        }
+      }
+    }
+  }
+  return found;
+}
+
 ShipFrameSpec ship_frame_spec(const nlohmann::json& trace, const std::string& source) {
   ShipFrameSpec s;
   s.source = source;
@@ -103,20 +157,28 @@ ShipFrameSpec ship_frame_spec(const nlohmann::json& trace, const std::string& so
     s.x0 = f->at("origin").at(0).get<double>();
     s.z0 = f->at("origin").at(1).get<double>();
     s.ys = f->at("side_plane_y").get<double>();
-    s.side = f->at("side") == "port" ? HullSide::kPort : HullSide::kStarboard;
+    const auto& side = f->at("side");
+    s.side = side == "port" ? HullSide::kPort
+                            : (side == "both" ? HullSide::kBoth : HullSide::kStarboard);
     const int width = grid.at("width").get<int>();
     const int height = grid.at("height").get<int>();
+    const auto vector = [](const nlohmann::json& v) -> std::array<double, 3> {
+      return {v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>()};
+    };
     s.depth = grid::Grid<double>(width, height, 0.0);
     s.normal = grid::Grid<std::array<double, 3>>(width, height);
-    const auto& depth = f->at("depth");
+    if (s.side == HullSide::kBoth) s.surface = grid::Grid<std::array<double, 3>>(width, height);
     const auto& normal = f->at("normal");
     for (int y = 0; y < height; ++y) {
       for (int x = 0; x < width; ++x) {
         const auto ux = static_cast<std::size_t>(x);
         const auto uy = static_cast<std::size_t>(y);
-        s.depth(x, y) = depth.at(uy).at(ux).get<double>();
-        const auto& n = normal.at(uy).at(ux);
-        s.normal(x, y) = {n.at(0).get<double>(), n.at(1).get<double>(), n.at(2).get<double>()};
+        s.normal(x, y) = vector(normal.at(uy).at(ux));
+        if (s.side == HullSide::kBoth) {
+          s.surface(x, y) = vector(f->at("surface").at(uy).at(ux));
+        } else {
+          s.depth(x, y) = f->at("depth").at(uy).at(ux).get<double>();
+        }
       }
     }
   }

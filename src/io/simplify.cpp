@@ -145,6 +145,13 @@ std::optional<grid::Cell> first_cell_lost(const ExportPlan& plan,
 }
 
 void simplify_sortie(const ExportPlan& plan, Sortie& sortie, double tolerance_m) {
+  // The coverage check below measures footprints against one side plane; an unrolled hull's
+  // waypoints face every direction around the ship.
+  if (plan.frame.unrolled()) {
+    throw ParameterError("simplify",
+                         "is not available for an unrolled hull (--sides both): its legs follow a "
+                         "curved surface that the coverage check cannot measure");
+  }
   const auto all = std::span<const ExportWaypoint>(sortie.waypoints);
   const auto in = static_cast<std::size_t>(sortie.transit_in);
   const auto out = static_cast<std::size_t>(sortie.transit_out);

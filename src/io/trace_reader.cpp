@@ -231,7 +231,8 @@ void check_motion(const TraceChecker& check, const json& frames, int plane_chang
 }
 
 // The optional `ship_frame` of a hull imported from a mesh: origin [X0, Z0], side_plane_y, side,
-// and `height` rows of `width` depths (metres ≥ 0) and unit normals [nx, ny, nz].
+// and `height` rows of `width` depths (metres ≥ 0) and unit normals [nx, ny, nz]; on an unrolled
+// hull (side "both") surface points [X, Y, Z] instead of depths.
 void check_ship_frame(const TraceChecker& check, const json& frame, int width, int height) {
   check.object(frame, "ship_frame");
   const auto finite = [&](const json& v, const std::string& where) {
@@ -247,8 +248,8 @@ void check_ship_frame(const TraceChecker& check, const json& frame, int width, i
   finite(origin[1], "ship_frame.origin[1]");
   finite(check.field(frame, "ship_frame", "side_plane_y"), "ship_frame.side_plane_y");
   const auto& side = check.field(frame, "ship_frame", "side");
-  if (side != "port" && side != "starboard") {
-    check.fail("ship_frame.side", "expected \"port\" or \"starboard\"");
+  if (side != "port" && side != "starboard" && side != "both") {
+    check.fail("ship_frame.side", "expected \"port\", \"starboard\" or \"both\"");
   }
   // Checks `name` as rows of cells and each cell with `cell`.
   const auto grid_rows = [&](const char* name, auto cell) {
@@ -268,9 +269,17 @@ void check_ship_frame(const TraceChecker& check, const json& frame, int width, i
       for (std::size_t x = 0; x < row.size(); ++x) cell(row[x], fmt::format("{}[{}]", at, x));
     }
   };
-  grid_rows("depth", [&](const json& v, const std::string& at) {
-    if (finite(v, at) < 0) check.fail(at, "expected metres >= 0");
-  });
+  if (side == "both") {
+    // An unrolled hull: per cell the surface point [X, Y, Z] a UAV there stands off from.
+    grid_rows("surface", [&](const json& v, const std::string& at) {
+      if (!v.is_array() || v.size() != 3) check.fail(at, "expected a point [X, Y, Z] in metres");
+      for (const json& c : v) finite(c, at);
+    });
+  } else {
+    grid_rows("depth", [&](const json& v, const std::string& at) {
+      if (finite(v, at) < 0) check.fail(at, "expected metres >= 0");
+    });
+  }
   grid_rows("normal", [&](const json& v, const std::string& at) {
     if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
         !v[2].is_number()) {
@@ -318,6 +327,11 @@ void validate_trace(const json& trace, const std::string& source) {
   }
   const auto plane_change_steps = static_cast<int>(check.integer(
       check.field(trace, "", "plane_change_steps"), "plane_change_steps", 1, 1 << 20));
+  if (auto step = trace.find("step_seconds"); step != trace.end()) {
+    if (!step->is_number() || !(step->get<double>() > 0 && step->get<double>() <= 1e9)) {
+      check.fail("step_seconds", "expected seconds in (0, 1e9]");
+    }
+  }
   const auto& footprint = check.array(check.field(trace, "", "footprint"), "footprint");
   if (footprint.size() != 2) check.fail("footprint", "expected [s1, s2]");
   const auto s1 = check.integer(footprint[0], "footprint[0]", 1, std::max(width, height) * 2 + 1);
@@ -350,9 +364,8 @@ void validate_trace(const json& trace, const std::string& source) {
   for (std::size_t i = 0; i < frames.size(); ++i) {
     check_frame(check, frames[i], i, width, height, u0.size(), layers_seen);
   }
-  const bool away_unrecorded =
-      trace.contains("parameters") && trace["parameters"].is_object() &&
-      trace["parameters"].contains("launch");
+  const bool away_unrecorded = trace.contains("parameters") && trace["parameters"].is_object() &&
+                               trace["parameters"].contains("launch");
   check_motion(check, frames, plane_change_steps,
                trace.contains("no_fly") ? &trace["no_fly"] : nullptr, away_unrecorded);
 

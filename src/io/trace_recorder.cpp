@@ -6,6 +6,7 @@
 
 #include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/version.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::io {
 
@@ -34,26 +35,36 @@ double rounded(double v, double scale) {
 }
 
 // Where a hull imported from a mesh sits in the ship frame (docs/trace-format.md `ship_frame`):
-// the grid's origin, the side plane, and per cell the surface's depth and outward normal.
+// the grid's origin, the side plane, and per cell the surface's depth and outward normal. An
+// unrolled hull has no side plane: per grid position the surface point a UAV there stands off
+// from, and its normal, replace the depth.
 json ship_frame(const world::HullGeometry& g) {
-  json depth = json::array();
+  const bool unrolled = g.unrolled();
+  const world::StandoffSurface standoff = world::standoff_surface(g);  // empty for one side
+  json placement = json::array();                                      // depth or surface rows
   json normal = json::array();
   for (int y = 0; y < g.height(); ++y) {
-    json d = json::array();
+    json p = json::array();
     json n = json::array();
     for (int x = 0; x < g.width(); ++x) {
-      d.push_back(rounded(g.depth(x, y), 1e4));
-      const world::Normal v = g.normal(x, y);
+      if (unrolled) {
+        const world::Point3 s = standoff.point(x, y);
+        p.push_back({rounded(s.x, 1e4), rounded(s.y, 1e4), rounded(s.z, 1e4)});
+      } else {
+        p.push_back(rounded(g.depth(x, y), 1e4));
+      }
+      const world::Normal v = unrolled ? standoff.normal(x, y) : g.normal(x, y);
       n.push_back({rounded(v.x, 1e6), rounded(v.y, 1e6), rounded(v.z, 1e6)});
     }
-    depth.push_back(std::move(d));
+    placement.push_back(std::move(p));
     normal.push_back(std::move(n));
   }
-  return {{"origin", {g.x0, g.z0}},
-          {"side_plane_y", g.side_plane_y},
-          {"side", world::to_string(g.side)},
-          {"depth", std::move(depth)},
-          {"normal", std::move(normal)}};
+  json frame = {{"origin", {g.x0, g.z0}},
+                {"side_plane_y", g.side_plane_y},
+                {"side", world::to_string(g.side)},
+                {"normal", std::move(normal)}};
+  frame[unrolled ? "surface" : "depth"] = std::move(placement);
+  return frame;
 }
 
 char matrix_symbol(std::int8_t v) {
@@ -152,13 +163,17 @@ void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner&
                     {"height", hull.height()},
                     {"cell_size_m", sim.params().cell_size_m}};
   trace_["plane_change_steps"] = sim.plane_change_steps();
+  // A step's seconds with --speed (docs/trace-format.md); absent: one second, the paper's model.
+  if (sim.params().speed_m_s) trace_["step_seconds"] = sim.params().step_seconds();
   trace_["footprint"] = {sim.params().s1, sim.params().s2};
   // The aperture places the planes in metres (stand-off ζ_z, docs/export.md).
   trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};
   // A hull from a mesh: its surface stands out from the side plane by depth(x, y), which exports
   // add to the stand-off (docs/model.md "Frames and exports"). Absent for a plain mask.
-  // An unrolled hull has no single side plane: its trace stays in grid coordinates.
-  if (const auto* g = hull.geometry(); g && !g->unrolled()) trace_["ship_frame"] = ship_frame(*g);
+  // An unrolled hull has no single side plane: its frame carries the surface points instead.
+  if (const auto* g = hull.geometry()) {
+    trace_["ship_frame"] = ship_frame(*g);
+  }
   trace_["truth"] = rows(instance_.truth, matrix_symbol);
   trace_["prior"] = rows(instance_.prior, matrix_symbol);
   if (const auto* p = planner.partition()) {

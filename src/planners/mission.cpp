@@ -52,8 +52,18 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
                                const world::MissionParams& params, Planner& planner,
                                const MissionOptions& options) {
   world::validate(params, hull);
-  sim::Simulator sim(hull, instance, params);
   world::validate(options.failures, params.uavs);
+  return run_validated_mission(hull, instance, params, planner, options);
+}
+
+sim::MissionResult run_validated_mission(const world::HullMask& hull,
+                                         const world::Instance& instance,
+                                         const world::MissionParams& params, Planner& planner,
+                                         const MissionOptions& options) {
+  // The start cells, computed once: the simulator places the UAVs on them, the planner is told
+  // them and the lower bound measures from them.
+  const auto starts = world::start_cells(params, hull);
+  sim::Simulator sim(hull, instance, params, starts);
   if (!options.failures.empty()) {
     const auto times =
         world::failure_times(options.failures, params.uavs, instance.seed, params.time_limit);
@@ -64,7 +74,6 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
   }
 
   DirectPartitionSource direct;
-  const auto starts = world::start_cells(params, hull);
   grid::DistanceService distances = world::make_distance_service(sim.reachability());
   PlannerContext context{hull,
                          params,
@@ -109,7 +118,7 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
   }
   sim::MissionResult result = sim.result();
   result.stopped_idle = stopped_idle;
-  const sim::LowerBound bound = sim::lower_bound(hull, instance.truth, params);
+  const sim::LowerBound bound = sim::lower_bound(hull, instance.truth, params, starts);
   result.bound_t_c = bound.t_c;
   result.bound_t_m = bound.t_m;
   result.planner_seconds = planner_seconds;

@@ -35,13 +35,17 @@ long long transit_steps(long long d, int n, int uz, int start_z) {
 
 LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
                        const world::MissionParams& params) {
-  const auto starts = world::start_cells(params, hull);
+  return lower_bound(hull, truth, params, world::start_cells(params, hull));
+}
+
+LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
+                       const world::MissionParams& params, std::span<const grid::Cell> starts) {
   const int n = params.uavs;
   const int s1 = params.s1;
   const int s2 = params.s2;
   const int uz = params.plane_change_steps();
-  const int h1 = (s1 - 1) / 2;
-  const int h2 = (s2 - 1) / 2;
+  const int h1 = params.half_side(1);
+  const int h2 = params.half_side(2);
 
   // With launch sites a UAV reaches its start cell only after its outbound leg, and the last
   // landing comes at least a descent and a transfer after the hull is complete.

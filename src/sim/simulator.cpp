@@ -12,9 +12,19 @@ namespace hullinspect::sim {
 
 Simulator::Simulator(const world::HullMask& hull, const world::Instance& instance,
                      const world::MissionParams& params)
-    : hull_(hull), truth_(instance.truth), params_(params), uz_(params.plane_change_steps()) {
+    : Simulator(hull, instance, params, world::start_cells(params, hull)) {}
+
+Simulator::Simulator(const world::HullMask& hull, const world::Instance& instance,
+                     const world::MissionParams& params, std::span<const grid::Cell> starts)
+    : hull_(hull),
+      truth_(instance.truth),
+      params_(params),
+      starts_(starts.begin(), starts.end()),
+      uz_(params.plane_change_steps()) {
   const int n = params.uavs;
-  const auto starts = world::start_cells(params, hull);
+  if (starts.size() != static_cast<std::size_t>(n)) {
+    throw LogicError(fmt::format("{} start cells for {}", starts.size(), plural(n, "UAV")));
+  }
   for (const auto& c : starts) {
     if (no_fly(c)) {
       throw LogicError(fmt::format("a UAV starts on the no-fly position ({}, {})", c.x, c.y));
@@ -347,7 +357,7 @@ void Simulator::sense_all() {
 
 void Simulator::sense(int uav) {
   const UavState& u = uavs_[static_cast<std::size_t>(uav)];
-  const int half = (params_.footprint(u.z) - 1) / 2;
+  const int half = params_.half_side(u.z);
   const int x0 = std::max(0, u.pos.x - half);
   const int x1 = std::min(map_.width() - 1, u.pos.x + half);
   const int y0 = std::max(0, u.pos.y - half);

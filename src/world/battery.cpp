@@ -27,16 +27,16 @@ BatterySteps battery_steps(const MissionParams& p) {
   BatterySteps b;
   if (!p.endurance_s) return b;
   b.limited = true;
-  // A step lasts one second (world::seconds_to_steps). The endurance rounds down (a battery never
-  // flies longer than it is rated), the reserve and the swap round up.
-  b.endurance = static_cast<int>(std::floor(*p.endurance_s + 1e-9));
-  b.reserve = seconds_to_steps(p.reserve_s ? *p.reserve_s : 0.1 * *p.endurance_s);
-  b.swap = seconds_to_steps(p.swap_time_s);
+  // A step lasts p.step_seconds(). The endurance rounds down (a battery never flies longer than
+  // it is rated), the reserve and the swap round up.
+  b.endurance = static_cast<int>(std::floor(*p.endurance_s / p.step_seconds() + 1e-9));
+  b.reserve = p.steps_for_seconds(p.reserve_s ? *p.reserve_s : 0.1 * *p.endurance_s);
+  b.swap = p.steps_for_seconds(p.swap_time_s);
   return b;
 }
 
-double battery_seconds(int steps) {
-  return static_cast<double>(steps);
+double battery_seconds(const MissionParams& params, int steps) {
+  return params.seconds(steps);
 }
 
 int sortie_margin_steps(const MissionParams& p) {
@@ -99,8 +99,8 @@ void check_endurance_reaches(const MissionParams& p, const HullMask& hull,
                   "and come back: that needs at least {} s (the flight both ways down to plane 1, "
                   "a reserve of "
                   "{} s and a margin of {} s)",
-                  battery_seconds(b.endurance), cell.x, cell.y, s.x, s.y, battery_seconds(need),
-                  battery_seconds(b.reserve), battery_seconds(sortie_margin_steps(p) + 1)));
+                  battery_seconds(p, b.endurance), cell.x, cell.y, s.x, s.y, battery_seconds(p, need),
+                  battery_seconds(p, b.reserve), battery_seconds(p, sortie_margin_steps(p) + 1)));
 }
 
 }  // namespace hullinspect::world

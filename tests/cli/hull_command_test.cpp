@@ -18,6 +18,23 @@ void write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
+// `run` on the imported file and on the mesh itself (with `mesh_options`) flies the same mission.
+void expect_same_mission(const std::string& hull_json, const std::string& mesh,
+                         const std::vector<std::string>& mesh_options,
+                         const std::vector<std::string>& mission) {
+  auto from_json = mission, from_mesh = mission;
+  from_json.insert(from_json.begin(), {"run", "--hull", hull_json});
+  from_mesh.insert(from_mesh.begin(), mesh_options.begin(), mesh_options.end());
+  from_mesh.insert(from_mesh.begin(), {"run", "--hull", mesh});
+  const auto a = run_cli(from_json), b = run_cli(from_mesh);
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  ja.erase("planner_seconds");
+  jb.erase("planner_seconds");
+  EXPECT_EQ(ja, jb);
+}
+
 TEST(HullImport, WritesAHullThatRunAccepts) {
   const auto dir = make_temp_dir("hull-import");
   const std::string stl = wigley_stl(WigleyHull{}).string();
@@ -35,18 +52,26 @@ TEST(HullImport, WritesAHullThatRunAccepts) {
   EXPECT_EQ(json["format"], "hullinspect-hull");
   EXPECT_EQ(json["width"], 200);
   // The imported hull and the mesh itself run the same mission.
-  const std::vector<std::string> mission = {"--uavs", "2", "--s2", "9", "--seed", "3", "--json"};
-  auto from_json = mission, from_mesh = mission;
-  from_json.insert(from_json.begin(), {"run", "--hull", dir + "/wigley.json"});
-  from_mesh.insert(from_mesh.begin(), {"run", "--hull", stl});
-  const auto a = run_cli(from_json), b = run_cli(from_mesh);
-  ASSERT_EQ(a.status, 0) << a.err;
-  ASSERT_EQ(b.status, 0) << b.err;
-  auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
-  ja.erase("planner_seconds");
-  jb.erase("planner_seconds");
-  EXPECT_EQ(ja, jb);
-  EXPECT_EQ(ja["hull_cells"], 3200);
+  expect_same_mission(dir + "/wigley.json", stl, {},
+                      {"--uavs", "2", "--s2", "9", "--seed", "3", "--json"});
+  const auto run = run_cli({"run", "--hull", dir + "/wigley.json", "--uavs", "2", "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(nlohmann::json::parse(run.out)["hull_cells"], 3200);
+  fs::remove_all(dir);
+}
+
+// The unrolled hull (--sides both) is written too, and runs the mission the mesh runs.
+TEST(HullImport, WritesAnUnrolledHullThatRunAccepts) {
+  const auto dir = make_temp_dir("hull-import-both");
+  const std::string stl = wigley_stl(WigleyHull{}).string();
+  const auto r = run_cli({"hull", "import", stl, "--sides", "both", "--out", dir + "/both"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.out.ends_with("  wrote " + dir + "/both.json\n")) << r.out;
+  ASSERT_TRUE(fs::exists(dir + "/both.json"));
+  const auto json = nlohmann::json::parse(std::ifstream(dir + "/both.json"));
+  EXPECT_EQ(json["side"], "both");
+  expect_same_mission(dir + "/both.json", stl, {"--sides", "both"},
+                      {"--uavs", "3", "--seed", "2", "--json"});
   fs::remove_all(dir);
 }
 

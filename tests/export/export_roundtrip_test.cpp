@@ -1,7 +1,8 @@
 // Every export read back: the waypoints, turned back into grid cells, reproduce the trace's
 // positions at every waypoint and along every leg, agree with it on T_m, and the geo-referenced
-// formats come back to the ship frame within a millimetre (docs/export.md), on plain masks and on a
-// hull imported from a mesh (whose waypoints stand off from the surface at each cell).
+// formats come back to the ship frame within a millimetre (docs/export.md), on plain masks, on a
+// hull imported from a mesh (whose waypoints stand off from the surface at each cell) and on an
+// unrolled hull (both sides in one grid).
 
 #include <gtest/gtest.h>
 #include "source_dir.hpp"
@@ -111,14 +112,15 @@ TEST_P(ExportRoundTrip, EveryFormatReproducesTheTrace) {
       const std::string what = format + " uav" + std::to_string(k);
       std::vector<CellWaypoint> cells;
       const auto from_ship = [&](double t, double x, double y, double z) {
-        const auto c = frame.cell_at(x, z);
-        // The position is the cell's centre to the file's precision (0.1 mm).
-        const auto centre = frame.pose(c, 1);
-        EXPECT_NEAR(x, centre.x, 1e-3) << what;
-        EXPECT_NEAR(z, centre.z, 1e-3) << what;
-        const int plane = frame.plane_at(c, y, 1e-3);
-        EXPECT_NE(plane, 0) << what << ": y = " << y << " is on neither plane";
-        cells.push_back({t, c, plane});
+        // The position is a cell's pose on a plane to the file's precision (0.1 mm).
+        const auto found = frame.locate(x, y, z, 1e-3);
+        EXPECT_NE(found.plane, 0) << what << ": (" << x << ", " << y << ", " << z
+                                  << ") is no cell's pose";
+        if (found.plane != 0) {
+          const auto pose = frame.pose(found.cell, found.plane);
+          EXPECT_LT(std::hypot(x - pose.x, y - pose.y, z - pose.z), 1e-3) << what;
+        }
+        cells.push_back({t, found.cell, found.plane});
       };
       if (format == "csv" || format == "path") {
         const auto name =
@@ -166,7 +168,7 @@ TEST_P(ExportRoundTrip, EveryFormatReproducesTheTrace) {
           double x = 0, y = 0, z = 0;
           geo.from_wgs84({w.geo.lat, w.geo.lon, plan.home.alt + w.geo.alt}, x, y, z);
           const double flight = i > 0 ? std::hypot(x - px, y - py, z - pz) / speed : 0.0;
-          const grid::Cell c = frame.cell_at(x, z);
+          const grid::Cell c = frame.locate(x, y, z, 1e-3).cell;
           const int moved =
               i > 0 ? std::abs(c.x - cells.back().cell.x) + std::abs(c.y - cells.back().cell.y) : 0;
           if (moved > 0) {
@@ -209,7 +211,11 @@ INSTANTIATE_TEST_SUITE_P(
                                  "combined", "--seed", "5"},
         // A mesh hull: every waypoint stands off from the surface at its cell.
         std::vector<std::string>{"-a", "part-tsp", "-n", "3", "--hull", "@wigley", "--cell-size",
-                                 "1", "--side", "port", "--seed", "6"}));
+                                 "1", "--side", "port", "--seed", "6"},
+        // The unrolled hull: both sides and the bow in one mission, each waypoint along its
+        // cell's normal.
+        std::vector<std::string>{"-a", "coop-frontier", "-n", "3", "--hull", "@wigley",
+                                 "--cell-size", "1", "--sides", "both", "--seed", "3"}));
 
 TEST(QgcSchema, RejectsAPlanMissingItsFileTypeOrWithABadItem) {
   const auto dir = make_temp_dir("export-schema");

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -19,6 +21,7 @@
 #include "hullinspect/io/trace_reader.hpp"
 #include "source_dir.hpp"
 #include "support/cli_runner.hpp"
+#include "support/mesh_fixtures.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -338,6 +341,61 @@ TEST_F(FlightFiles, KmlDrawsEachSortieTheSitesAndTheNoFlyBoxes) {
   EXPECT_EQ(faces, 6);
 }
 
+// An unrolled hull (both sides and the bow in one grid) in DJI's and Google Earth's formats: every
+// DJI placemark comes back to its waypoint's stand-off pose around the ship, and each no-fly cell
+// is a KML box of its own (a row of cells curves around the hull).
+TEST(UnrolledFlightFiles, DjiKmzAndKmlPlaceTheWaypointsAroundTheShip) {
+  const std::string dir = make_temp_dir("flight-files-unrolled");
+  const std::string trace = dir + "/trace.json";
+  auto r = run_cli({"plan", "--hull", wigley_stl(WigleyHull{}).string(), "--sides", "both",
+                    "--cell-size", "1", "-a", "part-tsp", "-n", "2", "--seed", "3", "--no-fly-box",
+                    "99,7,101,7", "--trace", trace});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> args = {"export",   trace,     "--out",           dir + "/out",
+                                   "--format", "dji-kmz", "--format",        "kml",
+                                   "--drone",  "m3e",     "--max-waypoints", "1000"};
+  args.insert(args.end(), kGeo.begin(), kGeo.end());
+  r = run_cli(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto p = io::export_plan(io::read_trace(trace));
+  ASSERT_TRUE(p.frame.unrolled());
+  int port = 0, starboard = 0;
+  for (int k = 0; k < 2; ++k) {
+    const auto entries = unzip(dir + "/out/uav" + std::to_string(k) + ".kmz");
+    ASSERT_TRUE(entries.count("wpmz/waylines.wpml"));
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_string(entries.at("wpmz/waylines.wpml").c_str()));
+    const auto& want = p.uavs[static_cast<std::size_t>(k)];
+    const auto home = home_of(p, k);
+    std::size_t i = 0;
+    for (const auto pm : doc.child("kml").child("Document").child("Folder").children("Placemark")) {
+      ASSERT_LT(i, want.size());
+      const auto lonlat = split(pm.child("Point").child_value("coordinates"), ',');
+      ASSERT_EQ(lonlat.size(), 2u);
+      const auto got = ship_point(std::stod(lonlat[1]), std::stod(lonlat[0]),
+                                  pm.child("wpml:executeHeight").text().as_double(), home);
+      expect_at(got, want[i], "uav" + std::to_string(k) + " placemark " + std::to_string(i));
+      (got.y > p.frame.spec().ys ? port : starboard) += 1;
+      ++i;
+    }
+    EXPECT_EQ(i, want.size());
+  }
+  // One mission on both sides of the ship.
+  EXPECT_GT(port, 0);
+  EXPECT_GT(starboard, 0);
+  pugi::xml_document kml;
+  ASSERT_TRUE(kml.load_file((dir + "/out/mission.kml").c_str()));
+  std::map<std::string, int> folders;
+  for (const auto folder : kml.child("kml").child("Document").children("Folder")) {
+    int n = 0;
+    for (auto pm = folder.child("Placemark"); pm; pm = pm.next_sibling("Placemark")) ++n;
+    folders[folder.child_value("name")] = n;
+  }
+  EXPECT_EQ(folders["Flights"], 2);
+  EXPECT_EQ(folders["No-fly zones"], 3);
+  fs::remove_all(dir);
+}
+
 TEST_F(FlightFiles, AllFormatsInOneCommandStayUnderTheirCaps) {
   const auto out = export_to("all", {"--format", "all", "--launch", "0,0", "--launch", "229,0"});
   int kmz = 0, litchi = 0;
@@ -416,6 +474,46 @@ TEST(PreflightReport, SortiesCellsAndWarningsMatchTheFiles) {
   for (auto l = svg.child("svg").child("polyline"); l; l = l.next_sibling("polyline")) ++lines;
   EXPECT_EQ(lines, 2);
   fs::remove_all(dir);
+}
+
+// The report's separation: the D planned with and the smallest separation the flights keep,
+// recomputed here from the trace's states; with no D, a shared cell is a warning.
+TEST(PreflightReport, SeparationIsTheSmallestGapOfTheTrace) {
+  for (const char* d : {"0", "2"}) {
+    const auto dir = make_temp_dir("preflight-separation");
+    const auto r = run_cli({"plan", "-a", "lawnmower", "-n", "8", "--separation", d, "--trace",
+                            dir + "/trace.json", "--export", dir + "/files", "--format", "csv",
+                            "--report", dir + "/report"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto report = nlohmann::json::parse(io::read_file(dir + "/report/preflight.json"));
+    const auto trace = nlohmann::json::parse(io::read_file(dir + "/trace.json"));
+    int smallest = 1 << 30;
+    for (const auto& f : trace["frames"]) {
+      const auto& u = f["u"];
+      for (std::size_t a = 0; a < u.size(); a += 5) {
+        for (std::size_t b = a + 5; b < u.size(); b += 5) {
+          smallest =
+              std::min(smallest, std::max(std::abs(u[a].get<int>() - u[b].get<int>()),
+                                          std::abs(u[a + 1].get<int>() - u[b + 1].get<int>())));
+        }
+      }
+    }
+    const auto& sep = report["separation"];
+    EXPECT_EQ(sep["d"], std::stoi(d));
+    EXPECT_EQ(sep["min_cells"], smallest);
+    EXPECT_DOUBLE_EQ(sep["min_m"].get<double>(), smallest * 0.5);
+    EXPECT_EQ(sep["conflicts"], 0);
+    if (std::string(d) == "2") {
+      EXPECT_GE(smallest, 2);
+    }
+    const bool warned = report["warnings"].dump().find("no separation") != std::string::npos;
+    EXPECT_EQ(warned, smallest == 0 && std::string(d) == "0");
+    for (const auto& s : report["sorties"]) EXPECT_TRUE(s["battery_margin_s"].is_null());
+    const auto md = io::read_file(dir + "/report/preflight.md");
+    EXPECT_NE(md.find("## Separation"), std::string::npos);
+    EXPECT_NE(md.find("Battery margin: not computed"), std::string::npos);
+    fs::remove_all(dir);
+  }
 }
 
 TEST(PlanPrior, WithoutPriorThePlanIsPureCoverageWhateverTheSeed) {

@@ -8,10 +8,13 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/io/export.hpp"
 #include "hullinspect/io/export_readers.hpp"
+#include "hullinspect/io/geo_reference.hpp"
 #include "hullinspect/io/ship_frame.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
@@ -89,6 +92,96 @@ TEST_F(MeshDepthExport, WaypointsStandOffFromTheSurfaceAtTheirCell) {
       }
     }
     EXPECT_GT(deep, 0) << "no waypoint over a cell deeper than 0.5 m: the test proves nothing";
+  }
+}
+
+// An unrolled hull (both sides and the bow in one grid): every exported waypoint is its cell's
+// surface point plus the plane's stand-off along the cell's normal, with the camera's yaw and
+// gimbal pitch along −normal, and one mission flies on both sides of the ship. The expected points
+// come from the hull's import, not from the trace.
+TEST_F(MeshDepthExport, UnrolledWaypointsStandOffAlongTheNormalOnBothSides) {
+  const auto stl = wigley_stl(WigleyHull{});
+  world::MeshImportOptions o;
+  o.cell_size = 1.0;
+  o.side = world::HullSide::both;
+  const world::HullMask hull = world::import_mesh_file(stl, o).hull;
+  const world::HullGeometry& g = *hull.geometry();
+  const std::string trace_path = dir_ + "/both.json";
+  const std::string out = dir_ + "/both";
+  const auto r = run_cli(
+      {"run",      "--hull",           stl.string(), "--cell-size", "1",      "--sides",  "both",
+       "-a",       "coop-frontier",    "-n",         "4",           "--seed", "4",        "--trace",
+       trace_path, "--export",         out,          "--format",    "csv",    "--format", "litchi",
+       "--origin", "53.5461,9.9665,3", "--heading",  "117"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto trace = io::read_trace(trace_path);
+  ASSERT_TRUE(trace.contains("ship_frame"));
+  const io::ShipFrame frame(io::ship_frame_spec(trace));
+  ASSERT_TRUE(frame.unrolled());
+  int port = 0, starboard = 0, sloped = 0;
+  for (int k = 0; k < 4; ++k) {
+    const std::string name = out + "/uav" + std::to_string(k) + ".csv";
+    SCOPED_TRACE(name);
+    const auto plan = io::read_export_csv(io::read_file(name), name);
+    ASSERT_GT(plan.waypoints.size(), 2u);
+    for (const auto& w : plan.waypoints) {
+      const auto found = frame.locate(w.x, w.y, w.z, 1e-3);
+      ASSERT_EQ(found.plane, w.plane) << w.x << ", " << w.y << ", " << w.z;
+      const grid::Cell c = found.cell;
+      if (g.coverage(c.x, c.y) == 0) continue;  // a position without surface of its own
+      const world::Point3 s = g.surface(c.x, c.y);
+      const world::Normal n = g.normal(c.x, c.y);
+      const double d = frame.standoff_m(w.plane);
+      EXPECT_NEAR(w.x, s.x + d * n.x, 2e-4) << "cell (" << c.x << ", " << c.y << ")";
+      EXPECT_NEAR(w.y, s.y + d * n.y, 2e-4) << "cell (" << c.x << ", " << c.y << ")";
+      EXPECT_NEAR(w.z, s.z + d * n.z, 2e-4) << "cell (" << c.x << ", " << c.y << ")";
+      const double yaw = std::atan2(-n.y, -n.x) * 180 / M_PI;
+      EXPECT_NEAR(std::remainder(w.yaw_deg - yaw, 360.0), 0, 1e-2) << c.x << ", " << c.y;
+      (s.y > g.side_plane_y ? port : starboard) += 1;
+      sloped += std::abs(n.z) > 0.05 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(port, 0) << "no waypoint on port";
+  EXPECT_GT(starboard, 0) << "no waypoint on starboard";
+  EXPECT_GT(sloped, 0) << "no waypoint over a sloped cell: the gimbal check proves nothing";
+  // The Litchi files carry the gimbal pitch: the camera's elevation along −normal.
+  const io::ExportPlan plan = io::export_plan(trace);
+  for (int k = 0; k < 4; ++k) {
+    for (int part = 1;; ++part) {
+      const std::string name =
+          out + "/uav" + std::to_string(k) + "-part" + std::to_string(part) + ".litchi.csv";
+      if (!fs::exists(name)) {
+        EXPECT_GT(part, 1) << name;
+        break;
+      }
+      std::istringstream rows(io::read_file(name));
+      std::string row;
+      std::getline(rows, row);  // the header
+      while (std::getline(rows, row)) {
+        std::vector<std::string> f;
+        std::istringstream fields(row);
+        for (std::string v; std::getline(fields, v, ',');) f.push_back(v);
+        ASSERT_GT(f.size(), 7u);
+        // The row's position back in the ship frame names its cell; its pitch is that normal's.
+        const io::GeoReference geo({53.5461, 9.9665, 3.0}, 117);
+        double x = 0, y = 0, z = 0;
+        geo.from_wgs84({std::stod(f[0]), std::stod(f[1]), 0.0}, x, y, z);
+        (void)z;
+        bool matched = false;
+        for (const auto& w : plan.uavs[static_cast<std::size_t>(k)]) {
+          if (std::hypot(w.pose.x - x, w.pose.y - y) > 1e-2) continue;
+          const world::Normal n = g.normal(w.grid.cell.x, w.grid.cell.y);
+          if (g.coverage(w.grid.cell.x, w.grid.cell.y) == 0) {
+            matched = true;
+            break;
+          }
+          EXPECT_NEAR(std::stod(f[7]), std::asin(-n.z) * 180 / M_PI, 2e-3) << name << ": " << row;
+          matched = true;
+          break;
+        }
+        EXPECT_TRUE(matched) << name << ": " << row;
+      }
+    }
   }
 }
 

@@ -247,7 +247,7 @@ TEST(TraceReader, ChecksTheShipFrameOfAMeshHull) {
               add_ship_frame(t);
               t["ship_frame"]["side"] = "aft";
             }),
-            "mission.json: ship_frame.side: expected \"port\" or \"starboard\"");
+            "mission.json: ship_frame.side: expected \"port\", \"starboard\" or \"both\"");
   EXPECT_EQ(problem_after([](json& t) {
               add_ship_frame(t);
               t["ship_frame"].erase("origin");
@@ -273,6 +273,34 @@ TEST(TraceReader, ChecksTheShipFrameOfAMeshHull) {
               t["ship_frame"]["normal"][2].erase(0);
             }),
             "mission.json: ship_frame.normal[2]: expected 230 values (the grid width), got 229");
+}
+
+// An unrolled hull's `ship_frame` (side "both") carries surface points instead of depths.
+void add_unrolled_ship_frame(json& t) {
+  add_ship_frame(t);
+  t["ship_frame"]["side"] = "both";
+  t["ship_frame"].erase("depth");
+  const json surface_row(std::vector<json>(230, json{1.5, -4.0, 2.0}));
+  t["ship_frame"]["surface"] = std::vector<json>(30, surface_row);
+}
+
+TEST(TraceReader, ChecksTheSurfaceOfAnUnrolledHull) {
+  EXPECT_EQ(problem_after(add_unrolled_ship_frame), "(accepted)");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_unrolled_ship_frame(t);
+              t["ship_frame"].erase("surface");
+            }),
+            "mission.json: ship_frame.surface: missing");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_unrolled_ship_frame(t);
+              t["ship_frame"]["surface"][4][5] = {1.0, 2.0};
+            }),
+            "mission.json: ship_frame.surface[4][5]: expected a point [X, Y, Z] in metres");
+  EXPECT_EQ(problem_after([](json& t) {
+              add_unrolled_ship_frame(t);
+              t["ship_frame"]["surface"][4][5] = {1.0, 2.0, 1e9};
+            }),
+            "mission.json: ship_frame.surface[4][5]: expected metres in [-100000, 100000]");
 }
 
 }  // namespace

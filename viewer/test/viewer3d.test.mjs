@@ -150,56 +150,59 @@ test('a mask hull: 3D disabled with its reason, three.js not inlined, view --3d 
   assert.ok(added > 300e3, `a 3D page is only ${added} bytes larger`);
 });
 
-test('the hull is drawn in the colours of M at the replay time, the UAVs in theirs', async () => {
-  const {page} = await open(dtc.html);
-  const trace = dtc.trace;
+// Cells whose 5 × 5 neighbourhood has the same colour at time t and `faces` the camera (not seen
+// at a grazing angle), so no pixel blends two colours, away from every UAV: M = 0 in its
+// region's colour, M = 1 in its tint, M = 3 inspected (non-hull and M = 2 cells are left out);
+// `away`: how many cells from every UAV (its sphere and sight line cover the hull near it).
+function uniformCells(trace, t, faces, step = 23, away = 12) {
   const W = trace.grid.width;
   const H = trace.grid.height;
-  const {origin, side_plane_y: ys, depth} = trace.ship_frame;
-  const cell = trace.grid.cell_size_m;
-  const surface = (x, y) => [origin[0] + (x + 0.5) * cell, ys - depth[y][x], origin[1] + (y + 0.5) * cell];
   const owner = (x, y) => {
     const ch = trace.partition[y][x];
     return ch >= 'A' ? ch.charCodeAt(0) - 55 : Number(ch);
   };
-  await page.uncheck('#show-footprints');
-  await page.uncheck('#show-paths');
-  await page.uncheck('#show-labels');
-  const normal = trace.ship_frame.normal;
-  // Expected colour of a cell whose state does not depend on who saw it: M = 0 in its region's
-  // colour, M = 1 in its tint, M = 3 inspected; null for non-hull and M = 2.
-  const expected = (map, x, y) => {
+  const {map} = mapAt(trace, t);
+  const expected = (x, y) => {
     const v = map[y * W + x];
     const region = REGIONS[owner(x, y) % REGIONS.length];
     return v === 0 ? region : v === 1 ? tint(region) : v === 3 ? INSPECTED : null;
   };
-  // Cells whose 5 × 5 neighbourhood has the same colour and faces the side (not the bilge, seen
-  // at a grazing angle), so no pixel blends two colours, away from every UAV.
-  const uniformCells = (t) => {
-    const {map} = mapAt(trace, t);
-    const u = trace.frames[t].u;
-    const cells = [];
-    for (let y = 4; y < H - 4; y += 5) {
-      for (let x = 4 + (y % 3); x < W - 4; x += 23) {
-        const c = expected(map, x, y);
-        let ok = c !== null;
-        for (let dy = -2; dy <= 2 && ok; ++dy) {
-          for (let dx = -2; dx <= 2 && ok; ++dx) {
-            const d = expected(map, x + dx, y + dy);
-            ok = d !== null && d.every((v, j) => v === c[j]) && normal[y + dy][x + dx][1] < -0.9;
-          }
+  const u = trace.frames[t].u;
+  const cells = [];
+  for (let y = 4; y < H - 4; y += 5) {
+    for (let x = 4 + (y % 3); x < W - 4; x += step) {
+      const c = expected(x, y);
+      let ok = c !== null;
+      for (let dy = -2; dy <= 2 && ok; ++dy) {
+        for (let dx = -2; dx <= 2 && ok; ++dx) {
+          const d = expected(x + dx, y + dy);
+          ok = d !== null && d.every((v, j) => v === c[j]) && faces(x + dx, y + dy);
         }
-        for (let o = 0; o < u.length && ok; o += 5) ok = Math.abs(u[o] - x) > 12 || Math.abs(u[o + 1] - y) > 12;
-        if (ok) cells.push({x, y, color: c, state: map[y * W + x]});
       }
+      for (let o = 0; o < u.length && ok; o += 5) ok = Math.abs(u[o] - x) > away || Math.abs(u[o + 1] - y) > away;
+      if (ok) cells.push({x, y, color: c, state: map[y * W + x]});
     }
-    return cells;
-  };
+  }
+  return cells;
+}
+
+test('the hull is drawn in the colours of M at the replay time, the UAVs in theirs', async () => {
+  const {page} = await open(dtc.html);
+  const trace = dtc.trace;
+  const {origin, side_plane_y: ys, depth} = trace.ship_frame;
+  const cell = trace.grid.cell_size_m;
+  const surface = (x, y) => [origin[0] + (x + 0.5) * cell, ys - depth[y][x], origin[1] + (y + 0.5) * cell];
+  await page.uncheck('#show-footprints');
+  await page.uncheck('#show-paths');
+  await page.uncheck('#show-labels');
+  const normal = trace.ship_frame.normal;
+  const faces = (x, y) => normal[y][x][1] < -0.9; // the side, not the bilge
   for (const t of [0, 300, trace.frames.length - 1]) {
     await page.evaluate((t) => window.hullViewer.seek(t), t);
     await settle(page);
-    const projected = await project(page, uniformCells(t).map(({x, y}) => surface(x, y)));
-    const cells = uniformCells(t).filter((c, j) => !projected[j][2]);
+    const candidates = uniformCells(trace, t, faces);
+    const projected = await project(page, candidates.map(({x, y}) => surface(x, y)));
+    const cells = candidates.filter((c, j) => !projected[j][2]);
     assert.ok(cells.length >= 20, `only ${cells.length} cells to check at t = ${t}`);
     const pixels = await canvasPixels(page, projected.filter((p) => !p[2]));
     cells.forEach(({x, y, color, state}, j) => {
@@ -319,6 +322,80 @@ test('screenshot of 16 UAVs on a Wigley hull in 3D', async () => {
   await page.evaluate(() => window.hullViewer.seek(30));
   await settle(page);
   await screenshot(page, 'viewer-3d-wigley-16');
+  await page.close();
+});
+
+// The unrolled Wigley hull (both sides and the bow in one grid, 404 × 16 cells of 0.5 m): each cell
+// at its own surface point, the UAVs at their stand-off along the cell's normal.
+test('an unrolled hull in 3D: cells at their surface points, UAVs along the normals', async () => {
+  const {html, trace} = wigleyPage('wigley-both-16', ['--sides', 'both']);
+  assert.equal(trace.ship_frame.side, 'both');
+  const {page} = await open(html);
+  await page.uncheck('#show-footprints');
+  await page.uncheck('#show-paths');
+  await page.uncheck('#show-labels');
+  const {surface, normal} = trace.ship_frame;
+  const eye = await page.evaluate(() => {
+    const v = window.hullViewer.view3d();
+    return [v.camera.position.toArray(), v.controls.target.toArray()];
+  });
+  const view = eye[0].map((v, d) => v - eye[1][d]);
+  const length = Math.hypot(...view);
+  // Facing the camera: the normal within 60° of the direction to the camera.
+  const faces = (x, y) => normal[y][x].reduce((sum, v, d) => sum + v * view[d], 0) > 0.5 * length;
+  let sides = new Set();
+  for (const t of [0, 30, trace.frames.length - 1]) {
+    await page.evaluate((t) => window.hullViewer.seek(t), t);
+    await settle(page);
+    // The hull alone: the UAVs and their sight lines hidden for this picture.
+    await page.evaluate(() => {
+      const v = window.hullViewer.view3d();
+      for (const u of v.uavs) u.mesh.visible = u.sight.visible = false;
+      v.render();
+    });
+    const candidates = uniformCells(trace, t, faces, 3, -1);
+    const projected = await project(page, candidates.map(({x, y}) => surface[y][x]));
+    const cells = candidates.filter((c, j) => !projected[j][2]);
+    assert.ok(cells.length >= 5, `only ${cells.length} cells to check at t = ${t}`);
+    const pixels = await canvasPixels(page, projected.filter((p) => !p[2]));
+    cells.forEach(({x, y, color, state}, j) => {
+      assert.deepEqual(pixels.at[j], color, `cell (${x}, ${y}) at t = ${t}, M = ${state}`);
+      sides.add(surface[y][x][0] > 45 ? 'bow' : surface[y][x][1] < 0 ? 'starboard' : 'port');
+    });
+  }
+  // The camera sees starboard and the bow of the unrolled grid.
+  assert.ok(sides.has('starboard') && sides.has('bow'), [...sides].join());
+  // Each UAV that the hull does not hide: at S + ζ·n of its cell, in its region's dark shade.
+  const t = 30;
+  await page.evaluate((t) => {
+    window.hullViewer.seek(t);
+    const v = window.hullViewer.view3d();
+    for (const u of v.uavs) u.mesh.visible = true;
+    v.draw();
+  }, t);
+  await settle(page);
+  const u = trace.frames[t].u;
+  const cell = trace.grid.cell_size_m;
+  const theta = (trace.camera.theta_deg * Math.PI) / 180;
+  const uavPoints = [];
+  for (let o = 0; o < u.length; o += 5) {
+    const [x, y, z] = [u[o], u[o + 1], u[o + 2]];
+    const zeta = (trace.footprint[z - 1] * cell) / (2 * Math.tan(theta / 2));
+    uavPoints.push(surface[y][x].map((v, d) => v + zeta * normal[y][x][d]));
+  }
+  const at = await project(page, uavPoints);
+  const pixels = await canvasPixels(page, at);
+  let seen = 0;
+  pixels.at.forEach((got, k) => {
+    if (at[k][2]) return; // behind the hull
+    assert.deepEqual(got, shade(REGIONS[k % REGIONS.length]), `UAV ${k} at t = ${t}`);
+    ++seen;
+  });
+  assert.ok(seen >= 4, `only ${seen} UAVs in view`);
+  // The picture in docs/hulls.md: with footprints, paths and labels.
+  for (const box of ['#show-footprints', '#show-paths', '#show-labels']) await page.check(box);
+  await settle(page);
+  await screenshot(page, 'viewer-3d-wigley-both-16');
   await page.close();
 });
 

@@ -4,6 +4,9 @@
 //   X = X0 + (x + ½)·cell,  Z = Z0 + (y + ½)·cell,  Y = Ys ± (ζ_z + depth(x, y))
 // with + when the port side is inspected, − for starboard, ζ_z = s_z·cell / (2·tan(θ/2)), and
 // depth 0 for a hull without a mesh. The camera faces the surface: yaw along −normal.
+// An unrolled hull (both sides in one grid, docs/hulls.md "The whole hull") has no side plane:
+// each cell carries its ship-frame surface point S and outward normal n, and a UAV stands at
+// S + ζ_z·n looking along −n.
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +15,7 @@
 
 #include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/grid.hpp"
+#include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::io {
 
@@ -24,22 +28,25 @@ struct ShipPose {
   double yaw = 0;
 };
 
-/// Which side of the ship the hull grid shows.
-enum class HullSide { kPort, kStarboard };
+/// Which side of the ship the hull grid shows; kBoth: the unrolled hull.
+enum class HullSide { kPort, kStarboard, kBoth };
 
 /// Everything that places the grid in the ship frame.
 struct ShipFrameSpec {
-  double cell_m = 0.5;  ///< cell side
-  int s1 = 5;           ///< footprint sides (cells) at z = 1, 2
-  int s2 = 7;
-  double theta_deg = 90.0;               ///< camera aperture
-  double x0 = 0;                         ///< X of the grid's left (stern) edge
-  double z0 = 0;                         ///< Z of the grid's bottom edge
-  double ys = 0;                         ///< Y of the side plane
+  double cell_m = world::MissionParams{}.cell_size_m;  ///< cell side
+  int s1 = world::MissionParams{}.s1;                  ///< footprint sides (cells) at z = 1, 2
+  int s2 = world::MissionParams{}.s2;
+  double theta_deg = world::MissionParams{}.theta_deg;  ///< camera aperture
+  double x0 = 0;                                        ///< X of the grid's left (stern) edge
+  double z0 = 0;                                        ///< Z of the grid's bottom edge
+  double ys = 0;                                        ///< Y of the side plane
   HullSide side = HullSide::kStarboard;  ///< as world::HullGeometry; a plain mask is starboard
   grid::Grid<double> depth;              ///< per cell, metres; empty = 0 everywhere
   /// Per cell outward unit normal (ship frame); empty = the side's normal (0, ±1, 0).
   grid::Grid<std::array<double, 3>> normal;
+  /// Unrolled hulls only (side kBoth): per cell the ship-frame surface point the UAV stands off
+  /// from; x0 is then the arc length of column 0's left edge and ys the centre plane.
+  grid::Grid<std::array<double, 3>> surface;
   /// The file these numbers came from (a trace, a hull), named by errors.
   std::string source = "trace";
 };
@@ -59,11 +66,23 @@ class ShipFrame {
   /// True when a leg from a to b stays at one stand-off distance and yaw (same depth and normal).
   bool same_surface(grid::Cell a, grid::Cell b) const;
 
-  /// The cell whose centre is nearest (X, Z) (may lie outside the grid).
+  /// The cell whose centre is nearest (X, Z) (may lie outside the grid). Not for an unrolled
+  /// hull, whose cells share X and Z across the sides (see locate()).
   grid::Cell cell_at(double x, double z) const;
   /// The plane (1 or 2) whose stand-off is nearest the point's distance from the surface at
   /// `cell`, or 0 when neither is within `tolerance_m`.
   int plane_at(grid::Cell cell, double y, double tolerance_m) const;
+
+  /// A grid position and plane a ship-frame point is the pose of.
+  struct Located {
+    grid::Cell cell{-1, -1};
+    int plane = 0;  ///< 0: the point is no cell's pose within the tolerance
+  };
+  /// The cell and plane whose pose lies within `tolerance_m` of (x, y, z): cell_at() and
+  /// plane_at() on one side; on an unrolled hull the nearest pose over every cell and plane.
+  Located locate(double x, double y, double z, double tolerance_m) const;
+
+  bool unrolled() const { return spec_.side == HullSide::kBoth; }
 
   const ShipFrameSpec& spec() const { return spec_; }
 

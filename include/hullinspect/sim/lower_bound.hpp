@@ -10,6 +10,9 @@
 //    least the Manhattan distance to get there (+ u_z to descend for a corroded cell).
 // With a battery, the rate argument also pays for the sorties the work forces (sortie_t_m).
 
+#include <span>
+
+#include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/mission_params.hpp"
@@ -29,7 +32,11 @@ struct LowerBound {
   int sortie_t_m = 0;
 };
 
-/// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded).
+/// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded), its UAVs
+/// starting at `starts` (world::start_cells of the mission, computed once by its caller).
+LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
+                       const world::MissionParams& params, std::span<const grid::Cell> starts);
+/// The same on world::start_cells(params, hull).
 LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
                        const world::MissionParams& params);
 

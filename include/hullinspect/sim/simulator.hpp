@@ -21,7 +21,11 @@ namespace hullinspect::sim {
 
 class Simulator {
  public:
-  /// Places the UAVs on their start cells at start_z and senses (t = 0). `params` must be valid.
+  /// Places the UAVs on `starts` (world::start_cells of the mission, computed once by its caller)
+  /// at start_z and senses (t = 0). `params` must be valid.
+  Simulator(const world::HullMask& hull, const world::Instance& instance,
+            const world::MissionParams& params, std::span<const grid::Cell> starts);
+  /// The same on world::start_cells(params, hull).
   Simulator(const world::HullMask& hull, const world::Instance& instance,
             const world::MissionParams& params);
 
@@ -57,6 +61,8 @@ class Simulator {
   int failed_uavs() const { return failed_; }
   const world::MissionParams& params() const { return params_; }
   const world::HullMask& hull() const { return hull_; }
+  /// The start cell of each UAV.
+  std::span<const grid::Cell> starts() const { return starts_; }
   int plane_change_steps() const { return uz_; }
   /// Flyable positions and the hull cells that can be inspected / detected (computed at t = 0).
   const world::Reachability& reachability() const { return reach_; }
@@ -98,6 +104,7 @@ class Simulator {
   const world::HullMask& hull_;
   const grid::Grid<std::int8_t>& truth_;
   world::MissionParams params_;
+  std::vector<grid::Cell> starts_;
   world::Reachability reach_;
   int uz_ = 1;
   int time_ = 0;

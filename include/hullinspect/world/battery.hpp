@@ -19,8 +19,8 @@ struct BatterySteps {
 /// The battery in steps. Every conversion between the battery's seconds and steps goes through
 /// battery_steps() and battery_seconds(), so that a step of another length changes only them.
 BatterySteps battery_steps(const MissionParams& params);
-/// Seconds of `steps` steps.
-double battery_seconds(int steps);
+/// Seconds of `steps` steps (MissionParams::seconds).
+double battery_seconds(const MissionParams& params, int steps);
 
 /// Steps the sortie layer keeps beyond the flight home and the reserve: one step's worst growth of
 /// the flight home (a move away from the site, or a descent that must be climbed back).

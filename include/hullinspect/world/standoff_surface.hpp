@@ -1,0 +1,23 @@
+#pragma once
+// Where a UAV stands off from an unrolled hull at every grid position (docs/hulls.md "The whole
+// hull"): a cell with surface stands off from its own surface point along its normal; a grid
+// position without surface (above the deck line, beyond the stern where a lower cut is shorter)
+// has none of its own, yet UAVs fly over it, so it borrows the nearest surface point of its column
+// (else of the nearest column that has one) raised or lowered to the row's height, with that
+// point's normal: the flight continues the surface's stand-off straight up, down or along.
+
+#include "hullinspect/grid/grid.hpp"
+#include "hullinspect/world/hull_geometry.hpp"
+
+namespace hullinspect::world {
+
+struct StandoffSurface {
+  grid::Grid<Point3> point;   ///< ship frame, metres
+  grid::Grid<Normal> normal;  ///< outward unit normals
+};
+
+/// The stand-off surface of every grid position of an unrolled geometry (g.unrolled()); empty
+/// grids for any other geometry.
+StandoffSurface standoff_surface(const HullGeometry& g);
+
+}  // namespace hullinspect::world
