@@ -14,6 +14,7 @@
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/io/viewer_html.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/scenario.hpp"
 #include "mission_options.hpp"
 
@@ -56,6 +57,14 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
         "  no-fly zones: {} hull cells cannot be inspected, {} cannot be seen at all "
         "(docs/model.md: what cannot reach its final state is not counted)\n",
         r.unreachable_cells, r.unreachable_z2_cells);
+  }
+  if (r.min_battery()) {
+    // Batteries (docs/model.md, "Batteries and sorties"), beside the bound they force.
+    std::cout << fmt::format(
+        "  batteries: {} sorties, {} swaps, {} crashes, least left airborne {} s; lower bound "
+        "T_c >= {} s, T_m >= {} s\n",
+        r.sorties(), total.swaps, r.battery_crashes, world::battery_seconds(spec.params, *r.min_battery()),
+        spec.params.seconds(r.bound_t_c), spec.params.seconds(r.bound_t_m));
   }
   if (r.min_separation) {
     std::cout << fmt::format("  separation {}: {} conflicts, smallest separation flown {}\n",

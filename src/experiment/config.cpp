@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "config_battery.hpp"
 #include "config_launch.hpp"
 #include "config_speed.hpp"
 #include "config_no_fly.hpp"
@@ -386,7 +387,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
                 "frame-spacing", "no-fly",      "launch",        "separation",    "speed",
-                "climb-speed"});
+                "climb-speed", "battery"});
   for (const char* key :
        {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
     remember_line(c, root, key);
@@ -410,6 +411,7 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
   detail::read_speed(f, root, c);
   detail::read_launch(f, root, c);
+  detail::read_battery(f, root, c);
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
   } else {
@@ -531,6 +533,10 @@ nlohmann::json config_json(const ExperimentConfig& c) {
     j["launch"] = {{"sites", sites}, {"transfer", c.launch_transfer}};
     if (c.takeoff_time) j["launch"]["takeoff_time"] = *c.takeoff_time;
   }
+  if (c.endurance) {  // only then, so that every other manifest keeps its bytes
+    j["battery"] = {{"endurance", *c.endurance}, {"swap_time", c.swap_time}};
+    if (c.reserve) j["battery"]["reserve"] = *c.reserve;
+  }
   if (c.speed) j["speed"] = *c.speed;  // only when given: manifests unchanged
   if (c.climb_speed) j["climb_speed"] = *c.climb_speed;
   j["curve"] = {{"step", c.curve.step}, {"end", c.curve.end}};
@@ -599,6 +605,12 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
         c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
       c.launch_transfer = l.at("transfer").get<double>();
       if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
+    }
+    if (j.contains("battery")) {
+      const auto& b = j.at("battery");
+      c.endurance = b.at("endurance").get<double>();
+      c.swap_time = b.at("swap_time").get<double>();
+      if (b.contains("reserve")) c.reserve = b.at("reserve").get<double>();
     }
     if (j.contains("speed")) c.speed = j.at("speed").get<double>();
     if (j.contains("climb_speed")) c.climb_speed = j.at("climb_speed").get<double>();

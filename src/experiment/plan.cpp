@@ -17,6 +17,10 @@ std::string launch_key(const ExperimentConfig& c) {
   for (const auto& s : c.launch_sites) key += fmt::format("{},{};", s.x, s.y);
   key += fmt::format("transfer={}", c.launch_transfer);
   if (c.takeoff_time) key += fmt::format(";takeoff={}", *c.takeoff_time);
+  if (c.endurance) {
+    key += fmt::format("|battery={};swap={}", *c.endurance, c.swap_time);
+    if (c.reserve) key += fmt::format(";reserve={}", *c.reserve);
+  }
   return key;
 }
 
@@ -127,6 +131,9 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.launch_sites = c.launch_sites;
   spec.params.launch_transfer_s = c.launch_transfer;
   spec.params.takeoff_time_s = c.takeoff_time;
+  spec.params.endurance_s = c.endurance;
+  spec.params.reserve_s = c.reserve;
+  spec.params.swap_time_s = c.swap_time;
   spec.params.speed_m_s = c.speed;
   spec.params.climb_speed_m_s = c.climb_speed;
   spec.params.separation = c.separation;

@@ -4,6 +4,7 @@
 
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_row_check.hpp"
+#include "hullinspect/world/battery.hpp"
 
 namespace hullinspect::experiment {
 
@@ -78,7 +79,11 @@ std::vector<std::string> runs_header() {
           "partition_fallbacks",
           "separation",
           "separation_conflicts",
-          "min_separation"};
+          "min_separation",
+          "sorties",
+          "flight_s",
+          "battery_crashes",
+          "min_battery_s"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -176,7 +181,11 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
                             std::to_string(r.planner.partition_fallbacks),
                             std::to_string(plan.config().separation),
                             std::to_string(r.separation_conflicts),
-                            optional_count(r.min_separation)}) {
+                            optional_count(r.min_separation),
+                            std::to_string(r.sorties()),
+                            seconds_field(timing, total.flight_steps),
+                            std::to_string(r.battery_crashes),
+                            seconds_field(timing, r.min_battery())}) {
     fields.push_back(std::move(value));
   }
   record.runs = csv_line(fields);

@@ -10,6 +10,7 @@
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_record.hpp"
+#include "hullinspect/world/battery.hpp"
 
 namespace hullinspect::experiment {
 
@@ -48,6 +49,16 @@ class Outcome {
   }
   long long get(const std::string& name, long long max = kMaxStoredCount) const {
     return *parse(name, max);
+  }
+  /// A field of seconds in [0, max]; an empty min_battery_s gives nothing.
+  std::optional<double> seconds(const std::string& name, double max) const {
+    const std::string& v = text(name);
+    if (v.empty() && name == "min_battery_s") return std::nullopt;
+    try {
+      return parse_real(v, 0, max);
+    } catch (const NumberError& e) {
+      throw Error(fmt::format("{} {}", name, e.what()));
+    }
   }
   /// A time column (seconds: steps × the step of `timing`) as its steps, at most `max`; without a
   /// speed the seconds are the steps and parse() reads them.
@@ -106,6 +117,11 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
                        escape_for_message(o.text("separation")), c.separation);
   }
   (void)o.parse("min_separation", kMaxStoredCount);
+  // Batteries (docs/model.md, "Batteries and sorties"), parsed here, related at the end.
+  const long long sorties = o.get("sorties");
+  const auto flight = o.seconds("flight_s", 1e18);
+  const long long crashes = o.get("battery_crashes", uavs);
+  const auto least_battery = o.seconds("min_battery_s", c.endurance.value_or(1e18));
 
   if (complete != t_m.has_value()) {
     return complete ? "complete is 1 but T_m is empty (a complete mission has a T_m)"
@@ -157,6 +173,26 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
   if (bound_t_c > bound_t_m) {
     return fmt::format("bound_T_c is {} but bound_T_m is only {}", o.text("bound_T_c"),
                        o.text("bound_T_m"));
+  }
+  if (least_battery.has_value() != c.endurance.has_value()) {
+    return c.endurance
+               ? "min_battery_s is empty but this experiment's UAVs have batteries"
+               : fmt::format("min_battery_s is {} but this experiment's flight is unlimited",
+                             *least_battery);
+  }
+  if (crashes > o.get("failed_uavs", uavs)) {
+    return fmt::format("battery_crashes is {} but failed_uavs is only {} (a crash fails the UAV)",
+                       crashes, o.get("failed_uavs", uavs));
+  }
+  if (c.launch_sites.empty() && sorties != 0) {
+    return fmt::format("sorties is {} but this experiment's UAVs start in the air (no launch site)",
+                       sorties);
+  }
+  const double flight_limit =
+      static_cast<double>(uavs) * c.timing().step_seconds() * static_cast<double>(steps);
+  if (*flight > flight_limit) {
+    return fmt::format("flight_s is {} but {} UAVs × {} steps fly at most {} s", *flight, uavs,
+                       steps, flight_limit);
   }
   return {};
 }

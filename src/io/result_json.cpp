@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "hullinspect/world/battery.hpp"
+
 namespace hullinspect::io {
 
 using nlohmann::json;
@@ -64,11 +66,27 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   if (!spec.params.launch_sites.empty()) {  // only then, so that other results keep their keys
     json launch = json::array();
     for (const auto& u : r.uavs) {
+      // Per UAV its sorties (take-off and landing times, site), flight and batteries swapped.
+      json sorties = json::array();
+      for (const auto& s : u.sorties) {
+        sorties.push_back({{"takeoff", s.takeoff},
+                           {"landing", s.landing >= 0 ? json(s.landing) : json(nullptr)},
+                           {"site", s.site}});
+      }
       launch.push_back({{"site", u.launch_site},
                         {"steps_away", u.steps_away},
-                        {"landed_at", u.landed_at >= 0 ? json(u.landed_at) : json(nullptr)}});
+                        {"landed_at", u.landed_at >= 0 ? json(u.landed_at) : json(nullptr)},
+                        {"sorties", std::move(sorties)},
+                        {"flight_s", world::battery_seconds(spec.params, u.flight_steps)},
+                        {"swaps", u.swaps},
+                        {"battery_crash", u.battery_crash}});
     }
     j["launch"] = std::move(launch);
+    j["sorties"] = r.sorties();
+    j["flight_s"] = world::battery_seconds(spec.params, total.flight_steps);
+    j["battery_crashes"] = r.battery_crashes;
+    j["min_battery_s"] =
+        r.min_battery() ? json(world::battery_seconds(spec.params, *r.min_battery())) : json(nullptr);
   }
   return j;
 }
@@ -103,6 +121,12 @@ json spec_json(const planners::MissionSpec& spec, const std::string& hull_source
     for (const auto& c : spec.params.launch_sites) sites.push_back({c.x, c.y});
     j["launch"] = {{"sites", std::move(sites)}, {"transfer", spec.params.launch_transfer_s}};
     if (spec.params.takeoff_time_s) j["launch"]["takeoff_time"] = *spec.params.takeoff_time_s;
+  }
+  if (spec.params.endurance_s) {
+    const auto b = world::battery_steps(spec.params);
+    j["battery"] = {{"endurance", *spec.params.endurance_s},
+                    {"reserve", world::battery_seconds(spec.params, b.reserve)},
+                    {"swap_time", spec.params.swap_time_s}};
   }
   if (spec.params.speed_m_s) j["speed"] = *spec.params.speed_m_s;
   if (spec.params.climb_speed_m_s) j["climb_speed"] = *spec.params.climb_speed_m_s;

@@ -7,6 +7,7 @@
 #include "hullinspect/partition/fallback.hpp"
 #include "hullinspect/sim/deconfliction.hpp"
 #include "hullinspect/sim/lower_bound.hpp"
+#include "hullinspect/sim/sortie_layer.hpp"
 
 namespace hullinspect::planners {
 
@@ -96,8 +97,11 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
     deconfliction.emplace(params.separation, params.uavs, hull.width(), hull.height(),
                           params.no_fly.get());
   }
+  std::optional<sim::SortieLayer> sorties;
+  if (sim.battery().limited) sorties.emplace(sim);
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
+    if (sorties) sorties->before_step(sim);
     t0 = Clock::now();
     planner.decide(sim.view(), actions);
     planner_seconds += seconds_since(t0);

@@ -248,6 +248,24 @@ std::vector<MissionOptionDecl> declare() {
       [](MissionInput& in, const std::string& t) {
         in.takeoff_time = literal<double>("takeoff-time", t);
       });
+  add("endurance", "S", InputKind::kValue,
+      "Seconds of flight per battery (default: unlimited, the paper's model); needs --launch: a "
+      "UAV is sent home to swap its battery before it runs low, and one airborne with an empty "
+      "battery crashes (docs/model.md)",
+      [](MissionInput& in, const std::string& t) {
+        in.endurance = literal<double>("endurance", t);
+      });
+  add("reserve", "S", InputKind::kValue,
+      "With --endurance: seconds of flight a UAV keeps for landing (default: 10 % of the "
+      "endurance)",
+      [](MissionInput& in, const std::string& t) { in.reserve = literal<double>("reserve", t); });
+  add(
+      "swap-time", "S", InputKind::kValue,
+      "With --endurance: seconds on the ground at a launch site to swap a battery",
+      [](MissionInput& in, const std::string& t) {
+        in.swap_time = literal<double>("swap-time", t);
+      },
+      shown(d.swap_time));
   add("speed", "M/S", InputKind::kValue,
       "Horizontal speed in m/s: a move to a neighbouring cell takes cell / speed seconds, the "
       "length of one step (default: one cell per second)",
@@ -463,6 +481,9 @@ MissionSpec build_spec(const MissionInput& a, const world::HullMask& hull) {
   for (const auto& s : a.launch) p.launch_sites.push_back(parse_xy(s, "launch"));
   p.launch_transfer_s = a.launch_transfer;
   p.takeoff_time_s = a.takeoff_time;
+  p.endurance_s = a.endurance;
+  p.reserve_s = a.reserve;
+  p.swap_time_s = a.swap_time;
   p.speed_m_s = a.speed;
   p.climb_speed_m_s = a.climb_speed;
 

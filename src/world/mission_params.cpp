@@ -10,6 +10,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/launch_sites.hpp"
 
 namespace hullinspect::world {
@@ -208,6 +209,7 @@ void validate(const MissionParams& p, const HullMask& hull) {
     }
   }
   validate_separation(p, hull);
+  validate_battery(p, hull);
 }
 
 std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull) {

@@ -237,7 +237,7 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "s1, "
        "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, "
        "truth, prior-defects, truth-defects, frame-spacing, no-fly, launch, separation, speed, "
-       "climb-speed)"},
+       "climb-speed, battery)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},

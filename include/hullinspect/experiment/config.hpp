@@ -96,6 +96,10 @@ struct ExperimentConfig {
   std::optional<double> takeoff_time;                                 ///< seconds; empty = u_z
   /// "speed:" and "climb-speed:" in m/s (docs/model.md, "Speed and time"); empty = the paper's.
   std::optional<double> speed, climb_speed;
+  /// Batteries ("battery:", docs/model.md); no endurance = unlimited flight, the paper's model.
+  std::optional<double> endurance;  ///< seconds of flight per battery
+  std::optional<double> reserve;    ///< seconds; empty = 10 % of the endurance
+  double swap_time = world::MissionParams{}.swap_time_s;
   CurveGrid curve;
   /// Config line of each key and list item ("s1", "s2[1]", "uavs[0]", "time_limit"), so that an
   /// error found later (when cells are validated) can still name its line. 0 = not in the file.

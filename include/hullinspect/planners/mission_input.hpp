@@ -69,6 +69,9 @@ struct MissionInput {
   std::vector<std::string> launch;           ///< X,Y launch sites (none = the paper's model)
   double launch_transfer = world::MissionParams{}.launch_transfer_s;
   std::optional<double> takeoff_time;  ///< seconds; default u_z
+  std::optional<double> endurance;     ///< seconds of flight per battery; none = unlimited
+  std::optional<double> reserve;       ///< seconds; default 10 % of the endurance
+  double swap_time = world::MissionParams{}.swap_time_s;
   std::optional<double> speed;         ///< m/s; empty = one cell per second (the paper's)
   std::optional<double> climb_speed;   ///< m/s; empty = the paper's plane change
 };

@@ -8,6 +8,7 @@
 //    of one UAV) or z = 1 moves (s1 cells each).
 //  * reach: a cell is observed only from a position whose footprint holds it, and a UAV needs at
 //    least the Manhattan distance to get there (+ u_z to descend for a corroded cell).
+// With a battery, the rate argument also pays for the sorties the work forces (sortie_t_m).
 
 #include <span>
 
@@ -25,6 +26,10 @@ struct LowerBound {
   int rate_t_m = 0;
   int reach_t_c = 0;  ///< the reach argument alone
   int reach_t_m = 0;
+  /// What endurance adds to rate_t_m (docs/model.md, "Batteries and sorties"): the fleet needs
+  /// ceil(work / (E − legs)) sorties, and each after a UAV's first pays the flight from its site
+  /// to the hull and back (ground legs included) and a swap. 0 with unlimited flight.
+  int sortie_t_m = 0;
 };
 
 /// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded), its UAVs

@@ -11,9 +11,10 @@ namespace hullinspect::sim {
 /// Values of the mission map M (eq. 2).
 inline constexpr std::int8_t kNotHull = -1;
 inline constexpr std::int8_t kUnknown = 0;
-inline constexpr std::int8_t kClean = 1;          ///< non-corroded, seen at z = 1 or 2
-inline constexpr std::int8_t kCorrosionSeen = 2;  ///< corroded, expected (prior) or detected at z = 2
-inline constexpr std::int8_t kInspected = 3;      ///< corroded, inspected at z = 1
+inline constexpr std::int8_t kClean = 1;  ///< non-corroded, seen at z = 1 or 2
+inline constexpr std::int8_t kCorrosionSeen =
+    2;                                        ///< corroded, expected (prior) or detected at z = 2
+inline constexpr std::int8_t kInspected = 3;  ///< corroded, inspected at z = 1
 
 /// Bits of the `seen` flags the simulator keeps per cell.
 inline constexpr std::uint8_t kSeenAtZ2 = 1;
@@ -48,6 +49,11 @@ struct UavState {
   /// on the ground, taking off, flying out to its start cell, or flying home and landing after the
   /// hull is complete. Like a plane change, the UAV cannot act and senses nothing meanwhile.
   int away_left = 0;
+  /// False while on the ground at a launch site: before the first take-off, swapping a battery,
+  /// and after the last landing. Always true without launch sites (the paper's model).
+  bool airborne = true;
+  /// Steps of flight left on the battery (docs/model.md, "Batteries and sorties"); −1 unlimited.
+  int battery_left = -1;
   /// True while the UAV cannot act: changing plane, or away at its launch site.
   bool in_transit() const { return transit_left > 0 || away_left > 0; }
 };
@@ -60,9 +66,9 @@ inline constexpr std::uint8_t kEventRedundant = 8;   ///< nothing new: M unchang
 
 /// One hull cell in one UAV's footprint: what that UAV's camera reported.
 struct Reading {
-  int index = 0;                ///< flat cell index
-  std::int8_t value = 0;        ///< 1 clean, 2 corrosion seen from z = 2, 3 corrosion seen at z = 1
-  std::uint8_t events = 0;      ///< kEvent* bits
+  int index = 0;            ///< flat cell index
+  std::int8_t value = 0;    ///< 1 clean, 2 corrosion seen from z = 2, 3 corrosion seen at z = 1
+  std::uint8_t events = 0;  ///< kEvent* bits
 };
 
 }  // namespace hullinspect::sim

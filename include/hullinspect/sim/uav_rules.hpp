@@ -19,7 +19,10 @@ std::optional<std::string> state_violation(const UavState& state, int plane_chan
 /// Whether `after` can follow `before` in one step: a failed UAV stays failed and does not move or
 /// change plane; a UAV failing this step stays as it was; a UAV changing plane stays put, counts
 /// down and arrives on the other plane when the count reaches 0; otherwise it hovers, moves one
-/// cell on its plane, or starts a plane change. nullopt when allowed, else the broken rule.
+/// cell on its plane, or starts a plane change. Batteries: a step airborne at its start or end
+/// uses one step of battery, one on the ground none (a swap refills it); only a UAV away at its
+/// launch site takes off or lands, on the ground it does not move, and airborne with an empty
+/// battery it fails in the next step. nullopt when allowed, else the broken rule.
 std::optional<std::string> step_violation(const UavState& before, const UavState& after,
                                           int plane_change_steps);
 

@@ -50,6 +50,11 @@ struct MissionParams {
   /// With D > 0, the deconfliction layer (sim/deconfliction.hpp) adjusts the planner's actions so
   /// that no conflict happens; false hands them to the simulator as they are (conflicts counted).
   bool deconflict = true;
+  /// Batteries (docs/model.md, "Batteries and sorties"): seconds of flight per battery; empty =
+  /// unlimited, the paper's model. Needs at least one launch site, where batteries are swapped.
+  std::optional<double> endurance_s;
+  std::optional<double> reserve_s;  ///< seconds left on landing; default 10 % of the endurance
+  double swap_time_s = 120;         ///< seconds on the ground at a site to swap a battery
   /// No-fly positions (1 = no UAV may be there, on either plane), the hull's size; null = none.
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
 
