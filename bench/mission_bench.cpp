@@ -1,9 +1,8 @@
 // One whole lawnmower mission (default hull, perfect scenario, s2 = 7): the foundation's speed.
 // The partition is computed once and shared, as the experiment runner does. Also one whole
-// Sweep-Inspect mission (combined scenario), with own-band-first on and off: what the option's
-// 14 candidate plans cost at every sweep it plans (docs/sweep-inspect.md, "The sweep"); and with
-// inspect-viewpoints on and off (imperfect scenario): what choosing a viewpoint over the
-// inspection's window costs at every step a UAV spends at z = 1.
+// Sweep-Inspect mission (docs/sweep-inspect.md, "Planner time") in the combined scenario (z = 1
+// sweeps of the dense half) and the imperfect one (the band partition's cuts balanced on planned
+// flights, which plans every UAV's sweep for each cut it tries).
 //   build/release/bench/mission_bench --benchmark_repetitions=10
 //   --benchmark_report_aggregates_only=true
 
@@ -48,23 +47,11 @@ void BM_LawnmowerMission(benchmark::State& state) {
 }
 BENCHMARK(BM_LawnmowerMission)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
 
-// Args: n, own-band-first (0 or 1), scenario (0 combined: z = 1 sweeps of the dense half;
-// 1 imperfect: balance-flights plans every UAV's sweep for each cut it tries).
+// Args: n, scenario (0 combined, 1 imperfect).
 void BM_SweepInspectMission(benchmark::State& state) {
-  run_missions(state, "sweep-inspect", state.range(2) == 0 ? "combined" : "imperfect",
-               {{"own-band-first", state.range(1) != 0 ? "true" : "false"}});
+  run_missions(state, "sweep-inspect", state.range(1) == 0 ? "combined" : "imperfect");
 }
-BENCHMARK(BM_SweepInspectMission)
-    ->ArgsProduct({{4, 8}, {0, 1}, {0, 1}})
-    ->Unit(benchmark::kMillisecond);
-
-// Args: n, inspect-viewpoints (0 or 1); imperfect scenario, where most inspections come from
-// detections of the sweep.
-void BM_SweepInspectViewpoints(benchmark::State& state) {
-  run_missions(state, "sweep-inspect", "imperfect",
-               {{"inspect-viewpoints", state.range(1) != 0 ? "true" : "false"}});
-}
-BENCHMARK(BM_SweepInspectViewpoints)->ArgsProduct({{4, 8}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SweepInspectMission)->ArgsProduct({{4, 8}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 // The simulator alone: instance generation + step loop with a trivial hovering planner is not
 // meaningful (it never completes), so time the instance draw separately.

@@ -1,7 +1,8 @@
 // The `hullinspect._core` extension: bindings of the library for the Python package
-// (python/hullinspect/__init__.py, docs/python.md). No logic of its own: missions are parsed by the
-// CLI's own option parser (mission_args.hpp) and run by the same library calls as `hullinspect
-// run`, and library errors become ValueError with the CLI's one-line message.
+// (python/hullinspect/__init__.py, docs/python.md). No logic of its own: missions are read through
+// the library's mission option declarations, as the CLI's are (mission_args.hpp), and run by the
+// same library calls as `hullinspect run`, and library errors become ValueError with the CLI's
+// one-line message.
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
@@ -14,7 +15,6 @@
 #include <memory>
 #include <optional>
 
-#include "../apps/hullinspect/mesh_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/catalog.hpp"
 #include "hullinspect/experiment/config.hpp"
@@ -25,6 +25,7 @@
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 #include "hullinspect/io/traced_mission.hpp"
+#include "hullinspect/planners/mission_input.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
@@ -57,7 +58,8 @@ py::array_t<bool> mask_array(const world::HullMask& hull) {
 }
 
 HullPtr load_hull(const std::string& path) {
-  return std::make_shared<world::HullMask>(cli::load_hull_argument(path, cli::MeshArgs{}));
+  return std::make_shared<world::HullMask>(
+      planners::load_hull_argument(path, planners::MeshInput{}));
 }
 
 HullPtr hull_or_default(const HullPtr& hull) {
@@ -65,8 +67,8 @@ HullPtr hull_or_default(const HullPtr& hull) {
 }
 
 /// The hull of a mission: the Hull object given, else --hull as the CLI loads it.
-HullPtr mission_hull(const HullPtr& given, const cli::MissionArgs& args) {
-  return given ? given : std::make_shared<world::HullMask>(cli::load_mission_hull(args));
+HullPtr mission_hull(const HullPtr& given, const planners::MissionInput& args) {
+  return given ? given : std::make_shared<world::HullMask>(planners::load_mission_hull(args));
 }
 
 py::dict result_dict(const planners::MissionSpec& spec, const sim::MissionResult& result) {
@@ -84,31 +86,29 @@ py::dict result_dict(const planners::MissionSpec& spec, const sim::MissionResult
 }
 
 /// The files a mission reads, which its trace must not replace.
-void add_mission_inputs(io::OutputSet& outputs, const cli::MissionArgs& args) {
+void add_mission_inputs(io::OutputSet& outputs, const planners::MissionInput& args) {
   if (args.hull != "default") outputs.add_input(args.hull, "hull");
   if (!args.prior.empty()) outputs.add_input(args.prior, "prior");
   if (!args.truth.empty()) outputs.add_input(args.truth, "truth");
   if (!args.no_fly.empty()) outputs.add_input(args.no_fly, "no_fly");
 }
 
-/// `hullinspect run --json WORDS` without printing: the result JSON and c(t), m(t); with
-/// `trace_path` the trace is written there too (as `run --trace`), with `keep_trace` it is
+/// `hullinspect run --json` of the mission `args` without printing: the result JSON and c(t), m(t);
+/// with `trace_path` the trace is written there too (as `run --trace`), with `keep_trace` it is
 /// returned as JSON text under "trace".
-py::dict run_mission(const std::vector<std::string>& words, const HullPtr& hull_arg,
+py::dict run_mission(const planners::MissionInput& args, const HullPtr& hull_arg,
                      const std::string& trace_path, bool keep_trace) {
   sim::MissionResult result;
   planners::MissionSpec spec;
   std::string trace_text;
   {
     py::gil_scoped_release release;  // Python planners take it back in start/decide
-    const cli::MissionArgs args = python::parse_mission_words(words);
     io::OutputSet outputs;
     add_mission_inputs(outputs, args);
     outputs.add_output(trace_path, "trace");
     outputs.check();
     const HullPtr hull = mission_hull(hull_arg, args);
-    spec = cli::build_spec(args, *hull);
-    planners::validate(spec, *hull);
+    spec = planners::build_spec(args, *hull);
     if (trace_path.empty() && !keep_trace) {
       result = planners::run_mission(spec, *hull);
     } else {
@@ -160,10 +160,9 @@ grid::Grid<std::int8_t> session_prior(const py::object& prior, const world::Hull
   return out;
 }
 
-std::unique_ptr<python::Session> make_session(const std::vector<std::string>& words,
+std::unique_ptr<python::Session> make_session(const planners::MissionInput& args,
                                               const HullPtr& hull_arg, const py::object& prior,
                                               bool keep_trace) {
-  const cli::MissionArgs args = python::parse_mission_words(words);
   if (!args.truth.empty() || !args.fail.empty() || args.fail_rate != 0 ||
       args.fail_one_within != 0 || !args.prior.empty()) {
     throw Error(
@@ -171,7 +170,7 @@ std::unique_ptr<python::Session> make_session(const std::vector<std::string>& wo
         "the truth; report failures with step(readings, failed=[…]))");
   }
   const HullPtr hull = mission_hull(hull_arg, args);
-  planners::MissionSpec spec = cli::build_spec(args, *hull);
+  planners::MissionSpec spec = planners::build_spec(args, *hull);
   auto prior_grid = session_prior(prior, *hull);
   py::gil_scoped_release release;
   return std::make_unique<python::Session>(hull, std::move(spec), std::move(prior_grid),
@@ -333,23 +332,19 @@ PYBIND11_MODULE(_core, m) {
          const OptionMap& scenario_options) {
         const std::uint64_t seed = python::seed_value(seed_arg);
         const HullPtr hull = hull_or_default(hull_arg);
-        world::CorrosionParams corrosion;
-        try {
-          corrosion = world::scenario(scenario, scenario_options).corrosion(hull->width());
-        } catch (const ParameterError& e) {  // "perfect.p-c" is --p-c, as in build_spec
-          const auto dot = e.name().find('.');
-          if (dot == std::string::npos) throw;
-          throw ParameterError(e.name().substr(dot + 1), e.problem());
-        }
+        const world::CorrosionParams corrosion =
+            planners::scenario_corrosion(scenario, scenario_options, hull->width());
         world::validate(corrosion, *hull);
         return world::generate_instance(*hull, corrosion, seed);
       },
       py::arg("hull"), py::arg("seed"), py::arg("scenario"), py::arg("options"));
 
-  m.def("mission_words", &python::mission_words, py::arg("algorithm"), py::arg("uavs"),
+  // A mission's inputs, read from keywords by mission_input and handed to run_mission or Session.
+  py::class_<planners::MissionInput>(m, "MissionInput");
+  m.def("mission_input", &python::mission_input, py::arg("algorithm"), py::arg("uavs"),
         py::arg("s2"), py::arg("seed"), py::arg("scenario"), py::arg("hull_path"),
         py::arg("options"), py::arg("params"));
-  m.def("run_mission", &run_mission, py::arg("words"), py::arg("hull"), py::arg("trace_path"),
+  m.def("run_mission", &run_mission, py::arg("mission"), py::arg("hull"), py::arg("trace_path"),
         py::arg("keep_trace"));
   m.def(
       "read_trace", [](const std::string& path) { return io::read_trace(path).dump(); },
@@ -367,7 +362,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("description"));
 
   py::class_<python::Session>(m, "Session")
-      .def(py::init(&make_session), py::arg("words"), py::arg("hull"), py::arg("prior"),
+      .def(py::init(&make_session), py::arg("mission"), py::arg("hull"), py::arg("prior"),
            py::arg("keep_trace"))
       .def("trace", [](const python::Session& s) { return s.trace().dump(); })
       .def(

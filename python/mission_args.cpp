@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "../apps/hullinspect/number_options.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/runner.hpp"
 
@@ -15,85 +14,59 @@ namespace py = pybind11;
 
 namespace {
 
-/// A Python value as the CLI would read it: True/False as true/false, numbers as Python prints
-/// them (repr of a float round-trips), anything else as str().
+/// A Python value as the command line would give it: True/False as true/false, numbers as Python
+/// prints them (repr of a float round-trips), anything else as str().
 std::string text(const py::handle& value) {
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
   return py::str(value).cast<std::string>();
 }
 
 /// A tuple as one option value: (x, y) → "x,y" for --start, (uav, t) → "uav@t" for --fail.
-std::string item_text(const std::string& flag, const py::handle& item) {
+std::string item_text(const std::string& option, const py::handle& item) {
   if (!py::isinstance<py::tuple>(item)) return text(item);
   std::string out;
   for (const auto& part : item.cast<py::tuple>()) {
-    if (!out.empty()) out += flag == "--fail" ? "@" : ",";
+    if (!out.empty()) out += option == "fail" ? "@" : ",";
     out += text(part);
   }
   return out;
 }
 
-/// The parser `hullinspect run` uses for its mission options.
-struct MissionParser {
-  cli::MissionArgs args;
-  CLI::App app{"hullinspect run"};
-  MissionParser() {
-    cli::add_mission_options(app, args);
-    cli::require_exact_numbers(app);
-  }
-};
-
 }  // namespace
 
-std::vector<std::string> mission_words(const std::string& algorithm, const py::handle& uavs,
-                                       const py::handle& s2, const py::handle& seed,
-                                       const std::string& scenario, const std::string& hull_path,
-                                       const py::dict& options, const py::dict& params) {
-  std::vector<std::string> words = {"--algorithm", algorithm, "--uavs",   text(uavs),   "--s2",
-                                    text(s2),      "--seed",  text(seed), "--scenario", scenario};
-  if (!hull_path.empty()) words.insert(words.end(), {"--hull", hull_path});
-  const MissionParser known;
+planners::MissionInput mission_input(const py::handle& algorithm, const py::handle& uavs,
+                                     const py::handle& s2, const py::handle& seed,
+                                     const py::handle& scenario, const std::string& hull_path,
+                                     const py::dict& options, const py::dict& params) {
+  planners::MissionInput input;
+  planners::set_mission_option(input, "algorithm", text(algorithm));
+  planners::set_mission_option(input, "uavs", text(uavs));
+  planners::set_mission_option(input, "s2", text(s2));
+  planners::set_mission_option(input, "seed", text(seed));
+  planners::set_mission_option(input, "scenario", text(scenario));
+  if (!hull_path.empty()) planners::set_mission_option(input, "hull", hull_path);
   for (const auto& [key, value] : params) {
     std::string name = key.cast<std::string>();
     std::replace(name.begin(), name.end(), '_', '-');
     if (name == "starts") name = "start";
-    const std::string flag = "--" + name;
-    const CLI::Option* option = known.app.get_option_no_throw(flag);
-    if (option == nullptr || name == "option" || name == "hull") {
-      words.insert(words.end(), {"-O", name + "=" + text(value)});
-    } else if (option->get_type_size() == 0) {  // a flag such as --keep-largest
-      if (value.cast<bool>()) words.push_back(flag);
-    } else if (py::isinstance<py::list>(value)) {
+    const planners::MissionOptionDecl* decl = planners::find_mission_option(name);
+    // "option" and "hull" are run_mission's own arguments: as keywords they are planner options.
+    if (decl == nullptr || name == "option" || name == "hull") {
+      input.planner_options.push_back(name + "=" + text(value));
+    } else if (decl->kind == planners::InputKind::kFlag) {
+      if (value.cast<bool>()) planners::set_mission_option(input, name, "true");
+    } else if (decl->kind == planners::InputKind::kRepeated && py::isinstance<py::list>(value)) {
       for (const auto& item : value.cast<py::list>()) {
-        words.insert(words.end(), {flag, item_text(flag, item)});
+        planners::set_mission_option(input, name, item_text(name, item));
       }
     } else {
-      words.insert(words.end(), {flag, item_text(flag, value)});
+      planners::set_mission_option(input, name, item_text(name, value));
     }
   }
   for (const auto& [key, value] : options) {
-    words.insert(words.end(), {"-O", key.cast<std::string>() + "=" + text(value)});
+    input.planner_options.push_back(key.cast<std::string>() + "=" + text(value));
   }
-  return words;
-}
-
-cli::MissionArgs parse_mission_words(const std::vector<std::string>& words) {
-  MissionParser parser;
-  std::vector<std::string> reversed(words.rbegin(), words.rend());  // CLI11 takes them reversed
-  try {
-    parser.app.parse(reversed);
-  } catch (const CLI::ParseError& e) {
-    // "--uavs: 'x' is not a valid value (see --help)": name the keyword, not the option.
-    std::string message = cli::parse_error_message(e);
-    const std::string help = " (see --help)";
-    if (message.ends_with(help)) message.resize(message.size() - help.size());
-    const auto colon = message.find(": ");
-    if (message.rfind("--", 0) == 0 && colon != std::string::npos) {
-      throw ParameterError(message.substr(2, colon - 2), message.substr(colon + 2));
-    }
-    throw Error(message);
-  }
-  return parser.args;
+  return input;
 }
 
 std::string python_keyword(const std::string& name) {
@@ -127,7 +100,7 @@ std::uint64_t seed_value(const py::handle& seed) {
 }
 
 py::dict mission_defaults() {
-  const cli::MissionArgs args;
+  const planners::MissionInput args;
   py::dict out;
   out["algorithm"] = args.algorithm;
   out["uavs"] = args.uavs;

@@ -96,7 +96,7 @@ std::vector<std::array<int, 3>> Session::expected_readings(const std::vector<int
       }
       if (u.in_transit()) continue;
     }
-    const int half = (params.footprint(u.z) - 1) / 2;
+    const int half = params.half_side(u.z);
     for (int y = std::max(0, u.pos.y - half); y <= std::min(hull_->height() - 1, u.pos.y + half);
          ++y) {
       for (int x = std::max(0, u.pos.x - half); x <= std::min(hull_->width() - 1, u.pos.x + half);

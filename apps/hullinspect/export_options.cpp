@@ -11,9 +11,11 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/io/geo_survey.hpp"
+#include "hullinspect/planners/mission_input.hpp"
+#include "hullinspect/world/ship_frame_bounds.hpp"
 
 #include <algorithm>
-#include <sstream>
 
 namespace hullinspect::cli {
 
@@ -91,6 +93,92 @@ void refuse_duplicate_keys(const YAML::Node& map, const std::string& path) {
   }
 }
 
+// A number of a geo-reference file, with the number rules and ranges of --origin and --heading
+// (core/numbers.hpp).
+double yaml_number(const YAML::Node& node, const std::string& field, double min, double max,
+                   const std::string& path) {
+  const int line = node.Mark().line + 1;
+  if (!node.IsScalar()) throw InputError(path, line, field + ": expected a number");
+  try {
+    return parse_real(node.Scalar(), min, max);
+  } catch (const NumberError& e) {
+    throw InputError(path, line, field + ": " + e.what());
+  }
+}
+
+// [LAT, LON, ALT] (the caller checked the sequence's size).
+io::GeoPoint geo_point(const YAML::Node& node, const std::string& field, const std::string& path) {
+  return {
+      yaml_number(node[0], field + "[0] (latitude)", -io::kMaxLatitudeDeg, io::kMaxLatitudeDeg,
+                  path),
+      yaml_number(node[1], field + "[1] (longitude)", -io::kMaxLongitudeDeg, io::kMaxLongitudeDeg,
+                  path),
+      yaml_number(node[2], field + "[2] (height)", io::kMinOriginAltM, io::kMaxOriginAltM, path)};
+}
+
+// survey: [{ship: [X, Y, Z] or [X, Z], at: [LAT, LON, ALT]}, {…}] and an optional tolerance: M
+// (docs/export.md, "Two surveyed points").
+io::GeoReference geo_from_survey_yaml(const YAML::Node& doc, const std::string& path) {
+  for (const auto& entry : doc) {
+    const std::string key = entry.first.Scalar();
+    if (key != "survey" && key != "tolerance") {
+      throw InputError(path, entry.first.Mark().line + 1,
+                       fmt::format("{}: not with survey (a survey gives the origin and the "
+                                   "heading; known: survey, tolerance)",
+                                   escape_for_message(key, 200)));
+    }
+  }
+  const auto survey = doc["survey"];
+  if (!survey.IsSequence() || survey.size() != 2) {
+    throw InputError(path, survey.Mark().line + 1,
+                     "survey: expected two points, each {ship: [X, Y, Z], at: [LAT, LON, ALT]}");
+  }
+  io::SurveyedPoint points[2];
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto node = survey[i];
+    const std::string field = fmt::format("survey[{}]", i);
+    const int line = node.Mark().line + 1;
+    if (!node.IsMap() || !node["ship"] || !node["at"]) {
+      throw InputError(path, line, field + ": expected {ship: [X, Y, Z], at: [LAT, LON, ALT]}");
+    }
+    refuse_duplicate_keys(node, path);
+    for (const auto& entry : node) {
+      const std::string key = entry.first.Scalar();
+      if (key != "ship" && key != "at") {
+        throw InputError(path, entry.first.Mark().line + 1,
+                         fmt::format("{}.{}: unknown key (known: ship, at)", field,
+                                     escape_for_message(key, 200)));
+      }
+    }
+    const auto ship = node["ship"];
+    if (!ship.IsSequence() || (ship.size() != 2 && ship.size() != 3)) {
+      throw InputError(path, ship.Mark().line + 1,
+                       field + ".ship: expected [X, Y, Z] or [X, Z] in metres of the ship frame");
+    }
+    const auto metres = [&](std::size_t k, const char* axis) {
+      return yaml_number(ship[k], fmt::format("{}.ship ({})", field, axis), -world::kMaxShipFrameM,
+                         world::kMaxShipFrameM, path);
+    };
+    auto& p = points[i];
+    p.x = metres(0, "X");
+    p.y = ship.size() == 3 ? metres(1, "Y") : 0.0;
+    p.z = metres(ship.size() - 1, "Z");
+    const auto at = node["at"];
+    if (!at.IsSequence() || at.size() != 3) {
+      throw InputError(path, at.Mark().line + 1, field + ".at: expected [LAT, LON, ALT]");
+    }
+    p.at = geo_point(at, field + ".at", path);
+  }
+  const double tolerance = doc["tolerance"]
+                               ? yaml_number(doc["tolerance"], "tolerance", 0.0, 1e3, path)
+                               : io::kDefaultSurveyToleranceM;
+  try {
+    return io::geo_from_survey(points[0], points[1], tolerance);
+  } catch (const ParameterError& e) {
+    throw InputError(path, survey.Mark().line + 1, "survey: " + e.problem());
+  }
+}
+
 io::GeoReference geo_from_yaml(const std::string& path) {
   // Read like every input (bounded, regular files only, registered against the outputs).
   const std::string text = io::read_file(path, kMaxGeoFileBytes, "the geo-reference file");
@@ -104,6 +192,7 @@ io::GeoReference geo_from_yaml(const std::string& path) {
     throw InputError(path, 0, "expected a YAML mapping with origin: [LAT, LON, ALT] and heading");
   }
   refuse_duplicate_keys(doc, path);
+  if (doc["survey"]) return geo_from_survey_yaml(doc, path);
   const auto origin = doc["origin"];
   if (!origin || !origin.IsSequence() || origin.size() != 3) {
     throw InputError(path, origin ? origin.Mark().line + 1 : 0, "origin: expected [LAT, LON, ALT]");
@@ -112,38 +201,9 @@ io::GeoReference geo_from_yaml(const std::string& path) {
   if (!heading || !heading.IsScalar()) {
     throw InputError(path, 0, "heading: expected degrees clockwise from north");
   }
-  // The same number rules and ranges as --origin and --heading (core/numbers.hpp).
-  const auto number = [&path](const YAML::Node& node, const std::string& field, double min,
-                              double max) {
-    const int line = node.Mark().line + 1;
-    if (!node.IsScalar()) throw InputError(path, line, field + ": expected a number");
-    try {
-      return parse_real(node.Scalar(), min, max);
-    } catch (const NumberError& e) {
-      throw InputError(path, line, field + ": " + e.what());
-    }
-  };
-  const io::GeoPoint point{
-      number(origin[0], "origin[0] (latitude)", -io::kMaxLatitudeDeg, io::kMaxLatitudeDeg),
-      number(origin[1], "origin[1] (longitude)", -io::kMaxLongitudeDeg, io::kMaxLongitudeDeg),
-      number(origin[2], "origin[2] (height)", io::kMinOriginAltM, io::kMaxOriginAltM)};
-  return io::GeoReference(point,
-                          number(heading, "heading", -io::kMaxHeadingDeg, io::kMaxHeadingDeg));
-}
-
-}  // namespace
-
-namespace {
-
-grid::Cell parse_launch_site(const std::string& text) {
-  grid::Cell c;
-  char comma = 0;
-  std::istringstream in(text);
-  if (!(in >> c.x >> comma >> c.y) || comma != ',' || !(in >> std::ws).eof()) {
-    throw ParameterError("launch",
-                         fmt::format("expects X,Y, a grid position in cells (got '{}')", text));
-  }
-  return c;
+  const io::GeoPoint point = geo_point(origin, "origin", path);
+  return io::GeoReference(
+      point, yaml_number(heading, "heading", -io::kMaxHeadingDeg, io::kMaxHeadingDeg, path));
 }
 
 }  // namespace
@@ -183,7 +243,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
                          fmt::format("'{}' is not a finish (expected land or rtl)", a.finish));
   }
   r.settings.drone = io::parse_dji_drone(a.drone);
-  for (const auto& text : a.launch) r.settings.launch_sites.push_back(parse_launch_site(text));
+  for (const auto& text : a.launch) r.settings.launch_sites.push_back(planners::parse_xy(text, "launch"));
   if (a.max_waypoints) {
     if (*a.max_waypoints < io::kMinWaypointCap) {
       throw ParameterError("max-waypoints",

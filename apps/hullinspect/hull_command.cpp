@@ -11,7 +11,7 @@
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/output_set.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
-#include "mesh_options.hpp"
+#include "mission_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -20,7 +20,7 @@ namespace {
 struct HullImportArgs {
   std::string mesh;
   std::string out;
-  MeshArgs options;
+  MissionArgs options;  // only its mesh options are registered
 };
 
 std::string output_path(const std::string& out) {
@@ -33,13 +33,13 @@ int import(const HullImportArgs& args) {
   io::OutputSet outputs;
   outputs.add_output(out, "out");
   outputs.check();
-  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options);
+  const world::MeshImport imported = import_mesh_argument(args.mesh, args.options.mesh);
   const world::HullMask& hull = imported.hull;
   const world::HullGeometry& g = *hull.geometry();
   outputs.write(out, world::to_hull_json(hull));
   if (g.unrolled()) {
     std::cout << fmt::format("{}: {} facets, unrolled (port, bow, starboard{})\n", args.mesh,
-                             imported.facets, args.options.include.empty() ? "" : ", transom");
+                             imported.facets, args.options.mesh.include.empty() ? "" : ", transom");
   } else {
     std::cout << fmt::format("{}: {} facets, {} facing {}\n", args.mesh, imported.facets,
                              imported.facing_facets, world::to_string(g.side));
@@ -61,7 +61,7 @@ int import(const HullImportArgs& args) {
         "bow; Z0 = {:.3f} m\n",
         metres(g.x0), metres(g.x0 + hull.width() * g.cell_size), metres(g.z0));
     // The grid closes on itself, but no flight links its ends (docs/model.md "Neighbour flights").
-    if (!args.options.include.empty()) {
+    if (!args.options.mesh.include.empty()) {
       std::cout << "  seam: columns 0 and " << hull.width() - 1
                 << " meet at the transom and are not linked: flights between them go around the "
                    "bow\n";

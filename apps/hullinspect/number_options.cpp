@@ -54,23 +54,6 @@ void require_exact_numbers(CLI::App& app) {
   attach(app);
 }
 
-grid::Cell parse_xy(const std::string& text, const std::string& option) {
-  const auto comma = text.find(',');
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
-    throw ParameterError(option, fmt::format("expects X,Y (got '{}')", escape_for_message(text)));
-  }
-  try {
-    const int x = parse_integer<int>(std::string_view(text).substr(0, comma));
-    const int y = parse_integer<int>(std::string_view(text).substr(comma + 1));
-    return {x, y};
-  } catch (const NumberError&) {
-    throw ParameterError(
-        option, fmt::format("expects X,Y with integers X and Y in [{}, {}] (got '{}')",
-                            std::numeric_limits<int>::min(), std::numeric_limits<int>::max(),
-                            escape_for_message(text)));
-  }
-}
-
 std::string parse_error_message(const CLI::ParseError& e) {
   std::string message = e.what();
   const std::string prefix = "Could not convert: ";

@@ -23,13 +23,8 @@ CLI::Validator real_in(double min, double max);
 /// ±kRealLimit) option of `app` and its subcommands. Call after every command is registered.
 void require_exact_numbers(CLI::App& app);
 
-/// Parses "X,Y" (a --start value) exactly: two integers in the int range, nothing else.
-/// Throws ParameterError(option, …).
-grid::Cell parse_xy(const std::string& text, const std::string& option = "start");
-
 /// A CLI11 parse error as one of our messages: "Could not convert: --uavs,-n = abc" becomes
-/// "--uavs: 'abc' is not a valid value"; every message ends in " (see --help)". The CLI and the
-/// Python module (which parses its keyword arguments as a command line) both print this.
+/// "--uavs: 'abc' is not a valid value"; every message ends in " (see --help)".
 std::string parse_error_message(const CLI::ParseError& e);
 
 }  // namespace hullinspect::cli

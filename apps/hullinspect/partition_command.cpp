@@ -17,7 +17,6 @@
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
-#include "mesh_options.hpp"
 #include "mission_options.hpp"
 #include "number_options.hpp"
 
@@ -39,11 +38,9 @@ struct PartitionArgs {
   bool json = false;
   bool no_fallback = false;  // the partitioner's own result, without the missions' fallback
   std::string out_path;
-  std::string no_fly;
-  std::vector<std::string> no_fly_boxes;
   int s1 = world::MissionParams{}.s1;  // footprints: which flight component sees a hull cell
   int s2 = world::MissionParams{}.s2;
-  MeshArgs mesh;  // how a mesh --hull is imported
+  MissionArgs declared;  // the mesh (how a mesh --hull is imported) and no-fly options
 };
 
 // Explicit starts that snap onto one hull cell: name the cells as the user gave them.
@@ -225,13 +222,13 @@ int run_partition(const PartitionArgs& args) {
   if (args.hull != "default") outputs.add_input(args.hull, "hull");
   outputs.add_output(args.out_path, "out");
   outputs.check();
-  const world::HullMask hull = load_hull_argument(args.hull, args.mesh);
+  const world::HullMask hull = load_hull_argument(args.hull, args.declared.mesh);
   world::MissionParams params;
   params.uavs = args.uavs;
   params.s1 = args.s1;
   params.s2 = args.s2;
   for (const auto& s : args.starts) params.starts.push_back(parse_xy(s));
-  params.no_fly = build_no_fly(args.no_fly, args.no_fly_boxes, hull);
+  params.no_fly = build_no_fly(args.declared.no_fly, args.declared.no_fly_boxes, hull);
   try {
     world::validate(params, hull);
   } catch (const ParameterError& e) {
@@ -315,7 +312,7 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
                   "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
       ->type_name("FILE")
       ->capture_default_str();
-  add_mesh_options(*cmd, args->mesh);
+  add_mesh_options(*cmd, args->declared);
   cmd->add_option("--start", args->starts,
                   "Start cell x,y of each UAV (repeat once per UAV; default: spread along the "
                   "hull); cells off the hull are snapped to the nearest hull cell")
@@ -330,7 +327,7 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
   cmd->add_flag("--no-fallback", args->no_fallback,
                 "Show the partitioner's own result, even when a mission would fall back to "
                 "transfer's partition");
-  add_no_fly_options(*cmd, args->no_fly, args->no_fly_boxes);
+  add_no_fly_options(*cmd, args->declared);
   cmd->add_option("--s1", args->s1,
                   "Footprint side at z = 1 (with no-fly zones: which hull cells can be inspected "
                   "and from where)")

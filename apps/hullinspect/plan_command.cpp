@@ -73,8 +73,7 @@ int plan(const PlanArgs& args) {
     declare_export_files(outputs, *export_request, spec.params.uavs);
     outputs.check();
   }
-  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
-  world::apply(spec.maps, instance);  // the user's --prior, if given
+  auto instance = planners::mission_instance(spec, hull);  // the user's --prior, if given
   if (args.mission.prior.empty() && !args.synthetic) {
     // No corrosion is known before take-off: clean hull cells, never a random map.
     for (int y = 0; y < instance.prior.height(); ++y) {
@@ -86,13 +85,12 @@ int plan(const PlanArgs& args) {
     instance.prior_false_positive_centres = 0;
   }
   instance.truth = instance.prior;  // the world as known before take-off
-  auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
   io::TraceRecorder recorder(instance, io::spec_json(spec, hull.source()));
   planners::MissionOptions options;
   options.observers.push_back(&recorder);
-  options.corrosion = planners::prior_statistics(spec);
-  const sim::MissionResult result =
-      planners::run_mission(hull, instance, spec.params, *planner, options);
+  planners::MissionSpec planned = spec;
+  planned.failures = {};  // a plan is the flight without failures: none is known before take-off
+  const sim::MissionResult result = planners::run_mission(planned, hull, instance, options);
   const auto trace = recorder.finish(result);
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   ExportWritten written;
@@ -115,9 +113,7 @@ int plan(const PlanArgs& args) {
     outputs.commit();
     return result.complete ? 0 : 3;
   }
-  auto time = [](const std::optional<int>& t) {
-    return t ? fmt::format("{} s", *t) : std::string("—");
-  };
+  auto time = [&](const std::optional<int>& t) { return io::seconds_text(spec.params, t); };
   const auto total = result.totals();
   std::cout << fmt::format("{} with {}, s1 = {}, s2 = {}, seed {}: planned on {}{}\n",
                            spec.algorithm, plural(spec.params.uavs, "UAV"), spec.params.s1,

@@ -14,6 +14,7 @@
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/io/viewer_html.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/scenario.hpp"
 #include "mission_options.hpp"
 
@@ -48,9 +49,7 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
     }
     std::cout << fmt::format("  failed: {}\n", which);
   }
-  auto time = [](const std::optional<int>& t) {
-    return t ? fmt::format("{} s", *t) : std::string("—");
-  };
+  auto time = [&](const std::optional<int>& t) { return io::seconds_text(spec.params, t); };
   std::cout << fmt::format("  T_c = {}   T_m = {}   ({} corroded of {} hull cells)\n", time(r.t_c),
                            time(r.t_m), r.corroded_cells, r.hull_cells);
   if (r.unreachable_cells > 0 || r.unreachable_z2_cells > 0) {
@@ -58,6 +57,14 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
         "  no-fly zones: {} hull cells cannot be inspected, {} cannot be seen at all "
         "(docs/model.md: what cannot reach its final state is not counted)\n",
         r.unreachable_cells, r.unreachable_z2_cells);
+  }
+  if (r.min_battery()) {
+    // Batteries (docs/model.md, "Batteries and sorties"), beside the bound they force.
+    std::cout << fmt::format(
+        "  batteries: {} sorties, {} swaps, {} crashes, least left airborne {} s; lower bound "
+        "T_c >= {} s, T_m >= {} s\n",
+        r.sorties(), total.swaps, r.battery_crashes, world::battery_seconds(spec.params, *r.min_battery()),
+        spec.params.seconds(r.bound_t_c), spec.params.seconds(r.bound_t_m));
   }
   if (r.min_separation) {
     std::cout << fmt::format("  separation {}: {} conflicts, smallest separation flown {}\n",
@@ -92,9 +99,7 @@ int run(const RunArgs& args) {
     declare_export_files(outputs, *export_request, spec.params.uavs);
     outputs.check();
   }
-  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
-  world::apply(spec.maps, instance);
-  auto planner = planners::make_planner(spec.algorithm, spec.planner_options);
+  const auto instance = planners::mission_instance(spec, hull);
   const bool tracing = !args.trace_path.empty() || !args.html_path.empty() || export_request;
   std::optional<io::TraceRecorder> recorder;
   planners::MissionOptions options;
@@ -102,10 +107,7 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
-  options.failures = spec.failures;
-  options.corrosion = planners::prior_statistics(spec);
-  const sim::MissionResult result =
-      planners::run_mission(hull, instance, spec.params, *planner, options);
+  const sim::MissionResult result = planners::run_mission(spec, hull, instance, options);
   if (tracing) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");

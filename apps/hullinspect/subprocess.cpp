@@ -12,6 +12,8 @@
 #include <string>
 #include <thread>
 
+#include "hullinspect/files/pending_temporaries.hpp"
+
 extern char** environ;
 
 namespace hullinspect::cli {
@@ -22,9 +24,31 @@ std::atomic<int> g_signal{0};
 struct sigaction g_old_int {};
 struct sigaction g_old_term {};
 
+// True from just before a child is spawned until it has been reaped.
+std::atomic<bool> g_child_running{false};
+
+// While a child runs, the signal is remembered: run_process stops the child and the command
+// unwinds. Otherwise nothing needs waiting for, and the command stops at once (within a second
+// even while it reads or computes between checks): the pending temporaries and staging
+// directories are removed and hullinspect dies of the signal.
 void remember_signal(int signal) {
   g_signal.store(signal);
+  if (g_child_running.load()) return;
+  io::remove_pending_temporaries();
+  struct sigaction defaults {};
+  defaults.sa_handler = SIG_DFL;
+  sigemptyset(&defaults.sa_mask);
+  ::sigaction(signal, &defaults, nullptr);
+  ::raise(signal);
 }
+
+// Marks a child as running for the lifetime of one run_process call.
+struct ChildRunning {
+  ChildRunning() { g_child_running.store(true); }
+  ~ChildRunning() { g_child_running.store(false); }
+  ChildRunning(const ChildRunning&) = delete;
+  ChildRunning& operator=(const ChildRunning&) = delete;
+};
 
 using Clock = std::chrono::steady_clock;
 
@@ -81,6 +105,7 @@ void InterruptGuard::die(int signal) {
 
 ProcessResult run_process(const std::vector<std::string>& argv, const std::filesystem::path& log,
                           double seconds) {
+  const ChildRunning running;
   InterruptGuard::check();
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));

@@ -22,8 +22,10 @@ class Interrupted : public std::runtime_error {
   int signal_;
 };
 
-/// While alive, SIGINT and SIGTERM only set a flag that check() and run_process turn into
-/// Interrupted; the previous handlers come back with its destruction.
+/// While alive, SIGINT and SIGTERM during run_process only set a flag that run_process (and
+/// check()) turn into Interrupted, after stopping the child; at any other time they remove the
+/// pending temporaries and staging directories and end hullinspect at once, by the signal. The
+/// previous handlers come back with its destruction.
 class InterruptGuard {
  public:
   InterruptGuard();

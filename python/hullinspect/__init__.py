@@ -44,9 +44,10 @@ def _hull_arguments(hull):
     return None, os.fspath(hull)
 
 
-def _words(algorithm, uavs, s2, seed, scenario, hull_path, options, params):
-    """The `hullinspect run` command line for these arguments (parsed by the CLI's own parser)."""
-    return _core.mission_words(str(algorithm), uavs, s2, seed, str(scenario), hull_path,
+def _mission(algorithm, uavs, s2, seed, scenario, hull_path, options, params):
+    """The mission of these arguments, read through the declarations of `hullinspect run`'s
+    options (same checks, same messages)."""
+    return _core.mission_input(algorithm, uavs, s2, seed, scenario, hull_path,
                                dict(options or {}), params)
 
 
@@ -85,11 +86,11 @@ def run_mission(algorithm=_DEFAULTS["algorithm"], uavs=_DEFAULTS["uavs"], s2=_DE
     with the CLI's KEY=VALUE keys, e.g. {"tsp.max-segments": 12}), is a planner option (-O).
     """
     hull_object, hull_path = _hull_arguments(hull)
-    words = _words(algorithm, uavs, s2, seed, scenario, hull_path, options, params)
+    mission = _mission(algorithm, uavs, s2, seed, scenario, hull_path, options, params)
     trace_path = "" if trace is None else os.fspath(trace)
     if trace is not None and not trace_path:
         raise ValueError("trace: expected a file path (got an empty one)")
-    return MissionResult(_core.run_mission(words, hull_object, trace_path,
+    return MissionResult(_core.run_mission(mission, hull_object, trace_path,
                                            bool(keep_trace) or bool(trace_path)))
 
 
@@ -184,7 +185,7 @@ def catalog(kind=""):
 class Session:
     """A live mission: the planner steered by what the cameras saw (docs/python.md, "Live session").
 
-    Session(algorithm, hull=None, prior=None, uavs=4, s2=7, options=None, **params) takes the
+    Session(algorithm, hull=None, prior=None, uavs=…, s2=…, options=None, **params) takes the
     mission options of run_mission except the instance (scenario, seed, truth, failures): the
     truth is what step() is told. prior: C' as None (no expected corrosion), a map file (any
     hull-mask format) or an array [y][x] with 1 on expected corrosion.
@@ -205,9 +206,9 @@ class Session:
                 raise ValueError(f"Session: {key} does not apply to a live session (the readings "
                                  "are the truth)")
         hull_object, hull_path = _hull_arguments(hull)
-        words = _words(algorithm, uavs, s2, _DEFAULTS["seed"], _DEFAULTS["scenario"], hull_path,
-                       options, params)
-        self._session = _core.Session(words, hull_object, prior, bool(keep_trace))
+        mission = _mission(algorithm, uavs, s2, _DEFAULTS["seed"], _DEFAULTS["scenario"],
+                           hull_path, options, params)
+        self._session = _core.Session(mission, hull_object, prior, bool(keep_trace))
 
     def step(self, readings, failed=()):
         return self._session.step(readings, [int(k) for k in failed])

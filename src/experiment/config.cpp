@@ -6,13 +6,16 @@
 #include <algorithm>
 #include <set>
 
+#include "config_battery.hpp"
 #include "config_launch.hpp"
+#include "config_speed.hpp"
 #include "config_no_fly.hpp"
 #include "config_scenarios.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/bounded_read.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "yaml_fields.hpp"
@@ -95,25 +98,37 @@ void read_mesh_hull(const YamlFields& f, const YAML::Node& h, const std::filesys
   }
 }
 
+// The stable id of a map's cells (-1 not hull, 0 clean, 1 corroded), row by row.
+std::string map_hash(const world::CorrosionMap& map) {
+  std::string cells;
+  for (const auto v : map.cells.values()) cells += static_cast<char>('1' + v);
+  return stable_id(cells);
+}
+
 void read_user_maps(const YamlFields& f, const YAML::Node& root,
                     const std::filesystem::path& base_dir, ExperimentConfig& c) {
-  const auto path = [&](const char* key) {
-    return root[key] ? resolved(f.as_string(root[key], key), base_dir).string() : std::string();
+  // Each file is recorded as the config names it and found from the config's directory, so that
+  // the fingerprint does not depend on how the config's own path was spelled.
+  const auto name = [&](const char* key) {
+    return root[key] ? f.as_string(root[key], key) : std::string();
   };
-  c.prior_path = path("prior");
-  c.truth_path = path("truth");
+  const auto path = [&](const std::string& named) {
+    return named.empty() ? named : resolved(named, base_dir).string();
+  };
+  c.prior_path = name("prior");
+  c.truth_path = name("truth");
   try {
-    c.maps.prior = world::load_user_maps(c.prior_path, "", *c.hull).prior;
+    c.maps.prior = world::load_user_maps(path(c.prior_path), "", *c.hull).prior;
   } catch (const InputError& e) {
     f.fail(root["prior"], "prior", e.what());
   }
   try {
-    c.maps.truth = world::load_user_maps("", c.truth_path, *c.hull).truth;
+    c.maps.truth = world::load_user_maps("", path(c.truth_path), *c.hull).truth;
   } catch (const InputError& e) {
     f.fail(root["truth"], "truth", e.what());
   }
-  c.prior_defects_path = path("prior-defects");
-  c.truth_defects_path = path("truth-defects");
+  c.prior_defects_path = name("prior-defects");
+  c.truth_defects_path = name("truth-defects");
   if (root["frame-spacing"]) {
     c.frame_spacing = f.as_number(root["frame-spacing"], "frame-spacing", 1e-3, 1e3);
   }
@@ -127,13 +142,16 @@ void read_user_maps(const YamlFields& f, const YAML::Node& root,
     }
     try {
       map = std::make_shared<const world::CorrosionMap>(
-          world::load_defect_map(file, *c.hull, frames));
+          world::load_defect_map(path(file), *c.hull, frames));
     } catch (const InputError& e) {
       f.fail(root[key], key, e.what());
     }
   };
   defects("prior-defects", "prior", c.prior_defects_path, c.maps.prior);
   defects("truth-defects", "truth", c.truth_defects_path, c.maps.truth);
+  // The maps' contents identify the experiment, so a file changed under the same name is another.
+  if (c.maps.prior) c.prior_hash = map_hash(*c.maps.prior);
+  if (c.maps.truth) c.truth_hash = map_hash(*c.maps.truth);
 }
 
 /// `prior:` replaces the generated C′ and `truth:` the generated C (docs/model.md): a scenario or
@@ -235,8 +253,8 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   // A hull with geometry is identified by its geometry too; plain masks keep their old ids.
   c.hull_hash =
       stable_id(c.hull->geometry() ? world::to_hull_json(*c.hull) : world::to_text_mask(*c.hull));
-  if (const auto g = root["grid"]; c.hull->geometry() && g && g["cell_size"] &&
-                                   c.cell_size != c.hull->geometry()->cell_size) {
+  if (const auto g = root["grid"];
+      c.hull->geometry() && g && g["cell_size"] && c.cell_size != c.hull->geometry()->cell_size) {
     f.fail(g["cell_size"], "grid.cell_size",
            fmt::format("is {} but the hull's geometry has cells of {} m", c.cell_size,
                        c.hull->geometry()->cell_size));
@@ -336,6 +354,14 @@ std::vector<int> CurveGrid::times() const {
   return t;
 }
 
+world::MissionParams ExperimentConfig::timing() const {
+  world::MissionParams p;
+  p.cell_size_m = cell_size;
+  p.speed_m_s = speed;
+  p.climb_speed_m_s = climb_speed;
+  return p;
+}
+
 int ExperimentConfig::line_of(const std::string& key) const {
   auto it = lines.find(key);
   return it == lines.end() ? 0 : it->second;
@@ -360,7 +386,8 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "sweeps",        "s1",          "s2",        "theta",         "uavs",
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly",      "launch",        "separation"});
+                "frame-spacing", "no-fly",      "launch",        "separation",    "speed",
+                "climb-speed", "battery"});
   for (const char* key :
        {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
     remember_line(c, root, key);
@@ -382,11 +409,14 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
     c.separation = f.as_int(root["separation"], "separation", 0, kMaxSide);
   }
   if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
+  detail::read_speed(f, root, c);
   detail::read_launch(f, root, c);
+  detail::read_battery(f, root, c);
   if (root["algorithms"]) {
     c.algorithms = read_algorithms(f, root["algorithms"]);
   } else {
-    c.algorithms = {AlgorithmSpec{"lawnmower", "lawnmower", {}, 0}};
+    const std::string algorithm = planners::MissionSpec{}.algorithm;  // the one default planner
+    c.algorithms = {AlgorithmSpec{algorithm, algorithm, {}, 0}};
   }
   read_instances(f, root, c);
   if (const auto curve = root["curve"]) {
@@ -463,6 +493,8 @@ nlohmann::json config_json(const ExperimentConfig& c) {
   if (!c.truth_path.empty()) j["truth"] = c.truth_path;
   if (!c.prior_defects_path.empty()) j["prior_defects"] = c.prior_defects_path;
   if (!c.truth_defects_path.empty()) j["truth_defects"] = c.truth_defects_path;
+  if (!c.prior_hash.empty()) j["prior_hash"] = c.prior_hash;
+  if (!c.truth_hash.empty()) j["truth_hash"] = c.truth_hash;
   if (c.frame_spacing) j["frame_spacing"] = *c.frame_spacing;
   json scenarios = json::array();
   for (const auto& s : c.scenarios) {
@@ -501,6 +533,12 @@ nlohmann::json config_json(const ExperimentConfig& c) {
     j["launch"] = {{"sites", sites}, {"transfer", c.launch_transfer}};
     if (c.takeoff_time) j["launch"]["takeoff_time"] = *c.takeoff_time;
   }
+  if (c.endurance) {  // only then, so that every other manifest keeps its bytes
+    j["battery"] = {{"endurance", *c.endurance}, {"swap_time", c.swap_time}};
+    if (c.reserve) j["battery"]["reserve"] = *c.reserve;
+  }
+  if (c.speed) j["speed"] = *c.speed;  // only when given: manifests unchanged
+  if (c.climb_speed) j["climb_speed"] = *c.climb_speed;
   j["curve"] = {{"step", c.curve.step}, {"end", c.curve.end}};
   return j;
 }
@@ -525,6 +563,8 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       c.prior_defects_path = j.at("prior_defects").get<std::string>();
     if (j.contains("truth_defects"))
       c.truth_defects_path = j.at("truth_defects").get<std::string>();
+    if (j.contains("prior_hash")) c.prior_hash = j.at("prior_hash").get<std::string>();
+    if (j.contains("truth_hash")) c.truth_hash = j.at("truth_hash").get<std::string>();
     if (j.contains("frame_spacing")) c.frame_spacing = j.at("frame_spacing").get<double>();
     for (const auto& s : j.at("scenarios")) {
       ScenarioSpec spec;
@@ -561,10 +601,19 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
     c.time_limit = j.at("time_limit").get<int>();
     if (j.contains("launch")) {
       const auto& l = j.at("launch");
-      for (const auto& s : l.at("sites")) c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
+      for (const auto& s : l.at("sites"))
+        c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
       c.launch_transfer = l.at("transfer").get<double>();
       if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
     }
+    if (j.contains("battery")) {
+      const auto& b = j.at("battery");
+      c.endurance = b.at("endurance").get<double>();
+      c.swap_time = b.at("swap_time").get<double>();
+      if (b.contains("reserve")) c.reserve = b.at("reserve").get<double>();
+    }
+    if (j.contains("speed")) c.speed = j.at("speed").get<double>();
+    if (j.contains("climb_speed")) c.climb_speed = j.at("climb_speed").get<double>();
     c.curve.step = j.at("curve").at("step").get<int>();
     c.curve.end = j.at("curve").at("end").get<int>();
     if (c.curve.step < 1) throw InputError(source, 0, "config.curve.step must be at least 1");

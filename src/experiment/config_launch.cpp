@@ -31,11 +31,13 @@ void read_launch(const YamlFields& f, const YAML::Node& root, ExperimentConfig& 
     }
     c.launch_sites.push_back(p.launch_sites.front());
   }
+  // Times in seconds, up to the time limit in seconds (read_speed() came first).
+  const double limit_s = c.time_limit * c.timing().step_seconds();
   if (node["transfer"]) {
-    c.launch_transfer = f.as_number(node["transfer"], "launch.transfer", 0, c.time_limit);
+    c.launch_transfer = f.as_number(node["transfer"], "launch.transfer", 0, limit_s);
   }
   if (node["takeoff-time"]) {
-    c.takeoff_time = f.as_number(node["takeoff-time"], "launch.takeoff-time", 0, c.time_limit);
+    c.takeoff_time = f.as_number(node["takeoff-time"], "launch.takeoff-time", 0, limit_s);
   }
 }
 

@@ -113,4 +113,13 @@ int csv_int(const std::string& field, const std::string& source, int line,
   }
 }
 
+double csv_seconds(const std::string& field, const std::string& source, int line,
+                   const std::string& column) {
+  try {
+    return parse_real(field, 0, 1e15);
+  } catch (const NumberError& e) {
+    throw InputError(source, line, fmt::format("{}: {}", column, e.what()));
+  }
+}
+
 }  // namespace hullinspect::experiment

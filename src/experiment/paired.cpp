@@ -35,7 +35,7 @@ using CellRuns = std::map<std::string, std::map<std::string, Times>>;
 std::optional<double> parse_time(const std::string& s, const std::string& source, int line,
                                  const std::string& column) {
   if (s.empty()) return std::nullopt;
-  return csv_int(s, source, line, column);
+  return csv_seconds(s, source, line, column);
 }
 
 // Algorithms whose planner sees the ground truth (an oracle: its registry entry says

@@ -17,6 +17,18 @@ std::string launch_key(const ExperimentConfig& c) {
   for (const auto& s : c.launch_sites) key += fmt::format("{},{};", s.x, s.y);
   key += fmt::format("transfer={}", c.launch_transfer);
   if (c.takeoff_time) key += fmt::format(";takeoff={}", *c.takeoff_time);
+  if (c.endurance) {
+    key += fmt::format("|battery={};swap={}", *c.endurance, c.swap_time);
+    if (c.reserve) key += fmt::format(";reserve={}", *c.reserve);
+  }
+  return key;
+}
+
+// Likewise only configs with a speed: every other run keeps its id.
+std::string speed_key(const ExperimentConfig& c) {
+  std::string key;
+  if (c.speed) key += fmt::format("|speed={}", *c.speed);
+  if (c.climb_speed) key += fmt::format("|climb_speed={}", *c.climb_speed);
   return key;
 }
 
@@ -46,7 +58,9 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
          (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
          (s.no_fly_spec.is_null() ? std::string()
                                   : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
-         launch_key(c) +
+         // The user's maps by content, as no-fly zones: only configs with them say so.
+         (c.prior_hash.empty() ? std::string() : "|prior=" + c.prior_hash) +
+         (c.truth_hash.empty() ? std::string() : "|truth=" + c.truth_hash) + launch_key(c) + speed_key(c) +
          (c.separation == 0 ? std::string() : fmt::format("|separation={}", c.separation));
 }
 
@@ -117,6 +131,11 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   spec.params.launch_sites = c.launch_sites;
   spec.params.launch_transfer_s = c.launch_transfer;
   spec.params.takeoff_time_s = c.takeoff_time;
+  spec.params.endurance_s = c.endurance;
+  spec.params.reserve_s = c.reserve;
+  spec.params.swap_time_s = c.swap_time;
+  spec.params.speed_m_s = c.speed;
+  spec.params.climb_speed_m_s = c.climb_speed;
   spec.params.separation = c.separation;
   const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;

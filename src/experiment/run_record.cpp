@@ -4,13 +4,19 @@
 
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_row_check.hpp"
+#include "hullinspect/world/battery.hpp"
 
 namespace hullinspect::experiment {
 
 namespace {
 
-std::string optional_time(const std::optional<int>& t) {
-  return t ? std::to_string(*t) : "";
+std::string optional_count(const std::optional<int>& n) {
+  return n ? std::to_string(*n) : "";
+}
+
+/// A time of the mission in seconds (steps × the step; the step count itself without a speed).
+std::string seconds_field(const world::MissionParams& timing, const std::optional<int>& steps) {
+  return steps ? fmt::format("{}", timing.seconds(*steps)) : "";
 }
 
 template <class T>
@@ -73,7 +79,11 @@ std::vector<std::string> runs_header() {
           "partition_fallbacks",
           "separation",
           "separation_conflicts",
-          "min_separation"};
+          "min_separation",
+          "sorties",
+          "flight_s",
+          "battery_crashes",
+          "min_battery_s"};
 }
 
 std::vector<std::string> samples_header(const CurveGrid& grid) {
@@ -140,11 +150,12 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
   const auto& c = plan.config();
   const auto total = r.totals();
 
+  const auto timing = c.timing();
   RunRecord record;
   auto fields = run_parameter_fields(plan, run);
   for (std::string value : {std::string(r.complete ? "1" : "0"),
-                            optional_time(r.t_c),
-                            optional_time(r.t_m),
+                            seconds_field(timing, r.t_c),
+                            seconds_field(timing, r.t_m),
                             std::to_string(r.steps),
                             std::to_string(r.hull_cells),
                             std::to_string(r.corroded_cells),
@@ -164,13 +175,17 @@ RunRecord make_record(const ExperimentPlan& plan, const RunKey& run, const sim::
                             std::to_string(r.planner.assignments),
                             run_failures_field(plan, run),
                             std::to_string(r.failed_uavs),
-                            std::to_string(r.bound_t_c),
-                            std::to_string(r.bound_t_m),
+                            seconds_field(timing, r.bound_t_c),
+                            seconds_field(timing, r.bound_t_m),
                             std::to_string(r.unreachable_cells),
                             std::to_string(r.planner.partition_fallbacks),
                             std::to_string(plan.config().separation),
                             std::to_string(r.separation_conflicts),
-                            optional_time(r.min_separation)}) {
+                            optional_count(r.min_separation),
+                            std::to_string(r.sorties()),
+                            seconds_field(timing, total.flight_steps),
+                            std::to_string(r.battery_crashes),
+                            seconds_field(timing, r.min_battery())}) {
     fields.push_back(std::move(value));
   }
   record.runs = csv_line(fields);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 #include <unordered_map>
 
@@ -9,6 +10,7 @@
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_record.hpp"
+#include "hullinspect/world/battery.hpp"
 
 namespace hullinspect::experiment {
 
@@ -48,6 +50,36 @@ class Outcome {
   long long get(const std::string& name, long long max = kMaxStoredCount) const {
     return *parse(name, max);
   }
+  /// A field of seconds in [0, max]; an empty min_battery_s gives nothing.
+  std::optional<double> seconds(const std::string& name, double max) const {
+    const std::string& v = text(name);
+    if (v.empty() && name == "min_battery_s") return std::nullopt;
+    try {
+      return parse_real(v, 0, max);
+    } catch (const NumberError& e) {
+      throw Error(fmt::format("{} {}", name, e.what()));
+    }
+  }
+  /// A time column (seconds: steps × the step of `timing`) as its steps, at most `max`; without a
+  /// speed the seconds are the steps and parse() reads them.
+  std::optional<long long> steps(const std::string& name, long long max,
+                                 const world::MissionParams& timing) const {
+    if (!timing.speed_m_s) return parse(name, max);
+    const std::string& v = text(name);
+    if (v.empty() && (name == "T_c" || name == "T_m")) return std::nullopt;
+    double seconds = 0;
+    try {
+      seconds = parse_real(v, 0, static_cast<double>(max) * timing.step_seconds() + 1);
+    } catch (const NumberError& e) {
+      throw Error(fmt::format("{} {}", name, e.what()));
+    }
+    const auto n = std::llround(seconds / timing.step_seconds());
+    if (n > max || fmt::format("{}", timing.seconds(n)) != v) {
+      throw Error(fmt::format("{} is '{}', not a whole number of {}-second steps up to {}", name,
+                              escape_for_message(v), timing.step_seconds(), max));
+    }
+    return n;
+  }
 
  private:
   const std::vector<std::string>& fields_;
@@ -62,9 +94,12 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
   const long long limit = c.time_limit;
   const long long hull = c.hull_cells;
 
+  const auto timing = c.timing();
   const bool complete = o.get("complete", 1) == 1;
-  const auto t_c = o.parse("T_c", limit);
-  const auto t_m = o.parse("T_m", limit);
+  const auto t_c = o.steps("T_c", limit, timing);
+  const auto t_m = o.steps("T_m", limit, timing);
+  const auto bound_t_c = *o.steps("bound_T_c", kMaxStoredCount, timing);
+  const auto bound_t_m = *o.steps("bound_T_m", kMaxStoredCount, timing);
   const long long steps = o.get("steps", limit);
   const long long hull_cells = o.get("hull_cells", hull);
   const long long corroded = o.get("corroded_cells", hull);
@@ -73,7 +108,7 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
   for (const char* counter :
        {"detections", "observations", "redundant_observations", "moves", "hovers", "plane_changes",
         "steps_z1", "steps_z2", "steps_transit", "tsp_solves", "tsp_unproven", "tsp_fallbacks",
-        "replans", "assignments", "bound_T_c", "bound_T_m", "partition_fallbacks",
+        "replans", "assignments", "partition_fallbacks",
        "separation_conflicts"}) {
     (void)o.get(counter);
   }
@@ -82,24 +117,30 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
                        escape_for_message(o.text("separation")), c.separation);
   }
   (void)o.parse("min_separation", kMaxStoredCount);
+  // Batteries (docs/model.md, "Batteries and sorties"), parsed here, related at the end.
+  const long long sorties = o.get("sorties");
+  const auto flight = o.seconds("flight_s", 1e18);
+  const long long crashes = o.get("battery_crashes", uavs);
+  const auto least_battery = o.seconds("min_battery_s", c.endurance.value_or(1e18));
 
   if (complete != t_m.has_value()) {
     return complete ? "complete is 1 but T_m is empty (a complete mission has a T_m)"
                     : fmt::format("complete is 0 but T_m is {} (a mission with a T_m is complete)",
-                                  *t_m);
+                                  o.text("T_m"));
   }
   if (t_m && steps != *t_m) {
-    return fmt::format("steps is {} but a complete mission stops at T_m = {}", steps, *t_m);
+    return fmt::format("steps is {} but a complete mission stops at T_m = {}", steps,
+                       o.text("T_m"));
   }
   if (t_c && t_m && *t_c > *t_m) {
     return fmt::format(
         "T_c is {} but T_m is {} (every corroded cell is inspected once the hull is "
         "known)",
-        *t_c, *t_m);
+        o.text("T_c"), o.text("T_m"));
   }
   if (complete && !t_c) return "complete is 1 but T_c is empty (a complete mission has a T_c)";
   if (t_c && *t_c > steps) {
-    return fmt::format("T_c is {} but the mission ended at steps = {}", *t_c, steps);
+    return fmt::format("T_c is {} but the mission ended at steps = {}", o.text("T_c"), steps);
   }
   if (corroded > hull_cells) {
     return fmt::format("corroded_cells is {} but hull_cells is only {}", corroded, hull_cells);
@@ -129,9 +170,29 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
     return fmt::format("plane_changes is {} but steps_transit is only {}", o.get("plane_changes"),
                        o.get("steps_transit"));
   }
-  if (o.get("bound_T_c") > o.get("bound_T_m")) {
-    return fmt::format("bound_T_c is {} but bound_T_m is only {}", o.get("bound_T_c"),
-                       o.get("bound_T_m"));
+  if (bound_t_c > bound_t_m) {
+    return fmt::format("bound_T_c is {} but bound_T_m is only {}", o.text("bound_T_c"),
+                       o.text("bound_T_m"));
+  }
+  if (least_battery.has_value() != c.endurance.has_value()) {
+    return c.endurance
+               ? "min_battery_s is empty but this experiment's UAVs have batteries"
+               : fmt::format("min_battery_s is {} but this experiment's flight is unlimited",
+                             *least_battery);
+  }
+  if (crashes > o.get("failed_uavs", uavs)) {
+    return fmt::format("battery_crashes is {} but failed_uavs is only {} (a crash fails the UAV)",
+                       crashes, o.get("failed_uavs", uavs));
+  }
+  if (c.launch_sites.empty() && sorties != 0) {
+    return fmt::format("sorties is {} but this experiment's UAVs start in the air (no launch site)",
+                       sorties);
+  }
+  const double flight_limit =
+      static_cast<double>(uavs) * c.timing().step_seconds() * static_cast<double>(steps);
+  if (*flight > flight_limit) {
+    return fmt::format("flight_s is {} but {} UAVs × {} steps fly at most {} s", *flight, uavs,
+                       steps, flight_limit);
   }
   return {};
 }
@@ -173,8 +234,9 @@ std::string samples_row_problem(const ExperimentPlan& plan, const RunKey& run,
   }
   const auto run_fields = *split_csv_line(runs_line);
   const Outcome o(run_fields);
-  const auto t_c = o.parse("T_c", kMaxStoredCount);
-  const auto t_m = o.parse("T_m", kMaxStoredCount);
+  const auto timing = plan.config().timing();
+  const auto t_c = o.steps("T_c", kMaxStoredCount, timing);
+  const auto t_m = o.steps("T_m", kMaxStoredCount, timing);
   const long long hull_cells = o.get("hull_cells");
   const long long corroded = o.get("corroded_cells");
   // One series per half of the row: inspected corroded cells, then known hull cells. Each only

@@ -31,7 +31,9 @@ void rename_or_throw(const fs::path& from, const fs::path& to) {
 }  // namespace
 
 StagedDir::StagedDir(fs::path target)
-    : target_(std::move(target)), staging_(beside(target_, "staging")) {
+    : target_(std::move(target)),
+      staging_(beside(target_, "staging")),
+      listed_(staging_, io::PendingTemporary::Kind::directory) {
   std::error_code ec;
   fs::create_directories(staging_.parent_path(), ec);
   if (!ec) fs::create_directory(staging_, ec);
@@ -51,6 +53,7 @@ void StagedDir::commit() {
                                    fs::directory_iterator(target_, ec) == fs::directory_iterator());
   if (empty_or_missing) {
     rename_or_throw(staging_, target_);
+    listed_.release();
     committed_ = true;
     return;
   }
@@ -67,6 +70,7 @@ void StagedDir::commit() {
     }
   }
   fs::remove(staging_, ec);
+  listed_.release();
   committed_ = true;
 }
 

@@ -120,12 +120,12 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
     SummaryRow& row = rows[it->second];
     ++row.runs;
     if (at(c_complete) != "1") ++row.incomplete;
-    if (!at(c_tc).empty()) tc[it->second].push_back(csv_int(at(c_tc), source, line, "T_c"));
-    if (!at(c_tm).empty()) tm[it->second].push_back(csv_int(at(c_tm), source, line, "T_m"));
+    if (!at(c_tc).empty()) tc[it->second].push_back(csv_seconds(at(c_tc), source, line, "T_c"));
+    if (!at(c_tm).empty()) tm[it->second].push_back(csv_seconds(at(c_tm), source, line, "T_m"));
     if (c_btc >= 0 && !at(c_btc).empty())
-      btc[it->second].push_back(csv_int(at(c_btc), source, line, "bound_T_c"));
+      btc[it->second].push_back(csv_seconds(at(c_btc), source, line, "bound_T_c"));
     if (c_btm >= 0 && !at(c_btm).empty())
-      btm[it->second].push_back(csv_int(at(c_btm), source, line, "bound_T_m"));
+      btm[it->second].push_back(csv_seconds(at(c_btm), source, line, "bound_T_m"));
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     rows[i].t_c = stats(tc[i]);

@@ -125,6 +125,9 @@ ExportPlan export_plan(const nlohmann::json& trace, const std::string& source) {
                   {},
                   {},
                   {}};
+  if (auto step = trace.find("step_seconds"); step != trace.end()) {
+    plan.step_seconds = step->get<double>();
+  }
   const auto states = trace_states(trace);
   const auto same = [&plan](grid::Cell a, grid::Cell b) { return plan.frame.same_surface(a, b); };
   for (const auto& uav : states) {
@@ -144,19 +147,20 @@ ExportPlan export_plan(const nlohmann::json& trace, const std::string& source) {
 }
 
 double cruise_speed_mps(const ExportPlan& plan) {
-  return plan.frame.spec().cell_m;
+  return plan.frame.spec().cell_m / plan.step_seconds;
 }
 
 double photo_distance_m(const ExportPlan& plan) {
   return plan.frame.spec().cell_m;
 }
 
-double hold_seconds(const ExportWaypoint& w, const ExportWaypoint& previous, double speed_mps) {
+double hold_seconds(const ExportPlan& plan, const ExportWaypoint& w,
+                    const ExportWaypoint& previous) {
   if (w.grid.action == WaypointAction::kStart) return 0.0;
   const double flight = std::hypot(w.pose.x - previous.pose.x, w.pose.y - previous.pose.y,
                                    w.pose.z - previous.pose.z) /
-                        speed_mps;
-  return std::max(0.0, w.grid.duration - flight);
+                        cruise_speed_mps(plan);
+  return std::max(0.0, plan.seconds(w.grid.duration) - flight);
 }
 
 namespace {

@@ -10,16 +10,16 @@ namespace hullinspect::io::detail {
 
 std::string write_csv(const ExportPlan& plan, const MissionPart& part,
                       const std::optional<GeoReference>& geo) {
-  (void)plan;
   std::string out = "index,t_s,x_m,y_m,z_m,yaw_deg,plane,action,duration_s,cell_x,cell_y";
   if (geo) out += ",east_m,north_m,up_m,lat_deg,lon_deg,alt_m,heading_deg";
   out += "\n";
   int index = 0;
   for (const auto& w : part.waypoints) {
     const auto& p = w.pose;
-    out += fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.3f},{},{},{},{},{}", index++, w.grid.t, p.x,
-                       p.y, p.z, p.yaw * 180.0 / std::numbers::pi, w.grid.z,
-                       to_string(w.grid.action), w.grid.duration, w.grid.cell.x, w.grid.cell.y);
+    out += fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.3f},{},{},{},{},{}", index++,
+                       plan.seconds(w.grid.t), p.x, p.y, p.z, p.yaw * 180.0 / std::numbers::pi,
+                       w.grid.z, to_string(w.grid.action), plan.seconds(w.grid.duration),
+                       w.grid.cell.x, w.grid.cell.y);
     if (geo) {
       const Enu e = geo->to_enu(p.x, p.y, p.z);
       const GeoPoint g = geo->to_wgs84(p.x, p.y, p.z);

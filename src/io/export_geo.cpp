@@ -37,14 +37,13 @@ std::vector<GeoWaypoint> geo_waypoints(const ExportPlan& plan, const MissionPart
   // Values are rounded as the text formats write them (1e-10 degrees, about 0.01 mm; 0.1 mm;
   // 0.001°), so every format carries the same numbers.
   const double home_alt = home_point(part, geo).alt;
-  const double speed = cruise_speed_mps(plan);
   std::vector<GeoWaypoint> out;
   for (std::size_t i = 0; i < part.waypoints.size(); ++i) {
     const auto& w = part.waypoints[i];
     const auto& p = w.pose;
     GeoWaypoint g;
     // A later part's first waypoint is where the previous part ended: reached already.
-    g.hold_s = i == 0 ? 0.0 : round_to(hold_seconds(w, part.waypoints[i - 1], speed), 1e4);
+    g.hold_s = i == 0 ? 0.0 : round_to(hold_seconds(plan, w, part.waypoints[i - 1]), 1e4);
     g.yaw_deg = round_to(geo.compass_deg(p.yaw), 1e3);
     if (g.yaw_deg >= 360) g.yaw_deg = 0;
     g.gimbal_pitch_deg =

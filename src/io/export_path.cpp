@@ -11,13 +11,16 @@
 namespace hullinspect::io::detail {
 
 namespace {
-std::string stamp(int seconds) {
-  return fmt::format("{{sec: {}, nanosec: 0}}", seconds);
+// A builtin_interfaces/Time: whole seconds (floor, so negative times stay ordered) and the
+// nanoseconds past them.
+std::string stamp(double seconds) {
+  const auto ns = static_cast<long long>(std::llround(seconds * 1e9));
+  const long long sec = ns >= 0 ? ns / 1000000000 : -((-ns + 999999999) / 1000000000);
+  return fmt::format("{{sec: {}, nanosec: {}}}", sec, ns - sec * 1000000000);
 }
 }  // namespace
 
 std::string write_path_yaml(const ExportPlan& plan, const MissionPart& part) {
-  (void)plan;
   std::string out = fmt::format(
       "# nav_msgs/Path of UAV {}: stamps are seconds since {}; frame hull = ship frame\n"
       "header:\n  stamp: {}\n  frame_id: hull\nposes:\n",
@@ -30,8 +33,8 @@ std::string write_path_yaml(const ExportPlan& plan, const MissionPart& part) {
         "    pose:\n"
         "      position: {{x: {:.4f}, y: {:.4f}, z: {:.4f}}}\n"
         "      orientation: {{x: 0.0, y: 0.0, z: {:.9f}, w: {:.9f}}}\n",
-        stamp(w.grid.t), to_string(w.grid.action), w.grid.z, p.x, p.y, p.z, std::sin(p.yaw / 2),
-        std::cos(p.yaw / 2));
+        stamp(plan.seconds(w.grid.t)), to_string(w.grid.action), w.grid.z, p.x, p.y, p.z,
+        std::sin(p.yaw / 2), std::cos(p.yaw / 2));
   }
   return out;
 }

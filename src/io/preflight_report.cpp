@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "hullinspect/io/preflight_separation.hpp"
 #include "hullinspect/io/simplify.hpp"
 
 namespace hullinspect::io {
@@ -61,7 +62,7 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
     double holds = 0;
     for (std::size_t i = 1; i < s.waypoints.size(); ++i) {
       distance += length(s.waypoints[i - 1].pose, s.waypoints[i].pose);
-      holds += hold_seconds(s.waypoints[i], s.waypoints[i - 1], speed);
+      holds += hold_seconds(plan, s.waypoints[i], s.waypoints[i - 1]);
     }
     if (!s.waypoints.empty()) distance += length(s.waypoints.back().pose, s.home);
     json files = json::object();
@@ -84,6 +85,9 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
                 {"waypoints", s.waypoints.size()},
                 {"distance_m", std::round(distance * 100) / 100},
                 {"flight_time_s", std::round((distance / speed + holds) * 10) / 10},
+                // The battery's margin at landing: left empty until the mission models an
+                // endurance (never a made-up number).
+                {"battery_margin_s", nullptr},
                 {"files", files}};
     if (geo) {
       const auto h = geo->to_wgs84(s.home.x, s.home.y, s.home.z);
@@ -123,6 +127,9 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
                       plan.no_fly.size(), fmt::join(dropped, ", ")));
     }
   }
+  std::vector<std::string> separation_warnings;
+  report["separation"] = preflight_separation(trace, plan, separation_warnings);
+  for (auto& w : separation_warnings) warnings.push_back(std::move(w));
   const auto& result = trace.at("result");
   if (!result.value("complete", true)) {
     warnings.push_back(
@@ -158,6 +165,17 @@ std::string preflight_markdown(const nlohmann::json& report) {
       "- not detectable from z = 2: {}\n- in no footprint of the exported flights: {}\n",
       c["hull"].get<int>(), c["unreachable"].get<int>(), c["undetectable_from_z2"].get<int>(),
       c["unseen"].get<int>());
+  const auto& sep = report["separation"];
+  md += fmt::format("\n## Separation\n\n- planned with D = {}{}\n", sep["d"].get<int>(),
+                    sep["d"].get<int>() == 0 ? " (none: UAVs may share a cell)" : " cells");
+  if (!sep["min_cells"].is_null()) {
+    md += fmt::format(
+        "- smallest separation flown: {} cells ({:.2f} m), UAVs {} and {} at t = {} s\n",
+        sep["min_cells"].get<int>(), sep["min_m"].get<double>(), sep["uavs"][0].get<int>(),
+        sep["uavs"][1].get<int>(), sep["t_s"].get<double>());
+  }
+  md += fmt::format("- conflicts counted: {}\n", sep["conflicts"].get<long long>());
+  md += "\n## Battery\n\nBattery margin: not computed (the mission has no endurance).\n";
   md += "\n## Warnings\n\n";
   if (report["warnings"].empty()) md += "None.\n";
   for (const auto& w : report["warnings"]) md += "- " + w.get<std::string>() + "\n";

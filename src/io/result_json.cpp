@@ -1,8 +1,25 @@
 #include "hullinspect/io/result_json.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "hullinspect/world/battery.hpp"
+
 namespace hullinspect::io {
 
 using nlohmann::json;
+
+json seconds_json(const world::MissionParams& params, const std::optional<int>& steps) {
+  if (!steps) return json(nullptr);
+  const double s = params.seconds(*steps);
+  if (s == std::floor(s) && std::abs(s) < 9e15) return json(static_cast<long long>(s));
+  return json(s);
+}
+
+std::string seconds_text(const world::MissionParams& params, const std::optional<int>& steps) {
+  return steps ? fmt::format("{} s", params.seconds(*steps)) : std::string("—");
+}
 
 json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
@@ -13,8 +30,12 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   j["s2"] = spec.params.s2;
   j["seed"] = spec.seed;
   j["complete"] = r.complete;
-  j["T_c"] = r.t_c ? json(*r.t_c) : json(nullptr);
-  j["T_m"] = r.t_m ? json(*r.t_m) : json(nullptr);
+  j["T_c"] = seconds_json(spec.params, r.t_c);
+  j["T_m"] = seconds_json(spec.params, r.t_m);
+  if (spec.params.speed_m_s || spec.params.climb_speed_m_s) {  // only then: other results keep keys
+    j["step_seconds"] = spec.params.step_seconds();
+    j["plane_change_steps"] = spec.params.plane_change_steps();
+  }
   j["steps"] = r.steps;
   j["moves"] = total.moves;
   j["plane_changes"] = total.plane_changes;
@@ -45,11 +66,27 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
   if (!spec.params.launch_sites.empty()) {  // only then, so that other results keep their keys
     json launch = json::array();
     for (const auto& u : r.uavs) {
+      // Per UAV its sorties (take-off and landing times, site), flight and batteries swapped.
+      json sorties = json::array();
+      for (const auto& s : u.sorties) {
+        sorties.push_back({{"takeoff", s.takeoff},
+                           {"landing", s.landing >= 0 ? json(s.landing) : json(nullptr)},
+                           {"site", s.site}});
+      }
       launch.push_back({{"site", u.launch_site},
                         {"steps_away", u.steps_away},
-                        {"landed_at", u.landed_at >= 0 ? json(u.landed_at) : json(nullptr)}});
+                        {"landed_at", u.landed_at >= 0 ? json(u.landed_at) : json(nullptr)},
+                        {"sorties", std::move(sorties)},
+                        {"flight_s", world::battery_seconds(spec.params, u.flight_steps)},
+                        {"swaps", u.swaps},
+                        {"battery_crash", u.battery_crash}});
     }
     j["launch"] = std::move(launch);
+    j["sorties"] = r.sorties();
+    j["flight_s"] = world::battery_seconds(spec.params, total.flight_steps);
+    j["battery_crashes"] = r.battery_crashes;
+    j["min_battery_s"] =
+        r.min_battery() ? json(world::battery_seconds(spec.params, *r.min_battery())) : json(nullptr);
   }
   return j;
 }
@@ -85,6 +122,14 @@ json spec_json(const planners::MissionSpec& spec, const std::string& hull_source
     j["launch"] = {{"sites", std::move(sites)}, {"transfer", spec.params.launch_transfer_s}};
     if (spec.params.takeoff_time_s) j["launch"]["takeoff_time"] = *spec.params.takeoff_time_s;
   }
+  if (spec.params.endurance_s) {
+    const auto b = world::battery_steps(spec.params);
+    j["battery"] = {{"endurance", *spec.params.endurance_s},
+                    {"reserve", world::battery_seconds(spec.params, b.reserve)},
+                    {"swap_time", spec.params.swap_time_s}};
+  }
+  if (spec.params.speed_m_s) j["speed"] = *spec.params.speed_m_s;
+  if (spec.params.climb_speed_m_s) j["climb_speed"] = *spec.params.climb_speed_m_s;
   // The user's maps, when they replaced the generated ones (the trace's prior/truth are theirs).
   if (spec.maps.prior) j["prior_file"] = spec.maps.prior->source;
   if (spec.maps.truth) j["truth_file"] = spec.maps.truth->source;

@@ -7,6 +7,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/export.hpp"
+#include "hullinspect/world/launch_sites.hpp"
 
 namespace hullinspect::io {
 
@@ -27,21 +28,13 @@ std::size_t nearest_site(grid::Cell start, const std::vector<grid::Cell>& sites)
 
 namespace {
 
+// The mission's rule for a site (world/launch_sites.hpp), over the trace's grid.
 void check_site(const ExportPlan& plan, grid::Cell s) {
-  const auto where = fmt::format("{},{}", s.x, s.y);
-  if (s.x < 0 || s.y < 0 || s.x >= plan.width || s.y >= plan.height) {
-    throw ParameterError(
-        "launch", fmt::format("{} is outside the {} × {} grid", where, plan.width, plan.height));
-  }
-  if (std::find(plan.no_fly.begin(), plan.no_fly.end(), s) != plan.no_fly.end()) {
-    throw ParameterError("launch", fmt::format("{} is a no-fly position", where));
-  }
-  const bool edge = s.x == 0 || s.y == 0 || s.x == plan.width - 1 || s.y == plan.height - 1;
-  if (plan.is_hull(s) && !edge) {
-    throw ParameterError("launch", fmt::format("{} is a hull cell inside the grid; expected a "
-                                               "non-hull cell or a cell on the grid's edge",
-                                               where));
-  }
+  world::check_launch_site(
+      s, plan.width, plan.height, [&plan](grid::Cell c) { return plan.is_hull(c); },
+      [&plan](grid::Cell c) {
+        return std::find(plan.no_fly.begin(), plan.no_fly.end(), c) != plan.no_fly.end();
+      });
 }
 
 // The shortest 4-connected path over allowed positions from `from` to `to` (both included).

@@ -361,6 +361,11 @@ void validate_trace(const json& trace, const std::string& source) {
   }
   const auto plane_change_steps = static_cast<int>(check.integer(
       check.field(trace, "", "plane_change_steps"), "plane_change_steps", 1, 1 << 20));
+  if (auto step = trace.find("step_seconds"); step != trace.end()) {
+    if (!step->is_number() || !(step->get<double>() > 0 && step->get<double>() <= 1e9)) {
+      check.fail("step_seconds", "expected seconds in (0, 1e9]");
+    }
+  }
   const auto& footprint = check.array(check.field(trace, "", "footprint"), "footprint");
   if (footprint.size() != 2) check.fail("footprint", "expected [s1, s2]");
   const auto s1 = check.integer(footprint[0], "footprint[0]", 1, std::max(width, height) * 2 + 1);

@@ -164,6 +164,8 @@ void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner&
                     {"height", hull.height()},
                     {"cell_size_m", sim.params().cell_size_m}};
   trace_["plane_change_steps"] = sim.plane_change_steps();
+  // A step's seconds with --speed (docs/trace-format.md); absent: one second, the paper's model.
+  if (sim.params().speed_m_s) trace_["step_seconds"] = sim.params().step_seconds();
   trace_["footprint"] = {sim.params().s1, sim.params().s2};
   // The aperture places the planes in metres (stand-off ζ_z, docs/export.md).
   trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};

@@ -221,8 +221,8 @@ void split_in_band_order(std::vector<int>& cells, int width, std::span<const int
   const auto cell_at = [width](int i) { return grid::Cell{i % width, i / width}; };
   // The work each cell adds: a row or band begun there, and within a run the flight across a
   // gap from the cell before it (rows and bands swept already) beyond what a band begun pays.
-  // Counted free, a run could take cells on both sides of a long swept stretch: in a trace a
-  // survivor was given columns 33-57 and 117-144 of the default hull and flew between them.
+  // Counted free, a run could take cells on both sides of a long swept stretch, and its UAV
+  // would fly back and forth between them.
   int widest_band = 1;
   for (std::size_t x = 0; x < band_start.size(); ++x)
     widest_band = std::max(widest_band, static_cast<int>(x) - band_start[x] + 1);

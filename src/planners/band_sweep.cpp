@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "hullinspect/world/mission_params.hpp"
+
 namespace hullinspect::planners {
 
 RegionBands region_bands(const grid::Grid<std::int16_t>& owner, int uav, int s, BandAxis axis,
@@ -46,7 +48,7 @@ RegionBands region_bands(const grid::Grid<std::int16_t>& owner, int uav, int s, 
 std::vector<grid::Cell> sweep_bands(const RegionBands& region, int s, BandAxis axis, bool trim_ends,
                                     grid::Cell from, int across_size) {
   const bool rows = axis == BandAxis::kRows;
-  const int h = (s - 1) / 2;
+  const int h = world::footprint_half(s);
   const auto cell = [rows](int along_at, int across_at) {
     return rows ? grid::Cell{along_at, across_at} : grid::Cell{across_at, along_at};
   };

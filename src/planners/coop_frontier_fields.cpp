@@ -2,10 +2,18 @@
 
 namespace hullinspect::planners {
 
-void SourceDistanceField::reset(int width, int height, grid::DistanceService* distances) {
+void SourceDistanceField::reset(int width, int height, grid::DistanceService* distances,
+                                int on_demand_cells) {
   distances_ = distances;
+  on_demand_ = (distances == nullptr || !distances->has_no_fly()) &&
+               static_cast<long long>(width) * height > on_demand_cells;
   member_ = grid::Grid<std::uint8_t>(width, height, 0);
-  distance_ = grid::Grid<int>(width, height, grid::kUnreachable);
+  if (on_demand_) {
+    nearest_.reset(width, height);
+    distance_ = grid::Grid<int>();
+  } else {
+    distance_ = grid::Grid<int>(width, height, grid::kUnreachable);
+  }
   count_ = 0;
   stale_ = false;
 }
@@ -15,7 +23,11 @@ void SourceDistanceField::set(int index, bool member) {
   if ((m != 0) == member) return;
   m = member ? 1 : 0;
   count_ += member ? 1 : -1;
-  stale_ = true;
+  if (on_demand_) {
+    nearest_.set(index, member);
+  } else {
+    stale_ = true;
+  }
 }
 
 void SourceDistanceField::refresh() {

@@ -24,8 +24,8 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   needing_distances_.clear();
   needing_distances_.reserve(static_cast<std::size_t>(n));
   reach_ = context.reach != nullptr && context.reach->any_no_fly ? &context.reach->reach : nullptr;
-  half1_ = (context.params.s1 - 1) / 2;
-  half2_ = (context.params.s2 - 1) / 2;
+  half1_ = context.params.half_side(1);
+  half2_ = context.params.half_side(2);
 
   // M before t = 0's sensing: −1 off the hull, 2 where the prior expects corrosion, 0 elsewhere;
   // cells written off by no-fly zones read 1 (see effective()).

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "hullinspect/world/mission_params.hpp"
+
 namespace hullinspect::planners {
 
 namespace {
@@ -80,8 +82,8 @@ LawnmowerRoute lawnmower_route_around_no_fly(const grid::Grid<std::int16_t>& own
                                              const grid::Grid<std::uint8_t>& reach) {
   LawnmowerRoute route;
   const int b = owner.height();
-  const int half1 = (s1 - 1) / 2;
-  const int half2 = (s2 - 1) / 2;
+  const int half1 = world::footprint_half(s1);
+  const int half2 = world::footprint_half(s2);
   grid::Cell at = from;
   std::vector<std::pair<int, int>> runs;
   for (int y_begin = 0; y_begin < b; y_begin += s1) {
@@ -90,7 +92,7 @@ LawnmowerRoute lawnmower_route_around_no_fly(const grid::Grid<std::int16_t>& own
     if (columns.empty()) continue;
     const int x_min = columns.first;
     const int x_max = columns.last;
-    const int row = std::min(y_begin + (s1 - 1) / 2, b - 1);
+    const int row = std::min(y_begin + half1, b - 1);
     // The flight row split into runs of allowed positions; the gaps are flown around.
     runs.clear();
     for (int x = x_min; x <= x_max + 1; ++x) {

@@ -7,6 +7,7 @@
 #include "hullinspect/partition/fallback.hpp"
 #include "hullinspect/sim/deconfliction.hpp"
 #include "hullinspect/sim/lower_bound.hpp"
+#include "hullinspect/sim/sortie_layer.hpp"
 
 namespace hullinspect::planners {
 
@@ -54,8 +55,18 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
                                const world::MissionParams& params, Planner& planner,
                                const MissionOptions& options) {
   world::validate(params, hull);
-  sim::Simulator sim(hull, instance, params);
   world::validate(options.failures, params.uavs);
+  return run_validated_mission(hull, instance, params, planner, options);
+}
+
+sim::MissionResult run_validated_mission(const world::HullMask& hull,
+                                         const world::Instance& instance,
+                                         const world::MissionParams& params, Planner& planner,
+                                         const MissionOptions& options) {
+  // The start cells, computed once: the simulator places the UAVs on them, the planner is told
+  // them and the lower bound measures from them.
+  const auto starts = world::start_cells(params, hull);
+  sim::Simulator sim(hull, instance, params, starts);
   if (!options.failures.empty()) {
     const auto times =
         world::failure_times(options.failures, params.uavs, instance.seed, params.time_limit);
@@ -66,9 +77,7 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
   }
 
   DirectPartitionSource direct;
-  const auto starts = world::start_cells(params, hull);
-  grid::DistanceService distances =
-      world::make_distance_service(sim.reachability(), sim.flight_steps());
+  grid::DistanceService distances = world::make_distance_service(sim.reachability(), sim.flight_steps());
   PlannerContext context{hull,
                          params,
                          instance.prior,
@@ -91,8 +100,11 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
     deconfliction.emplace(params.separation, params.uavs, hull.width(), hull.height(),
                           params.no_fly.get());
   }
+  std::optional<sim::SortieLayer> sorties;
+  if (sim.battery().limited) sorties.emplace(sim);
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
+    if (sorties) sorties->before_step(sim);
     t0 = Clock::now();
     planner.decide(sim.view(), actions);
     planner_seconds += seconds_since(t0);
@@ -109,7 +121,7 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
   }
   sim::MissionResult result = sim.result();
   result.stopped_idle = stopped_idle;
-  const sim::LowerBound bound = sim::lower_bound(hull, instance.truth, params);
+  const sim::LowerBound bound = sim::lower_bound(hull, instance.truth, params, starts);
   result.bound_t_c = bound.t_c;
   result.bound_t_m = bound.t_m;
   result.planner_seconds = planner_seconds;

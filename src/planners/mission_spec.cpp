@@ -35,16 +35,27 @@ const world::CorrosionParams* prior_statistics(const MissionSpec& spec) {
   return spec.maps.empty() ? &spec.corrosion : nullptr;
 }
 
+world::Instance mission_instance(const MissionSpec& spec, const world::HullMask& hull) {
+  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
+  world::apply(spec.maps, instance);
+  return instance;
+}
+
+sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
+                               const world::Instance& instance, const MissionOptions& options) {
+  // Failures the caller gives instead of the spec's were not part of validate(spec).
+  if (!options.failures.empty()) world::validate(options.failures, spec.params.uavs);
+  auto planner = make_planner(spec.algorithm, spec.planner_options);
+  MissionOptions with_spec = options;
+  if (with_spec.failures.empty()) with_spec.failures = spec.failures;
+  if (with_spec.corrosion == nullptr) with_spec.corrosion = prior_statistics(spec);
+  return run_validated_mission(hull, instance, spec.params, *planner, with_spec);
+}
+
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const MissionOptions& options) {
   validate(spec, hull);
-  auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
-  world::apply(spec.maps, instance);
-  auto planner = make_planner(spec.algorithm, spec.planner_options);
-  MissionOptions with_failures = options;
-  if (with_failures.failures.empty()) with_failures.failures = spec.failures;
-  if (with_failures.corrosion == nullptr) with_failures.corrosion = prior_statistics(spec);
-  return run_mission(hull, instance, spec.params, *planner, with_failures);
+  return run_mission(spec, hull, mission_instance(spec, hull), options);
 }
 
 }  // namespace hullinspect::planners

@@ -35,6 +35,8 @@ using part_tsp::target_value;
 PartTspPlanner::PartTspPlanner(PartTspOptions options, std::unique_ptr<tsp::TspSolver> solver)
     : options_(std::move(options)), solver_(std::move(solver)) {
   if (!solver_) solver_ = tsp::make_tsp_solver(options_.tsp_solver, options_.tsp_solver_options);
+  // The exact solver's own first tour: 10 kicks, seed 1.
+  large_solver_ = tsp::make_tsp_solver("heuristic", {{"kicks", "10"}, {"seed", "1"}});
 }
 
 void PartTspPlanner::start(const PlannerContext& context) {
@@ -235,7 +237,7 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   p.plan_z = z;
   p.plan_value = target_value(z, maps_->corrosion_to_inspect(k));
   if (p.plans++ > 0) ++stats_.replans;
-  const int trim = options_.trim_ends ? (maps_->layout(z).s - 1) / 2 : 0;
+  const int trim = options_.trim_ends ? world::footprint_half(maps_->layout(z).s) : 0;
   grid::DistanceService& distances = flights_.of(k);
   problem_.distances = &distances;
   if (distances.has_no_fly()) {
@@ -256,7 +258,9 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
     problem_.segments.clear();
     for (const auto& [left, right] : ends_) problem_.segments.push_back(tsp::Segment{left, right});
     const auto t0 = std::chrono::steady_clock::now();
-    const tsp::TspSolution solution = solver_->solve(problem_);
+    const bool large = options_.tsp_max_segments > 0 &&
+                       segments_.size() > static_cast<std::size_t>(options_.tsp_max_segments);
+    const tsp::TspSolution solution = (large ? large_solver_ : solver_)->solve(problem_);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ++stats_.tsp_solves;

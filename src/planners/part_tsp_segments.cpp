@@ -30,7 +30,7 @@ void divide_around_no_fly(const LocalMaps& maps, int k, int z, std::int8_t value
   out.clear();
   ends.clear();
   const StripLayout& layout = maps.layout(z);
-  const int half = (layout.s - 1) / 2;
+  const int half = world::footprint_half(layout.s);
   const int x_begin = maps.x_begin(k);
   const int x_end = maps.x_end(k);
   for (int j = 0; j < layout.strips(); ++j) {

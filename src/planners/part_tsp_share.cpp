@@ -109,7 +109,7 @@ void visit_cells(const LocalMaps& maps, int k, int z, std::int8_t value, const P
   int y0 = layout.first_row(s.strip);
   int y1 = layout.last_row(s.strip);
   if (s.point != grid::kNoCell) {
-    const int half = (layout.s - 1) / 2;
+    const int half = world::footprint_half(layout.s);
     x0 = std::max(0, s.point.x - half);
     x1 = std::min(maps.width() - 1, s.point.x + half);
     y0 = std::max(0, s.point.y - half);

@@ -52,6 +52,9 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
                "steps since the last inspection (or arrival at z = 1) before ascending")
       .choice("tsp-solver", &PartTspOptions::tsp_solver, tsp_solver_names,
               "segment-TSP solver by name")
+      .integer("tsp-max-segments", &PartTspOptions::tsp_max_segments, 0, 1 << 20,
+               "a plan over more segments is ordered by local search, without a proof (0 = no "
+               "cap)")
       .choice("partitioner", &PartTspOptions::partitioner, partitioner_names, "partitioner by name")
       .integer("partition-seed", &PartTspOptions::partition_seed, 0, kMaxPartitionSeed,
                "seed of the partitioner")
@@ -82,58 +85,20 @@ Params<PartTspOptions> part_tsp_params(bool use_prior, bool oracle = false) {
 Params<SweepInspectOptions> sweep_inspect_params() {
   Params<SweepInspectOptions> p("sweep-inspect");
   p.choice("partitioner", &SweepInspectOptions::partitioner, partitioner_names,
-           "partitioner by name")
+           "partitioner by name, for the regions where neither band pieces nor column slabs are "
+           "4-connected")
       .integer("partition-seed", &SweepInspectOptions::partition_seed, 0, kMaxPartitionSeed,
                "seed of the partitioner")
-      .flag("help", &SweepInspectOptions::help,
-            "after its sweep a UAV takes work anywhere (false: only its own region's)")
-      .flag("inspect-on-the-way", &SweepInspectOptions::inspect_on_the_way,
-            "descend when a detection is abreast (false: inspect only after the sweep)")
-      .number("radius-factor", &SweepInspectOptions::radius_factor, 0.0, 1e3,
-              "inspect detections within radius-factor * s2 of the descent point")
       .flag("prior-first", &SweepInspectOptions::prior_first,
-            "first inspect the prior's cells of the region at z = 1, then sweep")
-      .flag("resume-ahead", &SweepInspectOptions::resume_ahead,
-            "after an inspection rejoin the strip up to s2/2 columns ahead (already seen) instead "
-            "of where it was left")
-      .flag("replan-rejoin", &SweepInspectOptions::replan_rejoin,
-            "after an inspection plan the sweep anew from where the UAV is when that flight is "
-            "shorter than the way back to the band and on")
-      .flag("nearer-sweep-end", &SweepInspectOptions::nearer_sweep_end,
-            "plan the sweep from where the prior's inspections ended, over the cells they did not "
-            "see, from its nearer end (false: the whole region bottom-up from the start cell)")
+            "first tour the prior's cells of the region at z = 1, then sweep (false: sweep "
+            "only)")
       .number("prior-trust", &SweepInspectOptions::prior_trust, 0.0, 1.0,
-              "stop the prior's inspections once fewer than this fraction of the prior cells "
-              "seen so far were corroded (0: never)")
-      .integer("prior-check-cells", &SweepInspectOptions::prior_check_cells, 1, 1000000,
-               "prior cells to see before prior-trust applies")
-      .flag("trust-statistics", &SweepInspectOptions::trust_statistics,
-            "drop the prior at the start when the scenario's statistics make fewer than "
-            "prior-trust of its cells corroded on average")
-      .flag("take-over-prior", &SweepInspectOptions::take_over_prior,
-            "a failed UAV's prior cells go at once to the nearest working UAV (false: they wait "
-            "for the helpers)")
-      .flag("take-over-sweep", &SweepInspectOptions::take_over_sweep,
-            "a failed UAV's unswept cells go at once to the working UAVs, split so that they end "
-            "together; each sweeps its share after its own strips (false: they wait for the "
-            "helpers)")
-      .flag("leave-to-low-sweep", &SweepInspectOptions::leave_to_low_sweep,
-            "after a failure's re-split, a detection in another working UAV's share of the dense "
-            "columns is left to that UAV's z = 1 sweep (false: whoever passes it descends)")
-      .flag("pass-left-detections", &SweepInspectOptions::pass_left_detections,
-            "after a failure's re-split, the sweep of the share a detection not yet inspected went "
-            "to passes abreast of it and inspects it, also at z = 2 (false: a failed UAV's "
-            "detections wait for the helpers)")
-      .flag("two-block-sweep", &SweepInspectOptions::two_block_sweep,
-            "after a failure's re-split, a share's dense part is swept at z = 1 as two blocks of "
-            "columns, one after the other, where that is a shorter flight (false: one "
-            "boustrophedon over its bands)")
-      .flag("share-prior", &SweepInspectOptions::share_prior,
-            "neighbours re-split their prior cells so that their tours end together (at the start "
-            "and after a failure), and a UAV whose tour is done takes the part of the longest tour "
-            "left that makes the two end earliest (false: each tours its region's prior cells)")
-      .flag("yield-claims", &SweepInspectOptions::yield_claims,
-            "a claimed target goes to a UAV nearer to it than its claimer (false: claims hold)")
+              "drop the prior when fewer than this fraction of its cells are corroded: at the "
+              "start when the scenario's statistics say so, else once its first 10 cells are "
+              "seen (0: never)")
+      .number("low-sweep-above", &SweepInspectOptions::low_sweep_above, 0.0, 1.0,
+              "sweep a corrosion zone's cells at z = 1, in bands of s1, when the fraction of them "
+              "expected corroded (beyond the prior's toured cells) exceeds this (1: never)")
       .choice(
           "strips", &SweepInspectOptions::strips,
           [] {
@@ -141,61 +106,6 @@ Params<SweepInspectOptions> sweep_inspect_params() {
           },
           "the sweep's bands of s2 cells: rows (flown along the hull), columns (flown up "
           "and down its height) or auto (per region, whichever is the shorter flight)")
-      .flag("trim-strip-ends", &SweepInspectOptions::trim_strip_ends,
-            "fly a band only as far as the footprint needs to reach its ends")
-      .flag("follow-clusters", &SweepInspectOptions::follow_clusters,
-            "at z = 1 also look at the unobserved cells beside inspected ones (within the "
-            "inspection radius) before climbing")
-      .flag("inspect-viewpoints", &SweepInspectOptions::inspect_viewpoints,
-            "at z = 1 fly to the position whose footprint takes in the most detections (and "
-            "cells beside inspected ones) per step of flight, held until reached (false: the "
-            "nearest cell's nearest viewpoint, chosen anew each step)")
-      .flag("skip-seen-bands", &SweepInspectOptions::skip_seen_bands,
-            "skip the rest of a band whose cells have all been observed already")
-      .number("low-sweep-above", &SweepInspectOptions::low_sweep_above, 0.0, 1.0,
-              "sweep a corrosion zone's cells at z = 1, in bands of s1, when the fraction of them "
-              "expected corroded (beyond the prior's toured cells) exceeds this (1: never)")
-      .integer("low-sweep-min-bands", &SweepInspectOptions::low_sweep_min_bands, 0, 1000000,
-               "a UAV whose dense columns span at most this many bands of s1, among other cells, "
-               "sweeps them at z = 2 with the rest (0: never)")
-      .flag("share-sweep", &SweepInspectOptions::share_sweep,
-            "a UAV whose sweep is done takes the last bands of the sweep that would end last, "
-            "split so that the two end earliest, before it helps cell by cell")
-      .flag("slab-partition", &SweepInspectOptions::slab_partition,
-            "partition in column slabs (the stripes partitioner, same weights) where they are "
-            "4-connected, else with the partitioner option")
-      .flag("band-partition", &SweepInspectOptions::band_partition,
-            "partition in pieces of one boustrophedon over the hull's column bands, of equal "
-            "expected work, where they are 4-connected (else slab-partition's)")
-      .flag("inspect-band-ends", &SweepInspectOptions::inspect_band_ends,
-            "while sweeping also descend for a detected cell in the footprint that the flight's "
-            "current leg comes no nearer to (beyond a band's trimmed end)")
-      .flag("descend-when-level", &SweepInspectOptions::descend_when_level,
-            "descend for a detection abreast only once it is no longer ahead on the leg, so that "
-            "the z = 2 footprint has seen the rows beyond it (false: within s1/2 ahead)")
-      .flag("plan-prior-tour", &SweepInspectOptions::plan_prior_tour,
-            "visit the prior's cells in the order of a planned tour (nearest neighbour, 2-opt, "
-            "Or-opt), planned again when its next cell was seen while it has at most 100 cells, "
-            "else kept with the seen cells dropped (false: the nearest cell at every step)")
-      .flag("approach-edge", &SweepInspectOptions::approach_edge,
-            "fly to the sweep's first band along the region's edge row when that shortens the "
-            "whole flight (the bands passed are flown only over the cells not yet seen)")
-      .flag("own-band-first", &SweepInspectOptions::own_band_first,
-            "also plan sweeps that begin at the UAV's own band (the bands on one side of it, "
-            "whole or up to a cut near the UAV, then the rest), when that shortens the flight")
-      .flag("balance-flights", &SweepInspectOptions::balance_flights,
-            "without a prior tour, cut the band partition again so that the planned flights from "
-            "the starts (plus expected inspections) end together")
-      .integer("balance-rounds", &SweepInspectOptions::balance_rounds, 0, 100,
-               "passes of balance-flights over the cuts (0: pieces of equal work)")
-      .number("inspection-weight", &SweepInspectOptions::inspection_weight, 0.0, 100.0,
-              "in the band partition, the inspections expected at a cell the sweep detects (its "
-              "weight's excess over 1) count this many times (a toured prior cell's, "
-              "prior-tour-weight times)")
-      .number("prior-tour-weight", &SweepInspectOptions::prior_tour_weight, 0.0, 100.0,
-              "with share-prior, in the band partition, a prior cell toured first counts its "
-              "weight's excess over 1 this many times (share-prior re-splits the tours after the "
-              "partition; without it, once)")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

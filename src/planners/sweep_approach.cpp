@@ -9,7 +9,7 @@ namespace hullinspect::planners {
 
 namespace {
 
-/// The waypoints flown backwards when their far end is nearer to `from` (nearer-sweep-end).
+/// The waypoints flown backwards when their far end is nearer to `from`.
 void nearer_end_first(std::vector<grid::Cell>& waypoints, grid::Cell from, bool nearer_end) {
   if (nearer_end && waypoints.size() > 1 &&
       grid::manhattan(from, waypoints.back()) < grid::manhattan(from, waypoints.front()))
@@ -34,11 +34,11 @@ OwnedBox owned_box(const grid::Grid<std::int16_t>& owner, int uav) {
   return box;
 }
 
-/// own-band-first: the plans in two parts (approach_and_sweep's doc) over `region` (the owner's
-/// bands of request.uav), taken into `best` when shorter than `best_length`.
+/// The own-band plans: in two parts (approach_candidates' doc) over `region` (the owner's
+/// bands of request.uav), appended to `candidates`.
 void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
                     const RegionBands& region, grid::Cell from, int across_lo, int across_hi,
-                    SweepScratch& scratch, SweepPlan& best, int& best_length) {
+                    SweepScratch& scratch, std::vector<SweepCandidate>& candidates) {
   const bool rows = request.axis == BandAxis::kRows;
   const int s = request.band;
   const int h = (s - 1) / 2;
@@ -119,13 +119,13 @@ void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& r
         auto second = sweep_bands(scratch.second, s, request.axis, request.trim_ends, first.back(),
                                   across_size);
         nearer_end_first(second, first.back(), request.nearer_end);
-        const int length = flight_length(from, first) + flight_length(first.back(), second);
-        if (length >= best_length) continue;
-        best_length = length;
-        best.waypoints = std::move(first);
-        best.waypoints.insert(best.waypoints.end(), second.begin(), second.end());
-        best.approach = 0;
-        best.own_band_first = true;
+        SweepCandidate candidate;
+        candidate.plan.waypoints = std::move(first);
+        candidate.plan.waypoints.insert(candidate.plan.waypoints.end(), second.begin(),
+                                        second.end());
+        candidate.plan.own_band_first = true;
+        candidate.cost = manhattan_cost(from, candidate.plan.waypoints);
+        candidates.push_back(std::move(candidate));
       }
     }
   }
@@ -141,9 +141,9 @@ std::vector<grid::Cell> plain_sweep(const grid::Grid<std::int16_t>& owner,
   return waypoints;
 }
 
-std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
-                                        const SweepRequest& request, grid::Cell from,
-                                        std::vector<grid::Cell> plain) {
+std::vector<SweepCandidate> two_block_candidates(const grid::Grid<std::int16_t>& owner,
+                                                 const SweepRequest& request, grid::Cell from,
+                                                 std::vector<grid::Cell> plain) {
   const OwnedBox box = owned_box(owner, request.uav);
   const int x_lo = box.x_lo;
   const int x_hi = box.x_hi;
@@ -157,8 +157,9 @@ std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
   SweepRequest right = request;
   left.x_lo = x_lo;
   right.x_hi = x_hi;
-  std::vector<grid::Cell> best = std::move(plain);
-  int best_length = flight_length(from, best);
+  std::vector<SweepCandidate> candidates(1);
+  candidates[0].cost = manhattan_cost(from, plain);
+  candidates[0].plan.waypoints = std::move(plain);
   for (int cut = x_lo + 1; cut <= x_hi; ++cut) {
     if (!cut_here(cut)) continue;
     left.x_hi = cut - 1;
@@ -168,40 +169,59 @@ std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
       const grid::Cell end = waypoints.empty() ? from : waypoints.back();
       const auto rest = plain_sweep(owner, left_first ? right : left, end);
       waypoints.insert(waypoints.end(), rest.begin(), rest.end());
-      const int length = flight_length(from, waypoints);
-      if (length < best_length) {
-        best_length = length;
-        best = std::move(waypoints);
-      }
+      SweepCandidate candidate;
+      candidate.cost = manhattan_cost(from, waypoints);
+      candidate.plan.waypoints = std::move(waypoints);
+      candidates.push_back(std::move(candidate));
     }
   }
-  return best;
+  return candidates;
 }
 
-SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
-                             grid::Cell from, SweepScratch& scratch_space) {
+std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
+                                        const SweepRequest& request, grid::Cell from,
+                                        std::vector<grid::Cell> plain) {
+  auto candidates = two_block_candidates(owner, request, from, std::move(plain));
+  return take_chosen(candidates).waypoints;
+}
+
+std::vector<SweepCandidate> axis_candidates(const grid::Grid<std::int16_t>& owner, int uav,
+                                            int band, grid::Cell from,
+                                            std::span<const int> band_start) {
+  std::vector<SweepCandidate> candidates(2);
+  for (const BandAxis axis : {BandAxis::kRows, BandAxis::kColumns}) {
+    SweepCandidate& candidate = candidates[axis == BandAxis::kRows ? 0 : 1];
+    candidate.plan.waypoints = band_sweep(owner, uav, band, axis, true, from, band_start);
+    candidate.cost = manhattan_cost(from, candidate.plan.waypoints);
+  }
+  return candidates;
+}
+
+std::vector<SweepCandidate> approach_candidates(const grid::Grid<std::int16_t>& owner,
+                                                const SweepRequest& request, grid::Cell from,
+                                                SweepScratch& scratch_space) {
   grid::Grid<std::int16_t>& scratch = scratch_space.owner;
   // The region's extent; the plans below read only its columns.
   const OwnedBox region_box = owned_box(owner, request.uav);
   const int x_lo = region_box.x_lo, x_hi = region_box.x_hi;
   const int y_lo = region_box.y_lo, y_hi = region_box.y_hi;
-  SweepPlan best;
-  if (x_hi < 0) return best;
+  std::vector<SweepCandidate> candidates(1);  // the plain sweep first
+  if (x_hi < 0) return candidates;
   SweepRequest within = request;
   within.x_lo = x_lo;
   within.x_hi = x_hi;
   if (scratch.width() != owner.width() || scratch.height() != owner.height())
     scratch = grid::Grid<std::int16_t>(owner.width(), owner.height(), -1);
-  // The region's bands, read once: the plain sweep's, and cut in two by own-band-first.
+  // The region's bands, read once: the plain sweep's, and cut in two for the own-band plans.
   const RegionBands region =
       region_bands(owner, request.uav, request.band, request.axis, request.band_start, x_lo, x_hi);
   const int across_size = request.axis == BandAxis::kRows ? owner.height() : owner.width();
-  best.waypoints =
-      sweep_bands(region, request.band, request.axis, request.trim_ends, from, across_size);
-  nearer_end_first(best.waypoints, from, request.nearer_end);
-  if (best.waypoints.empty()) return best;
-  int best_length = flight_length(from, best.waypoints);
-  const grid::Cell plain_first = best.waypoints.front();
+  std::vector<grid::Cell>& plain = candidates[0].plan.waypoints;
+  plain = sweep_bands(region, request.band, request.axis, request.trim_ends, from, across_size);
+  nearer_end_first(plain, from, request.nearer_end);
+  candidates[0].cost = manhattan_cost(from, plain);
+  if (plain.empty()) return candidates;
+  const grid::Cell plain_first = plain.front();
   const bool rows = request.axis == BandAxis::kRows;
   // "along" runs along a band (y for column bands), "across" from band to band.
   const auto along = [rows](grid::Cell c) { return rows ? c.x : c.y; };
@@ -214,7 +234,7 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
   const int across_lo = rows ? y_lo : x_lo;
   const int across_hi = rows ? y_hi : x_hi;
   const int h = (request.band - 1) / 2;
-  if (along_lo + h > along_hi - h) return best;  // a region no taller than one footprint
+  if (along_lo + h > along_hi - h) return candidates;  // a region no taller than one footprint
   // The centre line of the band holding an across coordinate (band_sweep's bands).
   const auto centre = [&](int a) {
     int band_first = across_lo + (a - across_lo) / request.band * request.band;
@@ -255,24 +275,30 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
           }
         }
         auto sweep = plain_sweep(scratch, within, path.back());
-        length += flight_length(path.back(), sweep);
-        if (length >= best_length) continue;
-        best_length = length;
-        best.waypoints.clear();
+        // The approach's legs and the flight to the first band are its reach.
+        const PlanCost bands = manhattan_cost(path.back(), sweep);
+        SweepCandidate candidate;
+        candidate.cost = {length + bands.reach, bands.bands};
+        std::vector<grid::Cell>& waypoints = candidate.plan.waypoints;
         for (std::size_t i = 1; i < path.size(); ++i) {
-          if (path[i] != path[i - 1] &&
-              (best.waypoints.empty() || best.waypoints.back() != path[i]))
-            best.waypoints.push_back(path[i]);
+          if (path[i] != path[i - 1] && (waypoints.empty() || waypoints.back() != path[i]))
+            waypoints.push_back(path[i]);
         }
-        best.approach = best.waypoints.size();
-        best.waypoints.insert(best.waypoints.end(), sweep.begin(), sweep.end());
+        candidate.plan.approach = waypoints.size();
+        waypoints.insert(waypoints.end(), sweep.begin(), sweep.end());
+        candidates.push_back(std::move(candidate));
       }
     }
   }
   if (request.own_band_first)
-    own_band_first(owner, within, region, from, across_lo, across_hi, scratch_space, best,
-                   best_length);
-  return best;
+    own_band_first(owner, within, region, from, across_lo, across_hi, scratch_space, candidates);
+  return candidates;
+}
+
+SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
+                             grid::Cell from, SweepScratch& scratch) {
+  auto candidates = approach_candidates(owner, request, from, scratch);
+  return take_chosen(candidates);
 }
 
 }  // namespace hullinspect::planners

@@ -12,7 +12,7 @@
 namespace hullinspect::planners::sweep_inspect_detail {
 
 // Whether the leg from `a` to `b` runs along x (as a row band's). A band runs along its sweep's
-// axis, but an approach leg (approach-edge) may run across it; a leg that is not straight (or
+// axis, but an approach leg may run across it; a leg that is not straight (or
 // empty) is taken as the sweep's.
 inline bool leg_along_x(BandAxis axis, grid::Cell a, grid::Cell b) {
   if (a.y == b.y && a.x != b.x) return true;

@@ -1,11 +1,13 @@
-// Sweep-Inspect after a UAV fails (docs/sweep-inspect.md, "Failures", take-over-sweep): the
-// cells not yet observed are re-split among the working UAVs so that they end together.
+// Sweep-Inspect after a UAV fails (docs/sweep-inspect.md, "Failures"): the cells not yet
+// observed are re-split among the working UAVs so that they end together (runs of the band
+// order, band_partition.hpp, or column slabs, slab_split.hpp).
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
 #include <algorithm>
 
 #include "hullinspect/planners/band_partition.hpp"
+#include "hullinspect/planners/slab_split.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 #include "sweep_inspect_detail.hpp"
@@ -13,41 +15,6 @@
 namespace hullinspect::planners {
 
 using sweep_inspect_detail::unobserved;
-
-namespace {
-/// Splits `cells` (flat indices, sorted by column) into consecutive column slabs, left to right,
-/// one per UAV of `uavs` (id and position, sorted by x): the earliest common end t for which each
-/// UAV's load, its flight to the nearer end of its slab (per_column per column) and its slab
-/// (1 per cell) fit in t, found by bisection. Calls assign(uav, cell) for every cell.
-template <class Assign>
-void split_in_slabs(const std::vector<int>& cells, int width,
-                    const std::vector<std::pair<int, grid::Cell>>& uavs,
-                    const std::vector<double>& load, double per_column, Assign assign) {
-  if (cells.empty() || uavs.empty()) return;
-  const auto split = [&](double t, bool give) {
-    std::size_t c = 0;
-    for (const auto& uav : uavs) {
-      const int k = uav.first;
-      const grid::Cell pos = uav.second;
-      const std::size_t first = c;
-      while (c < cells.size()) {
-        const int x_lo = cells[first] % width;
-        const int x_hi = cells[c] % width;
-        const int flight = pos.x < x_lo   ? x_lo - pos.x
-                           : pos.x > x_hi ? pos.x - x_hi
-                                          : std::min(pos.x - x_lo, x_hi - pos.x);
-        const double cost = load[static_cast<std::size_t>(k)] + per_column * flight +
-                            static_cast<double>(c - first + 1);
-        if (cost > t) break;
-        if (give) assign(k, cells[c]);
-        ++c;
-      }
-    }
-    return c == cells.size();
-  };
-  split(earliest_common_end([&](double t) { return split(t, false); }), true);
-}
-}  // namespace
 
 void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
   const std::size_t n = uavs_.size();
@@ -86,7 +53,7 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
     for (int i : hull_cells_) {
       // Detected cells not yet inspected are work too: a band passing abreast inspects them
       // (else they would wait, unowned, for the helpers at the end); resplit_detection_ keeps
-      // them in the share's sweep (pass-left-detections).
+      // them in the share's sweep.
       const bool detected = view.map[i] == sim::kCorrosionSeen && view.seen[i] != 0;
       if (unobserved(view, i) && reachable(static_cast<int>(g), i, world::kReachZ2)) {
         split_cells_.push_back(i);

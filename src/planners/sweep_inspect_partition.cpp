@@ -26,19 +26,15 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
   std::vector<int> band_start = column_band_starts(width_of_column);
   // An inspection on detection (a descent, a flight across the band and back, a climb) costs
   // more than its weight says, which is a planned z = 1 tour's (the prior's cells when toured).
-  // The tours, though, are re-split among neighbours after the partition (share-prior): a piece
-  // shrunk for its whole tour lost sweep to pieces that then also took part of its tour, and
-  // ended early (inhomogeneous, s2 = 7, n = 4, 20 tuning seeds: the two UAVs of the denser half
-  // ended their sweeps 25-30 s before the other two with a weight of 1, within 12 s with 0.25).
-  // Without share-prior each UAV tours its own cells, and the whole weight counts.
+  // The tours, though, are re-split among neighbours after the partition (balance_prior_tours): a
+  // piece shrunk for its whole tour would lose sweep to pieces that then also take part of its
+  // tour, and end early; so a toured prior cell weighs only kPriorTourWeight of an inspection.
   const bool toured = options_.prior_first && !prior_dropped_;
-  const double tour_factor = options_.share_prior ? options_.prior_tour_weight : 1.0;
   grid::Grid<double> extra = request.weights;
   for (int i = 0; i < extra.size(); ++i) {
     const bool dense =
         !dense_column_.empty() && dense_column_[static_cast<std::size_t>(i % width_)] != 0;
-    const double factor =
-        toured && context.prior[i] == 1 ? tour_factor : options_.inspection_weight;
+    const double factor = toured && context.prior[i] == 1 ? kPriorTourWeight : kInspectionWeight;
     extra[i] = dense ? 0.0 : factor * std::max(0.0, extra[i] - 1.0);
   }
   const double step = context.params.s2;
@@ -52,7 +48,7 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
                                              [&](int i) { return context.prior[i] == 1; });
     const bool one_plane =
         std::none_of(dense_column_.begin(), dense_column_.end(), [](char d) { return d != 0; });
-    if (options_.balance_flights && !tours && one_plane && reach_ == nullptr)
+    if (!tours && one_plane && reach_ == nullptr)
       pieces = balance_flights(rows, std::move(cuts), std::move(pieces), context);
     return std::make_shared<const partition::Partition>(std::move(pieces));
   } catch (const Error&) {
@@ -98,7 +94,7 @@ partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows
     return std::pair{latest, squares};
   };
   auto best = score();
-  for (int round = 0; round < options_.balance_rounds; ++round) {
+  for (int round = 0; round < kBalanceRounds; ++round) {
     bool moved_any = false;
     for (int c = 0; c + 1 < n; ++c) {
       const auto cc = static_cast<std::size_t>(c);

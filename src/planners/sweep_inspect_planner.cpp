@@ -1,6 +1,7 @@
-// Sweep-Inspect (docs/sweep-inspect.md): the mission's start and each step's decision per
-// UAV — prior tour, sweep, inspection, return, help — and the trace annotations. The other stages
-// are in sweep_inspect_{partition,sweep,targets,prior,failure}.cpp.
+// Sweep-Inspect (docs/sweep-inspect.md): the mission's start, the fleet-wide events of each step
+// (detections, the prior's precision, failures) and the trace annotations. Each UAV's mode and
+// its transitions are in sweep_inspect_modes.cpp; the other stages in
+// sweep_inspect_{partition,sweep,targets,prior,failure}.cpp.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -52,10 +53,10 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   const auto& p = context.params;
   h1_ = (p.s1 - 1) / 2;
   h2_ = (p.s2 - 1) / 2;
-  // At least h2: a descent is for a detected cell abreast (column within h1, row within h2 of the
-  // UAV), which must then lie within the radius, or the UAV would climb at once and descend again
-  // for the same cell for ever (radius-factor below about 0.45 did).
-  radius_ = std::max(h2_, static_cast<int>(std::lround(options_.radius_factor * p.s2)));
+  // An inspection takes the detections within s2 of the descent point (at least h2: a descent
+  // is for a detected cell abreast, within h2 across, which must then lie within the radius, or
+  // the UAV would climb at once and descend again for the same cell for ever).
+  radius_ = std::max(h2_, p.s2);
   partition::PartitionRequest request;
   request.hull = &context.hull;
   request.starts.assign(context.starts.begin(), context.starts.end());
@@ -64,14 +65,13 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
   // The plane a cell is swept on is known before the partition: the zones' statistics decide it.
   const double precision = expected_prior_precision(context);
-  prior_dropped_ = options_.trust_statistics && options_.prior_trust > 0 && precision >= 0 &&
-                   precision < options_.prior_trust;
+  prior_dropped_ = options_.prior_trust > 0 && precision >= 0 && precision < options_.prior_trust;
   hull_cells_ = context.hull.cells();
   find_dense_columns(context);
   partition_ = nullptr;
   band_start_.clear();
-  if (options_.band_partition && !flights_.split()) partition_ = band_partition(request, context);
-  if (partition_ == nullptr && options_.slab_partition) {
+  if (!flights_.split()) partition_ = band_partition(request, context);
+  if (partition_ == nullptr) {
     // Column slabs (the stripes partitioner, weighted alike) suit column bands: a region with a
     // ragged edge costs part-column bands and turns. Where the hull has no connected slabs (a
     // column that is not one run of cells), the partitioner option's partition instead; a bad
@@ -103,11 +103,10 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   }
   positions_.assign(context.starts.begin(), context.starts.end());
   width_ = context.hull.width();
-  tour_left_.clear();
-  tour_left_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
+  tours_ = PriorTourSplitter(width_, h1_, static_cast<std::size_t>(context.hull.cell_count()));
   tour_points_.clear();
   tour_points_.reserve(static_cast<std::size_t>(context.hull.cell_count()));
-  if (options_.prior_first && options_.share_prior) balance_prior_tours(context.starts);
+  if (options_.prior_first) balance_prior_tours(context.starts);
   prior_true_ = 0;
   prior_false_ = 0;
   pending_.clear();
@@ -139,122 +138,19 @@ void SweepInspectPlanner::decide(const sim::PlannerView& view, std::span<sim::Ac
     });
   }
   for (std::size_t k = 0; k < uavs_.size(); ++k) positions_[k] = view.uavs[k].pos;
-  if (options_.take_over_prior && hand_over_prior(view) && options_.share_prior &&
-      !prior_distrusted()) {
+  if (hand_over_prior(view) && !prior_distrusted()) {
     balance_prior_tours(positions_, &view);  // the failed UAV's cells among the neighbours
   }
-  if (options_.take_over_sweep) {
-    bool failure = false;
-    for (std::size_t j = 0; j < uavs_.size(); ++j) {
-      if (!view.uavs[j].failed || handed_over_[j] != 0) continue;
-      handed_over_[j] = 1;
-      failure = true;
-    }
-    if (failure) resplit(view);
+  bool failure = false;
+  for (std::size_t j = 0; j < uavs_.size(); ++j) {
+    if (!view.uavs[j].failed || handed_over_[j] != 0) continue;
+    handed_over_[j] = 1;
+    failure = true;
   }
+  if (failure) resplit(view);
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     actions[k] = decide_uav(static_cast<int>(k), view.uavs[k], view);
   }
-}
-
-sim::Action SweepInspectPlanner::decide_uav(int k, const sim::UavState& u,
-                                            const sim::PlannerView& view) {
-  Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (u.failed) {
-    p = Uav{};
-    p.mode = Mode::kFailed;
-    return sim::Action::kHover;
-  }
-  if (u.in_transit()) return sim::Action::kHover;
-
-  if (!prior_[static_cast<std::size_t>(k)].empty() && u.z == 2 &&
-      (p.mode == Mode::kSweep || p.mode == Mode::kHelp || p.mode == Mode::kDone)) {
-    // Prior cells handed over from a failed UAV: leave the sweep (or help) for them, come back.
-    p.after_prior = p.mode == Mode::kSweep ? Mode::kReturn : Mode::kHelp;
-    if (p.mode == Mode::kSweep) p.resume = u.pos;
-    p.target_cell = -1;
-    p.mode = Mode::kPrior;
-  }
-  if (p.mode == Mode::kPrior) {
-    if (const auto a = prior_tour_step(k, u, view)) return *a;
-  }
-
-  if (p.mode == Mode::kSweep && p.low) {
-    // low-sweep-above: dense columns are swept at z = 1; every cell seen is inspected.
-    if (p.replan) {
-      p.replan = false;
-      p.sweep.assign(sweep_from(k, u.pos));
-      if (!p.low) return decide_uav(k, u, view);
-    }
-    if (u.z == 2) return sim::Action::kChangePlane;
-    if (const auto a = follow_sweep(k, u, view)) return *a;
-  }
-  if (p.mode == Mode::kSweep || p.mode == Mode::kReturn) {
-    if (u.z == 1) {  // arrived below for an inspection
-      p.mode = Mode::kInspect;
-    } else {
-      if (p.replan) {
-        // Its cells were re-split after a failure: strips over its new share from here.
-        p.replan = false;
-        p.mode = Mode::kSweep;
-        p.sweep.assign(sweep_from(k, u.pos));
-      }
-      if (p.mode == Mode::kReturn && u.pos == p.resume) p.mode = Mode::kSweep;
-      if (p.mode == Mode::kSweep && options_.inspect_on_the_way &&
-          detection_abreast(k, u.pos, view)) {
-        p.resume = u.pos;
-        return sim::Action::kChangePlane;
-      }
-      if (p.mode == Mode::kReturn) return step(k, u.pos, p.resume);
-      if (const auto a = follow_sweep(k, u, view)) return *a;
-    }
-  }
-  if (p.mode == Mode::kDone)
-    p.mode = Mode::kHelp;  // work may have appeared (a failure, a claim freed)
-  if (p.mode == Mode::kHelp && p.replan && (u.z == 2 || p.low)) {
-    // Cells re-split after a failure while it was helping: sweep them.
-    p.replan = false;
-    p.sweep.assign(sweep_from(k, u.pos));
-    p.sweep_planned = true;
-    p.target_cell = -1;
-    const sim::Action a = p.sweep.next_action(u.pos);
-    if (a != sim::Action::kHover) {
-      p.mode = Mode::kSweep;
-      return a;
-    }
-  }
-
-  if (p.mode == Mode::kInspect) {
-    if (u.z == 2) {  // climbed back: resume the sweep
-      p.mode = Mode::kReturn;
-      p.target_cell = -1;
-      return u.pos == p.resume ? decide_uav(k, u, view) : step(k, u.pos, p.resume);
-    }
-    int cell = -1;
-    if (options_.inspect_viewpoints) {
-      p.viewpoint = inspection_viewpoint(k, u.pos, p.resume, radius_, p.viewpoint, cell, view);
-    } else {
-      cell = nearest_pending(k, u.pos, p.resume, radius_, view);
-      if (cell < 0 && options_.follow_clusters)
-        cell = nearest_cluster_edge(k, u.pos, p.resume, radius_, view);
-    }
-    p.target_cell = cell;
-    if (cell < 0) {
-      if (options_.resume_ahead) p.resume = rejoin_point(k, p, u.pos, view);
-      if (replan_after_inspection(k, u.pos, view) && p.low) {
-        // The sweep planned from here starts with dense columns, swept at z = 1: no climb.
-        p.mode = Mode::kSweep;
-        return decide_uav(k, u, view);
-      }
-      return sim::Action::kChangePlane;
-    }
-    p.target = options_.inspect_viewpoints ? p.viewpoint
-                                           : reach_position(k, u.pos, view.map.cell(cell), h1_);
-    return step(k, u.pos, p.target);
-  }
-
-  if (p.mode == Mode::kHelp) return help_step(k, u, view);
-  return sim::Action::kHover;  // kDone
 }
 
 bool SweepInspectPlanner::idle(const sim::PlannerView& view) const {

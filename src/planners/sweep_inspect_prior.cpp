@@ -1,6 +1,6 @@
 // Sweep-Inspect's tours of the prior's cells at z = 1 (docs/sweep-inspect.md, "The prior" and
 // "Failures"): the planned tour, its estimate, and the re-splits that end neighbours' tours
-// together (share-prior), also of a failed UAV's cells.
+// together, also of a failed UAV's cells.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
@@ -56,9 +56,8 @@ int SweepInspectPlanner::next_of_tour(int k, grid::Cell from, std::span<const in
   // A short tour (or one forgotten) is planned anew from here: the rest may be ordered better
   // from where it is.
   for (const int i : cells) tour_points_.push_back(hull_cell(i));
-  // The tour's end is free: pulling it towards the nearer end of the sweep after it (half the
-  // flight there added to its cost) lowered T_m by 1.2 s and raised T_c by 0.9 s on the tuning
-  // seeds.
+  // The tour's end is free (not pulled towards the sweep after it): the sweep is planned from
+  // wherever the tour ends.
   plan_open_tour(from, tour_points_, {.reach = h1_});
   p.tour.clear();
   for (const grid::Cell c : tour_points_) p.tour.push_back(c.y * width_ + c.x);
@@ -67,83 +66,14 @@ int SweepInspectPlanner::next_of_tour(int k, grid::Cell from, std::span<const in
   return p.tour.front();
 }
 
-int SweepInspectPlanner::tour_steps(grid::Cell from, std::span<const int> cells) {
-  // A nearest-first tour at z = 1 (Manhattan, the project's x-then-y flights) in which the
-  // footprint (Chebyshev half-width h1) sees every cell along each leg: a planning estimate.
-  tour_left_.assign(cells.begin(), cells.end());
-  int steps = 0;
-  grid::Cell at = from;
-  while (!tour_left_.empty()) {
-    int best_d = std::numeric_limits<int>::max();
-    grid::Cell best{};
-    for (const int i : tour_left_) {
-      const grid::Cell c = hull_cell(i);
-      const grid::Cell q{std::clamp(at.x, c.x - h1_, c.x + h1_),
-                         std::clamp(at.y, c.y - h1_, c.y + h1_)};
-      const int d = grid::manhattan(at, q);
-      if (d < best_d) {
-        best_d = d;
-        best = q;
-      }
-    }
-    steps += best_d;
-    // Seen on the way: within h1 of the leg along x (row at.y), then of the leg along y.
-    const int x_lo = std::min(at.x, best.x) - h1_;
-    const int x_hi = std::max(at.x, best.x) + h1_;
-    const int y_lo = std::min(at.y, best.y) - h1_;
-    const int y_hi = std::max(at.y, best.y) + h1_;
-    std::erase_if(tour_left_, [&](int i) {
-      const grid::Cell c = hull_cell(i);
-      const bool along_x = std::abs(c.y - at.y) <= h1_ && c.x >= x_lo && c.x <= x_hi;
-      const bool along_y = std::abs(c.x - best.x) <= h1_ && c.y >= y_lo && c.y <= y_hi;
-      return along_x || along_y;
-    });
-    at = best;
-  }
-  return steps;
-}
-
-std::size_t SweepInspectPlanner::split_tours(int a, grid::Cell pa, int b, grid::Cell pb,
-                                             std::vector<int>& cells, int* later) {
-  // Cells only a can inspect first, then by how much nearer they are to a than to b, cells only
-  // b can inspect last (no-fly zones); a takes a prefix.
-  const auto key = [&](int i) {
+PriorTourSplitter::Split SweepInspectPlanner::split_tours(int a, grid::Cell pa, int b,
+                                                          grid::Cell pb, std::vector<int>& cells) {
+  // No-fly zones: cells only a can inspect go to a, cells only b can inspect to b.
+  return tours_.split(pa, pb, cells, [&](int i) {
     const bool to_a = reachable(a, i, world::kReachZ1);
     const bool to_b = reachable(b, i, world::kReachZ1);
-    if (to_a != to_b)
-      return to_a ? std::numeric_limits<int>::min() : std::numeric_limits<int>::max();
-    const grid::Cell c = hull_cell(i);
-    return grid::manhattan(pa, c) - grid::manhattan(pb, c);
-  };
-  std::stable_sort(cells.begin(), cells.end(), [&](int x, int y) { return key(x) < key(y); });
-  std::size_t t_min = 0;
-  std::size_t t_max = cells.size();
-  while (t_min < cells.size() && key(cells[t_min]) == std::numeric_limits<int>::min()) ++t_min;
-  while (t_max > t_min && key(cells[t_max - 1]) == std::numeric_limits<int>::max()) --t_max;
-  const std::span<const int> all(cells);
-  const auto tour_a = [&](std::size_t t) { return tour_steps(pa, all.first(t)); };
-  const auto tour_b = [&](std::size_t t) { return tour_steps(pb, all.subspan(t)); };
-  std::size_t lo = t_min;
-  std::size_t hi = t_max;
-  while (lo < hi) {  // the first t at which a's tour is at least b's (the estimates cross)
-    const std::size_t mid = (lo + hi) / 2;
-    if (tour_a(mid) >= tour_b(mid)) {
-      hi = mid;
-    } else {
-      lo = mid + 1;
-    }
-  }
-  std::size_t t = lo;
-  int end = std::max(tour_a(t), tour_b(t));
-  if (t > t_min) {
-    const int before = std::max(tour_a(t - 1), tour_b(t - 1));
-    if (before <= end) {
-      t -= 1;
-      end = before;
-    }
-  }
-  *later = end;
-  return t;
+    return to_a == to_b ? 0 : to_a ? -1 : 1;
+  });
 }
 
 bool SweepInspectPlanner::take_prior_share(int k, grid::Cell pos) {
@@ -156,7 +86,7 @@ bool SweepInspectPlanner::take_prior_share(int k, grid::Cell pos) {
         uav_distances_[j] != uav_distances_[ku]) {
       continue;
     }
-    const int steps = tour_steps(positions_[j], prior_[j]);
+    const int steps = tours_.tour_steps(positions_[j], prior_[j]);
     if (steps > giver_steps) {
       giver_steps = steps;
       giver = static_cast<int>(j);
@@ -164,9 +94,8 @@ bool SweepInspectPlanner::take_prior_share(int k, grid::Cell pos) {
   }
   if (giver < 0) return false;
   auto& cells = prior_[static_cast<std::size_t>(giver)];
-  int later = 0;
-  const std::size_t t =
-      split_tours(k, pos, giver, positions_[static_cast<std::size_t>(giver)], cells, &later);
+  const auto [t, later] =
+      split_tours(k, pos, giver, positions_[static_cast<std::size_t>(giver)], cells);
   // Only when it saves the giver at least a strip's width of steps.
   if (t == 0 || later + (2 * h2_ + 1) > giver_steps) return false;
   prior_[ku].assign(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(t));
@@ -199,11 +128,10 @@ void SweepInspectPlanner::balance_prior_tours(std::span<const grid::Cell> starts
               uav_distances_[static_cast<std::size_t>(b)] ||
           cells_a.size() + cells_b.size() == 0)
         continue;
-      const int now = std::max(tour_steps(pa, cells_a), tour_steps(pb, cells_b));
+      const int now = std::max(tours_.tour_steps(pa, cells_a), tours_.tour_steps(pb, cells_b));
       split_cells_.assign(cells_a.begin(), cells_a.end());
       split_cells_.insert(split_cells_.end(), cells_b.begin(), cells_b.end());
-      int later = 0;
-      const std::size_t t = split_tours(a, pa, b, pb, split_cells_, &later);
+      const auto [t, later] = split_tours(a, pa, b, pb, split_cells_);
       if (later >= now) continue;
       cells_a.assign(split_cells_.begin(), split_cells_.begin() + static_cast<std::ptrdiff_t>(t));
       cells_b.assign(split_cells_.begin() + static_cast<std::ptrdiff_t>(t), split_cells_.end());
@@ -219,7 +147,7 @@ std::optional<sim::Action> SweepInspectPlanner::prior_tour_step(int k, const sim
   // Inspect the prior's cells of the region first, nearest first, then sweep.
   auto& cells = prior_[static_cast<std::size_t>(k)];
   if (prior_distrusted()) cells.clear();  // a prior this wrong is not worth a tour: sweep
-  if (cells.empty() && options_.share_prior && u.z == 1 && !prior_distrusted()) {
+  if (cells.empty() && u.z == 1 && !prior_distrusted()) {
     take_prior_share(k, u.pos);  // the longest tour left gives it the part it ends sooner
   }
   if (cells.empty()) {
@@ -231,36 +159,20 @@ std::optional<sim::Action> SweepInspectPlanner::prior_tour_step(int k, const sim
       p.sweep_planned = true;
       // Plan the sweep from where the prior's inspections ended, over the region's cells they
       // did not see (a strip band's ends that the tour saw are not flown again).
-      if (options_.nearer_sweep_end) {
-        drop_observed(k, view);
-        p.sweep.assign(sweep_from(k, u.pos));
-        p.replan = false;
-      }
+      drop_observed(k, view);
+      p.sweep.assign(sweep_from(k, u.pos));
+      p.replan = false;
     }
   } else {
     if (u.z == 2) return sim::Action::kChangePlane;
-    if (options_.plan_prior_tour) {
-      // On when the cell it flew to was seen (on the way, or by another UAV) or went to another
-      // UAV (share-prior); a long tour also when its cells were re-assigned (forget_tour).
-      const bool seen = p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen;
-      const bool mine = p.repaired
-                            ? p.tour_next < p.tour.size() && p.tour[p.tour_next] == p.target_cell
-                            : std::find(cells.begin(), cells.end(), p.target_cell) != cells.end();
-      if (seen || !mine) p.target_cell = next_of_tour(k, u.pos, cells, view);
-      p.target = reach_position(k, u.pos, view.map.cell(p.target_cell), h1_);
-      return step(k, u.pos, p.target);
-    }
-    int best = -1;
-    int best_d = std::numeric_limits<int>::max();
-    for (int i : cells) {
-      const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
-          u.pos, reach_position(k, u.pos, view.map.cell(i), h1_));
-      if (d < best_d) {
-        best_d = d;
-        best = i;
-      }
-    }
-    p.target = reach_position(k, u.pos, view.map.cell(best), h1_);
+    // On when the cell it flew to was seen (on the way, or by another UAV) or went to another
+    // UAV (the tours' re-split); a long tour also when its cells were re-assigned (forget_tour).
+    const bool seen = p.target_cell < 0 || view.map[p.target_cell] != sim::kCorrosionSeen;
+    const bool mine = p.repaired
+                          ? p.tour_next < p.tour.size() && p.tour[p.tour_next] == p.target_cell
+                          : std::find(cells.begin(), cells.end(), p.target_cell) != cells.end();
+    if (seen || !mine) p.target_cell = next_of_tour(k, u.pos, cells, view);
+    p.target = reach_position(k, u.pos, view.map.cell(p.target_cell), h1_);
     return step(k, u.pos, p.target);
   }
   return std::nullopt;  // its tour is done: on to the mode it now has

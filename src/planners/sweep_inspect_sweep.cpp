@@ -1,14 +1,18 @@
 // Sweep-Inspect's sweeps (docs/sweep-inspect.md, "The sweep" to "Help"): planning a UAV's bands,
 // following them (skipping what is seen), rejoining after an inspection, and taking over the tail
-// of another UAV's sweep (share-sweep).
+// of another UAV's sweep.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <limits>
 
+#include "hullinspect/planners/band_rejoin.hpp"
 #include "hullinspect/planners/sweep_approach.hpp"
+#include "hullinspect/planners/sweep_chooser.hpp"
+#include "hullinspect/planners/sweep_tail.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 #include "sweep_inspect_detail.hpp"
@@ -32,29 +36,28 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
   BandAxis& axis = uavs_[static_cast<std::size_t>(k)].axis;
   const bool low = uavs_[static_cast<std::size_t>(k)].low;
   // On the band partition's grid a z = 2 sweep flies the grid's columns: the pieces are cut for
-  // them (rows across a piece's part-bands flew more: on the tuning seeds `auto` there cost T_m
-  // 6-12 s with a right prior); its z = 1 sweeps of dense columns still choose.
+  // them, and rows across a piece's part-bands fly more; its z = 1 sweeps of dense columns
+  // still choose.
   const bool auto_axis = options_.strips == "auto" && (band_start_.empty() || low);
   axis = options_.strips == "rows" || auto_axis ? BandAxis::kRows : BandAxis::kColumns;
   const int band = low ? h1_ * 2 + 1 : h2_ * 2 + 1;
-  auto waypoints = band_sweep(owner, k, band, axis, options_.trim_strip_ends, from, band_start_);
+  std::vector<grid::Cell> waypoints;
   if (auto_axis) {
-    // Whichever of the two patterns is the shorter flight from here (Manhattan estimate).
-    auto columns =
-        band_sweep(owner, k, band, BandAxis::kColumns, options_.trim_strip_ends, from, band_start_);
-    if (flight_length(from, columns) < flight_length(from, waypoints)) {
-      waypoints = std::move(columns);
-      axis = BandAxis::kColumns;
-    }
+    // Rows (listed first) or columns, whichever the chooser takes.
+    auto candidates = axis_candidates(owner, k, band, from, band_start_);
+    const std::size_t chosen = choose_plan(candidates);
+    axis = chosen == 0 ? BandAxis::kRows : BandAxis::kColumns;
+    waypoints = std::move(candidates[chosen].plan.waypoints);
+  } else {
+    waypoints = band_sweep(owner, k, band, axis, true, from, band_start_);
   }
   uavs_[static_cast<std::size_t>(k)].approach_rest = 0;
-  if (approach && (options_.approach_edge || options_.own_band_first) && reach_ == nullptr) {
-    // approach-edge: fly to the sweep along the region's edge where that sees the bands' ends;
-    // own-band-first: begin with the bands on one side of the UAV's, where that is shorter.
-    SweepRequest request{
-        k, band, axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
-    request.edge_approach = options_.approach_edge;
-    request.own_band_first = options_.own_band_first;
+  if (approach && reach_ == nullptr) {
+    // The plain sweep, the sweep approached along the region's edge where that sees the bands'
+    // ends, or begun with the bands on one side of the UAV's: the chooser takes one.
+    SweepRequest request{k, band, axis, true, band_start_, true};
+    request.edge_approach = true;
+    request.own_band_first = true;
     SweepPlan plan = approach_and_sweep(owner, request, from, sweep_scratch_);
     if (plan.approach > 0)
       uavs_[static_cast<std::size_t>(k)].approach_rest = plan.waypoints.size() - plan.approach;
@@ -72,7 +75,7 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
     waypoints = std::move(flyable);
   }
   // The same strips top to bottom when their far end is nearer (after the prior's inspections).
-  if (options_.nearer_sweep_end && waypoints.size() > 1 &&
+  if (waypoints.size() > 1 &&
       distances.distance(from, waypoints.back()) < distances.distance(from, waypoints.front())) {
     std::reverse(waypoints.begin(), waypoints.end());
   }
@@ -93,22 +96,19 @@ std::vector<grid::Cell> SweepInspectPlanner::part_strips(int k, bool low, grid::
 void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                                      std::vector<grid::Cell>& waypoints) {
   Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (!p.low || !options_.two_block_sweep || !resplit_ || reach_ != nullptr) return;
+  if (!p.low || !resplit_ || reach_ != nullptr) return;
   // A share after a failure's re-split holds cells other UAVs left part-swept, and one
-  // boustrophedon over its ragged bands can leave a band for last on its far side (combined,
-  // s2 = 7, tuning seed 1 000 148, UAV 1 failing at 74 s: T_c 417 s, 337 s in two blocks).
-  // On the 300 tuning seeds of failure_population.yaml the three s2's ratios are 1.2723 /
-  // 1.2476 / 1.2633 with two blocks for shares with both planes and shares wholly in dense
-  // columns, against 1.2861 / 1.2486 / 1.2660 with one boustrophedon; no mission without a
-  // failure changes. (Two blocks at z = 2 gain less and lose more: 1.2759 / 1.2468 / 1.2649, up
-  // to +82 s in a mission, so they are not planned there.)
-  const SweepRequest request{
-      k, 2 * h1_ + 1, p.axis, options_.trim_strip_ends, band_start_, options_.nearer_sweep_end};
-  auto blocks = two_block_sweep(owner, request, from, waypoints);
-  if (blocks != waypoints) {
-    waypoints = std::move(blocks);
-    p.approach_rest = 0;  // the blocks have no approach
-  }
+  // boustrophedon over its ragged bands can leave a band for last on its far side, to be
+  // reached by flying back across the share: two blocks of columns, one after the other, are
+  // candidates too. Only at z = 1 (shares with both planes, shares wholly in dense columns),
+  // where a band is a pass of the hull's height: at z = 2 the Manhattan estimate's gain is
+  // small and the flown mission can be longer. Without a failure there is no re-split, and no
+  // mission changes.
+  const SweepRequest request{k, 2 * h1_ + 1, p.axis, true, band_start_, true};
+  auto candidates = two_block_candidates(owner, request, from, std::move(waypoints));
+  const std::size_t chosen = choose_plan(candidates);
+  waypoints = std::move(candidates[chosen].plan.waypoints);
+  if (chosen != 0) p.approach_rest = 0;  // the blocks have no approach
 }
 
 std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) {
@@ -135,8 +135,7 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
   }
   // A dense part that a few z = 1 bands would cover is swept at z = 2 with the rest: each z = 1
   // band is a whole pass of the hull's height (and a plane change), for a few columns.
-  if (sparse > 0 && dense > 0 &&
-      dense_hi - dense_lo + 1 <= options_.low_sweep_min_bands * (2 * h1_ + 1))
+  if (sparse > 0 && dense > 0 && dense_hi - dense_lo + 1 <= kLowSweepMinBands * (2 * h1_ + 1))
     dense = 0;
   if (dense == 0) {
     waypoints = strips_from(owner_, k, from);
@@ -163,7 +162,7 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
 
 void SweepInspectPlanner::drop_observed(int k, const sim::PlannerView& view) {
   // A detection in a column swept at z = 1 stays: the sweep planned anew inspects it on its way
-  // (left out, it waited for the helpers: found on the combined scenario, s2 = 11, n = 4).
+  // (left out, it would wait for the helpers at the mission's end).
   for (int i : hull_cells_) {
     const bool low =
         !dense_column_.empty() && dense_column_[static_cast<std::size_t>(i % width_)] != 0;
@@ -173,14 +172,11 @@ void SweepInspectPlanner::drop_observed(int k, const sim::PlannerView& view) {
 
 bool SweepInspectPlanner::sweep_work_left(const sim::PlannerView& view, int i, bool low) const {
   // A detection whose finder failed before inspecting it is pending with nobody on the way to
-  // it: dropped from the share at z = 2, the share's bands were trimmed short of it, and it
-  // waited for the helpers at the mission's end (a trace: combined, s2 = 7, tuning seed
-  // 1 000 045, the stern UAV failing at 100 s while inspecting: a survivor flew 68 s from the
-  // middle of the hull for it, T_c 478 s against 435 s with this and 276 s with no failure).
+  // it: dropped from the share at z = 2, the share's bands would be trimmed short of it, and it
+  // would wait for the helpers at the mission's end, one of them flying back from far away.
   if (sweep_work(view, i, low)) return true;
   // Only a re-split marks resplit_detection_.
-  return options_.pass_left_detections && resplit_detection_[i] != 0 &&
-         view.map[i] == sim::kCorrosionSeen;
+  return resplit_detection_[i] != 0 && view.map[i] == sim::kCorrosionSeen;
 }
 
 std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::UavState& u,
@@ -195,33 +191,31 @@ std::optional<sim::Action> SweepInspectPlanner::follow_sweep(int k, const sim::U
                                 : strips_from(owner_, k, u.pos, false));
   }
   // An approach's legs are not bands: none is skipped (its line leg may see nothing new).
-  if (options_.skip_seen_bands && p.approach_rest == 0) skip_seen_bands(p, u.pos, view);
+  if (p.approach_rest == 0) skip_seen_bands(p, u.pos, view);
   const sim::Action a = p.sweep.next_action(u.pos);
   if (a != sim::Action::kHover) return a;
-  if (p.other_part) return next_part(k, u, view);
-  p.mode = Mode::kHelp;
+  if (p.other_part) {
+    next_part(k, u);
+  } else {
+    p.mode = Mode::kHelp;
+  }
   return std::nullopt;
 }
 
-sim::Action SweepInspectPlanner::next_part(int k, const sim::UavState& u,
-                                           const sim::PlannerView& view) {
+void SweepInspectPlanner::next_part(int k, const sim::UavState& u) {
   // One part of its cells swept: the other, planned from here, on its plane.
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   p.other_part = false;
   const bool low = !p.low;
   p.sweep.assign(part_strips(k, low, u.pos));
   if (!low) p.resume = u.pos;  // from z = 1: inspect what is pending here, climb, sweep
-  return decide_uav(k, u, view);
 }
 
 bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
                                           const sim::PlannerView& view) {
-  // The UAVs' sweeps end tens of steps apart (on the tuning seeds of the combined scenario,
-  // n = 8, the first 20-60 s before the last): the one that is done takes the far end of the
-  // sweep that would end last — its last bands, or the far part of its last band — which keeps
-  // the bands' structure where helping cell by cell flies to scattered cells. A sweep left is
-  // estimated as the walk through its waypoints (Manhattan) times kTailWalkCost (inspections on
-  // the way); the split is anywhere along a band, or at a leg between two bands (not flown).
+  // The UAVs' sweeps end tens of steps apart (their shares' inspections differ): the one that
+  // is done takes the far end of the sweep that would end last (split_sweep_tail), among the
+  // working UAVs of its flight part whose sweep is one part in one plane.
   grid::DistanceService& mine = *uav_distances_[static_cast<std::size_t>(j)];
   int donor = -1;
   double donor_alone = 0.0;
@@ -234,49 +228,12 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
     const auto rest = q.sweep.remaining();
     if (rest.empty()) continue;
     const bool sweeping = q.mode == Mode::kSweep;
-    const grid::Cell from = sweeping ? view.uavs[k].pos : q.resume;
-    const int back = sweeping ? 0 : grid::manhattan(view.uavs[k].pos, q.resume);
-    // tail_walk_[i]: the walk from `from` to rest[i].
-    tail_walk_.assign(rest.size(), grid::manhattan(from, rest[0]));
-    for (std::size_t i = 1; i < rest.size(); ++i)
-      tail_walk_[i] = tail_walk_[i - 1] + grid::manhattan(rest[i - 1], rest[i]);
-    const double alone = back + kTailWalkCost * tail_walk_.back();
+    const SweepLeft left{rest, sweeping ? view.uavs[k].pos : q.resume,
+                         sweeping ? 0 : grid::manhattan(view.uavs[k].pos, q.resume), q.axis};
+    const double alone = sweep_left_end(left);
     if (donor >= 0 && alone <= donor_alone) continue;
-    // distance(a, b) searches from b: from here once for every candidate (flights are symmetric).
-    const int to_end = mine.distance(rest.back(), u.pos);
-    const double total = tail_walk_.back();
-    TailSplit split;
-    split.end = alone - (2 * h2_ + 1);  // a split must save at least s2 steps
-    const auto consider = [&](std::size_t leg, grid::Cell at, double kept, bool skip_leg) {
-      // k flies to `at` (on leg `leg`, the leg into rest[leg]) and stops; the UAV j takes the
-      // rest: from `at` (or, skipping a leg between bands, from rest[leg]) to the end.
-      const grid::Cell first = skip_leg ? rest[leg] : at;
-      const double taken = total - (skip_leg ? tail_walk_[leg] : kept);
-      const int to_first = mine.distance(first, u.pos);
-      if (to_first == grid::kUnreachable) return;
-      const double keeps = back + kTailWalkCost * kept;
-      const double takes = std::min(to_first, to_end) + kTailWalkCost * taken;
-      const double end = std::max(keeps, takes);
-      if (end >= split.end) return;
-      split = {end, static_cast<int>(leg), at, skip_leg, to_end < to_first};
-    };
-    for (std::size_t leg = 0; leg < rest.size(); ++leg) {
-      const grid::Cell a = leg == 0 ? from : rest[leg - 1];
-      const grid::Cell b = rest[leg];
-      const double before = leg == 0 ? 0.0 : tail_walk_[leg - 1];
-      if (back + kTailWalkCost * before >= split.end) break;  // k's share only grows
-      const bool band_leg = q.axis == BandAxis::kRows ? a.y == b.y : a.x == b.x;
-      if (!band_leg) {
-        if (leg > 0) consider(leg, a, before, true);
-        continue;
-      }
-      const int length = grid::manhattan(a, b);
-      const grid::Cell dir{(b.x > a.x) - (b.x < a.x), (b.y > a.y) - (b.y < a.y)};
-      for (int d = 1; d < length; ++d) {
-        const grid::Cell at{a.x + d * dir.x, a.y + d * dir.y};
-        if (mine.allowed(at)) consider(leg, at, before + d, false);
-      }
-    }
+    // A split must save at least s2 steps.
+    const TailSplit split = split_sweep_tail(left, u.pos, mine, 2 * h2_ + 1, tail_walk_);
     if (split.leg < 0) continue;
     donor = static_cast<int>(k);
     donor_alone = alone;
@@ -291,7 +248,7 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
   tail.insert(tail.end(), rest.begin() + static_cast<std::ptrdiff_t>(leg), rest.end());
   if (chosen.backward) std::reverse(tail.begin(), tail.end());
   // The tail's cells become the taker's in owner_, so that a sweep planned again from owner_
-  // (replan-rejoin) neither drops the tail nor gives it back to the donor.
+  // (after an inspection) neither drops the tail nor gives it back to the donor.
   const int half = q.low ? h1_ : h2_;
   const auto& map = view.map;
   for (std::size_t i = 0; i + 1 < tail.size(); ++i) {
@@ -329,14 +286,13 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
 bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
                                                   const sim::PlannerView& view) {
   // An inspection can take a UAV up to the inspection radius away from its band (a rectangle at
-  // the footprint's edge, a cluster followed), and flying back to where it left the band cost
-  // each UAV 10-14 moves a mission (imperfect, s2 = 11, n = 8, tuning seeds): the sweep planned
-  // anew from here over what is still unobserved is often shorter. Both flights are estimated as
-  // the sweep will be planned (both parts, with the approach; among no-fly zones the service's
-  // flights, where the way back around a zone is longer still); the state that planning sets is
-  // the UAV's again unless the plan from here is taken.
+  // the footprint's edge, a cluster followed), and flying back to where it left the band can
+  // cost more than the sweep planned anew from here over what is still unobserved. Both flights are
+  // estimated as the sweep will be planned (both parts, with the approach; among no-fly zones the
+  // service's flights, where the way back around a zone is longer still); the state that planning
+  // sets is the UAV's again unless the plan from here is taken.
   Uav& p = uavs_[static_cast<std::size_t>(k)];
-  if (!options_.replan_rejoin || p.resume == pos) return false;
+  if (p.resume == pos) return false;
   drop_observed(k, view);
   const auto restore = [&p, low = p.low, other_part = p.other_part, axis = p.axis,
                         approach_rest = p.approach_rest, resume = p.resume] {
@@ -346,52 +302,18 @@ bool SweepInspectPlanner::replan_after_inspection(int k, grid::Cell pos,
     p.approach_rest = approach_rest;
     p.resume = resume;
   };
-  const double back = flight(k, pos, p.resume) + planned_sweep_steps(k, p.resume);
+  // Two candidates for the chooser, costs only: back to the band (listed first, so a tie keeps
+  // it), or planned anew from here (planned again if chosen, as planning sets the UAV's state).
+  std::array<SweepCandidate, 2> candidates;
+  candidates[0].cost.reach = flight(k, pos, p.resume);
+  candidates[0].cost.bands = planned_sweep_steps(k, p.resume);
   restore();
-  const double here = planned_sweep_steps(k, pos);
+  candidates[1].cost.bands = planned_sweep_steps(k, pos);
   restore();
-  if (here >= back) return false;
+  if (choose_plan(candidates) == 0) return false;
   p.sweep.assign(sweep_from(k, pos));
   p.resume = pos;
   return true;
-}
-
-grid::Cell SweepInspectPlanner::rejoin_point(int k, const Uav& p, grid::Cell pos,
-                                             const sim::PlannerView& view) const {
-  // From the point where it left the strip (on the strip's centre line, at z = 2) the UAV saw the
-  // strip band up to h2 cells ahead, and on the way below it saw more of it; from a point r of the
-  // centre line the footprint sees h2 cells behind r. So it may rejoin at any r, towards the strip
-  // end it is flying to, up to where it now is, that leaves no cell of the band between the two
-  // footprints unobserved.
-  const grid::Cell end = p.sweep.target();
-  const bool rows = leg_along_x(p.axis, p.resume, end);
-  const int end_along = rows ? end.x : end.y;
-  const int resume_along = rows ? p.resume.x : p.resume.y;
-  const int line = rows ? p.resume.y : p.resume.x;
-  if ((rows ? end.y : end.x) != line || end_along == resume_along) return p.resume;
-  const int dir = end_along > resume_along ? 1 : -1;
-  const int reach = std::min(std::max(0, dir * ((rows ? pos.x : pos.y) - resume_along)),
-                             std::abs(end_along - resume_along));
-  const auto& map = view.map;
-  const int across_size = rows ? map.height() : map.width();
-  int ahead = 0;
-  for (int r = 1; r <= reach; ++r) {
-    // The band's cells across at `along`, just behind r's footprint, must have been observed.
-    const int along = resume_along + dir * (r - h2_ - 1);
-    if (r > 2 * h2_ + 1) {
-      bool gap = false;
-      for (int a = std::max(0, line - h2_); a <= std::min(across_size - 1, line + h2_); ++a) {
-        const int i = rows ? map.index(along, a) : map.index(a, along);
-        if (map[i] != sim::kNotHull && unobserved(view, i)) gap = true;
-      }
-      if (gap) break;
-    }
-    const grid::Cell candidate =
-        rows ? grid::Cell{resume_along + dir * r, line} : grid::Cell{line, resume_along + dir * r};
-    if (uav_distances_[static_cast<std::size_t>(k)]->allowed(candidate)) ahead = r;
-  }
-  return rows ? grid::Cell{resume_along + dir * ahead, line}
-              : grid::Cell{line, resume_along + dir * ahead};
 }
 
 bool SweepInspectPlanner::leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
@@ -436,9 +358,9 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
                                             const sim::PlannerView& view) const {
   const Uav& p = uavs_[static_cast<std::size_t>(k)];
   // Descend when a detected cell is abreast: its position along the band within reach of
-  // the z = 1 footprint (across it, within the band's width), and with descend-when-level no
+  // the z = 1 footprint (across it, within the band's width), and no
   // longer ahead on the leg. Also, with
-  // `inspect-band-ends`, when this leg of the flight comes no nearer to it along the band:
+  // when this leg of the flight comes no nearer to it along the band:
   // a cell beyond the trimmed end of a band (within h2 of its last position, never within
   // h1) or behind its start would otherwise wait for the helpers at the mission's end.
   grid::Cell next = pos;
@@ -453,12 +375,10 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
   const bool leg_along = rows ? next.y == pos.y : next.x == pos.x;
   const int leg_lo = std::min(along_of(pos), leg_along ? along_of(next) : along_of(pos));
   const int leg_hi = std::max(along_of(pos), leg_along ? along_of(next) : along_of(pos));
-  // descend-when-level: the direction the leg is flown along (0: not flying along a leg), so
+  // The direction the leg is flown along (0: not flying along a leg), so
   // that a cell still ahead on it waits; once it is level, the footprint has seen h2 rows beyond
   // it, a rectangle's last rows among them.
-  const int leg_dir = !options_.descend_when_level || !leg_along || next == pos ? 0
-                      : along_of(next) > along_of(pos)                          ? 1
-                                                                                : -1;
+  const int leg_dir = !leg_along || next == pos ? 0 : along_of(next) > along_of(pos) ? 1 : -1;
   for (int i : pending_) {
     const grid::Cell c = view.map.cell(i);
     const int along = std::abs(along_of(c) - along_of(pos));
@@ -468,10 +388,9 @@ bool SweepInspectPlanner::detection_abreast(int k, grid::Cell pos,
                                                       : 0;
     const bool ahead = leg_dir * (along_of(c) - along_of(pos)) > 0;
     const bool here_or_never =
-        (along <= h1_ && !ahead) ||
-        (options_.inspect_band_ends && along <= h2_ && nearest_on_leg >= along);
+        (along <= h1_ && !ahead) || (along <= h2_ && nearest_on_leg >= along);
     // The cells nearest_pending may take, so that a UAV never descends for one it then leaves
-    // (with help off, a detection in another UAV's region: it climbed and descended for ever).
+    // (a detection it may not inspect: it would climb and descend for ever).
     if (here_or_never && across <= h2_ && may_inspect(k, i)) return true;
   }
   return false;

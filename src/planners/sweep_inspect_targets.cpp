@@ -1,12 +1,13 @@
 // Sweep-Inspect's single targets (docs/sweep-inspect.md, "Help"): the help phase of a UAV
 // whose sweep is done, the nearest detection, unobserved cell or cluster edge a UAV may take, and
-// the claims that keep two UAVs off one target (yield-claims).
+// the claims that keep two UAVs off one target.
 
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
 #include <algorithm>
 #include <limits>
 
+#include "hullinspect/planners/nearer_claims.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
 #include "sweep_inspect_detail.hpp"
@@ -18,31 +19,25 @@ using sweep_inspect_detail::chebyshev;
 using sweep_inspect_detail::unobserved;
 
 bool SweepInspectPlanner::claimed_by_other(int k, int cell) const {
-  // A claim holds against UAVs no nearer to the cell than the claimer: a UAV that is done takes
-  // over a far claimer's target instead of hovering while the claimer crosses the hull.
   if (cell < 0) return false;
-  int mine = -1;
-  for (std::size_t j = 0; j < uavs_.size(); ++j) {
-    if (static_cast<int>(j) == k || uavs_[j].target_cell != cell) continue;
-    if (!options_.yield_claims) return true;
-    const grid::Cell c = hull_cell(cell);
-    if (mine < 0) {
-      mine = uav_distances_[static_cast<std::size_t>(k)]->distance(
-          positions_[static_cast<std::size_t>(k)], c);
-    }
-    if (uav_distances_[j]->distance(positions_[j], c) <= mine) return true;
-  }
-  return false;
+  const grid::Cell c = hull_cell(cell);
+  return claim_held_against(
+      static_cast<int>(uavs_.size()), k, cell,
+      [&](int j) { return uavs_[static_cast<std::size_t>(j)].target_cell; },
+      [&](int j) {
+        const auto u = static_cast<std::size_t>(j);
+        return uav_distances_[u]->distance(positions_[u], c);
+      });
 }
 
 bool SweepInspectPlanner::left_to_low_sweep(int k, int i) const {
   // After a re-split a survivor may fly far across the others' shares to its own (the failed
   // UAV's cells at one end of the hull shift every share along it), and at z = 2 it detects
-  // corrosion in their dense columns on the way. Descending for it there kept the survivor bound
-  // for the stern about 80 s in a trace (combined, s2 = 11, seed 1 000 021, UAV 0 failing at
-  // 180), while the owner's z = 1 sweep inspects those cells on its way anyway (drop_observed
-  // keeps them in its share).
-  if (!resplit_ || !options_.leave_to_low_sweep) return false;
+  // corrosion in their dense columns on the way. It leaves those detections to the owner's z = 1
+  // sweep, which inspects them on its way anyway (drop_observed keeps them in its share):
+  // descending for each would hold the survivor back from its own share, possibly for a long
+  // stretch of the hull.
+  if (!resplit_) return false;
   const int j = owner_[i];
   if (j < 0 || j == k || dense_column_.empty() ||
       dense_column_[static_cast<std::size_t>(i % width_)] == 0)
@@ -55,8 +50,7 @@ bool SweepInspectPlanner::left_to_low_sweep(int k, int i) const {
 
 bool SweepInspectPlanner::may_inspect(int k, int i) const {
   if (left_to_low_sweep(k, i)) return false;
-  return (options_.help || partition_->owner[i] == k) && reachable(k, i, world::kReachZ1) &&
-         !claimed_by_other(k, i);
+  return reachable(k, i, world::kReachZ1) && !claimed_by_other(k, i);
 }
 
 int SweepInspectPlanner::nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
@@ -89,7 +83,6 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
   if (searched) from_here_ = distances.field(pos);
   for (int i : hull_cells_) {
     if (!unobserved(view, i)) continue;
-    if (!options_.help && partition_->owner[i] != k) continue;
     if (!reachable(k, i, world::kReachZ2) || claimed_by_other(k, i)) continue;
     const grid::Cell c = view.map.cell(i);
     const grid::Cell there = reach_position(k, pos, c, h2_);
@@ -108,42 +101,14 @@ bool SweepInspectPlanner::cluster_edge(int k, int x, int y, const sim::PlannerVi
          reachable(k, i, world::kReachZ1) && !claimed_by_other(k, i);
 }
 
-int SweepInspectPlanner::nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
-                                              const sim::PlannerView& view) const {
-  // Corrosion comes in rectangles: an unobserved cell beside an inspected one is likely corroded
-  // too, and looking at it now from z = 1 costs a step or two, against a climb, a descent and a
-  // flight back when the sweep detects it later.
-  const auto& map = view.map;
-  int best = -1;
-  int best_d = std::numeric_limits<int>::max();
-  const int x_lo = std::max(0, around.x - radius);
-  const int x_hi = std::min(map.width() - 1, around.x + radius);
-  const int y_lo = std::max(0, around.y - radius);
-  const int y_hi = std::min(map.height() - 1, around.y + radius);
-  for (int y = y_lo; y <= y_hi; ++y) {
-    for (int x = x_lo; x <= x_hi; ++x) {
-      const int i = map.index(x, y);
-      if (!cluster_edge(k, x, y, view)) continue;
-      const grid::Cell c{x, y};
-      const int d = uav_distances_[static_cast<std::size_t>(k)]->distance(
-          pos, reach_position(k, pos, c, h1_));
-      if (d < best_d) {
-        best_d = d;
-        best = i;
-      }
-    }
-  }
-  return best;
-}
-
 grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid::Cell around,
                                                      int radius, grid::Cell held, int& cell,
                                                      const sim::PlannerView& view) {
   // The z = 1 footprint takes in every cell within h1 of the UAV, a rectangle's cells several at
-  // a time. Flying to the nearest cell's nearest viewpoint, chosen anew each step, saw them one
-  // edge at a time and turned back and forth (imperfect, s2 = 11, n = 8, tuning seed 1 000 007:
-  // 33 steps at z = 1 for a cluster of about 9 × 8 cells). Work: the detections it may inspect
-  // within `radius` of `around` and, with follow-clusters, the unobserved cells beside inspected
+  // a time, so the viewpoint is chosen by the work it takes in, not by the nearest cell: flying
+  // to the nearest cell's nearest viewpoint, chosen anew each step, sees a cluster one edge at a
+  // time and turns back and forth over it. Work: the detections it may inspect
+  // within `radius` of `around` and the unobserved cells beside inspected
   // ones; every cell counts one. A position is worth the work its footprint takes in per step of
   // the flight there (plus one, so that a far position taking in much beats a near one taking in
   // little only by enough).
@@ -164,13 +129,11 @@ grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid
     view_work_[at(c.x, c.y)] += 1;
     any = true;
   }
-  if (options_.follow_clusters) {
-    for (int y = std::max(0, around.y - radius); y <= std::min(y1, around.y + radius); ++y) {
-      for (int x = std::max(0, around.x - radius); x <= std::min(x1, around.x + radius); ++x) {
-        if (!cluster_edge(k, x, y, view)) continue;
-        view_work_[at(x, y)] += 1;
-        any = true;
-      }
+  for (int y = std::max(0, around.y - radius); y <= std::min(y1, around.y + radius); ++y) {
+    for (int x = std::max(0, around.x - radius); x <= std::min(x1, around.x + radius); ++x) {
+      if (!cluster_edge(k, x, y, view)) continue;
+      view_work_[at(x, y)] += 1;
+      any = true;
     }
   }
   if (!any) return grid::kNoCell;
@@ -230,8 +193,8 @@ grid::Cell SweepInspectPlanner::inspection_viewpoint(int k, grid::Cell pos, grid
   return best;
 }
 
-sim::Action SweepInspectPlanner::help_step(int k, const sim::UavState& u,
-                                           const sim::PlannerView& view) {
+std::optional<sim::Action> SweepInspectPlanner::help_step(int k, const sim::UavState& u,
+                                                          const sim::PlannerView& view) {
   Uav& p = uavs_[static_cast<std::size_t>(k)];
   // Keep a target while it is still work; else take the nearest unclaimed work anywhere:
   // detected cells first (inspected from z = 1), then unknown cells (covered from z = 2).
@@ -245,10 +208,9 @@ sim::Action SweepInspectPlanner::help_step(int k, const sim::UavState& u,
                             !reachable(k, p.target_cell, world::kReachZ1));
   if (target_done || claimed_by_other(k, p.target_cell)) {
     // Detected cells first (a sweep passing abreast is not sure to), then the tail of the sweep
-    // that would end last (share-sweep), then unknown cells.
+    // that would end last, then unknown cells.
     p.target_cell = nearest_pending(k, u.pos, u.pos, -1, view);
-    if (p.target_cell < 0 && options_.share_sweep && take_sweep_tail(k, u, view))
-      return decide_uav(k, u, view);
+    if (p.target_cell < 0 && take_sweep_tail(k, u, view)) return std::nullopt;  // now sweeping
     if (p.target_cell < 0) p.target_cell = nearest_unknown(k, u.pos, view);
     if (p.target_cell < 0) {
       p.mode = Mode::kDone;

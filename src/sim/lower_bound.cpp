@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/launch_sites.hpp"
 #include "hullinspect/world/no_fly.hpp"
 
@@ -33,26 +35,48 @@ long long transit_steps(long long d, int n, int uz, int start_z) {
 
 LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
                        const world::MissionParams& params) {
-  const auto starts = world::start_cells(params, hull);
+  return lower_bound(hull, truth, params, world::start_cells(params, hull));
+}
+
+LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
+                       const world::MissionParams& params, std::span<const grid::Cell> starts) {
   const int n = params.uavs;
   const int s1 = params.s1;
   const int s2 = params.s2;
   const int uz = params.plane_change_steps();
-  const int h1 = (s1 - 1) / 2;
-  const int h2 = (s2 - 1) / 2;
+  const int h1 = params.half_side(1);
+  const int h2 = params.half_side(2);
 
   // With launch sites a UAV reaches its start cell only after its outbound leg, and the last
   // landing comes at least a descent and a transfer after the hull is complete.
   std::vector<int> outbound(starts.size(), 0);
   long long outbound_total = 0;
   int landing = 0;
+  // With a battery, every sortie flies out from a site and back (at least the ground legs and
+  // the flight between the site and the nearest hull cell each way): what it leaves for work.
+  const world::BatterySteps battery = world::battery_steps(params);
+  long long sortie_legs = 0;
   if (!params.launch_sites.empty()) {
     const auto reach_map = world::compute_reachability(hull, params.no_fly.get(), s1, s2, starts);
     const auto legs = world::plan_launch_legs(params, reach_map, starts);
     outbound = legs.outbound;
     for (const int o : outbound) outbound_total += o;
     landing = legs.takeoff_steps + legs.transfer_steps;
+    int nearest = std::numeric_limits<int>::max();
+    for (const auto& d : legs.flight_home) {
+      for (int i : hull.cells()) nearest = std::min(nearest, d[i]);
+    }
+    sortie_legs = 2LL * (landing + std::min(nearest, grid::kUnreachable));
   }
+  // Fleet steps that endurance adds to a work of `work` steps: the fleet flies at least
+  // ceil(work / (E − legs)) sorties; each one after a UAV's first pays its legs and a swap.
+  const auto sortie_cost = [&](long long work) -> long long {
+    if (!battery.limited || params.launch_sites.empty()) return 0;
+    const long long useful = battery.endurance - sortie_legs;
+    if (useful <= 0) return 0;
+    const long long sorties = ceil_div(work, useful);
+    return std::max(0LL, sorties - n) * (sortie_legs + battery.swap);
+  };
 
   long long hull_cells = 0;
   long long corroded = 0;
@@ -97,8 +121,12 @@ LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t
   }
 
   LowerBound b;
-  b.rate_t_m = static_cast<int>(ceil_div(best_m + outbound_total, n)) + landing;
-  b.rate_t_c = corroded == 0 ? 0 : static_cast<int>(ceil_div(best_c + outbound_total, n));
+  b.sortie_t_m = static_cast<int>(ceil_div(sortie_cost(best_m), n));
+  b.rate_t_m =
+      static_cast<int>(ceil_div(best_m + outbound_total + sortie_cost(best_m), n)) + landing;
+  b.rate_t_c = corroded == 0
+                   ? 0
+                   : static_cast<int>(ceil_div(best_c + outbound_total + sortie_cost(best_c), n));
   b.reach_t_m = reach_m + landing;
   b.reach_t_c = corroded == 0 ? 0 : reach_c;
   b.t_c = std::max(b.rate_t_c, b.reach_t_c);

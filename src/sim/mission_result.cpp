@@ -21,8 +21,24 @@ UavCounters MissionResult::totals() const {
     total.steps_z1 += u.steps_z1;
     total.steps_z2 += u.steps_z2;
     total.steps_transit += u.steps_transit;
+    total.flight_steps += u.flight_steps;
+    total.swaps += u.swaps;
   }
   return total;
+}
+
+int MissionResult::sorties() const {
+  int n = 0;
+  for (const auto& u : uavs) n += static_cast<int>(u.sorties.size());
+  return n;
+}
+
+std::optional<int> MissionResult::min_battery() const {
+  std::optional<int> least;
+  for (const auto& u : uavs) {
+    if (u.min_battery >= 0 && (!least || u.min_battery < *least)) least = u.min_battery;
+  }
+  return least;
 }
 
 }  // namespace hullinspect::sim

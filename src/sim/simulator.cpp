@@ -13,13 +13,20 @@ namespace hullinspect::sim {
 
 Simulator::Simulator(const world::HullMask& hull, const world::Instance& instance,
                      const world::MissionParams& params)
+    : Simulator(hull, instance, params, world::start_cells(params, hull)) {}
+
+Simulator::Simulator(const world::HullMask& hull, const world::Instance& instance,
+                     const world::MissionParams& params, std::span<const grid::Cell> starts)
     : hull_(hull),
       truth_(instance.truth),
       params_(params),
+      starts_(starts.begin(), starts.end()),
       uz_(params.plane_change_steps()),
       flights_(world::neighbour_flights(hull, params)) {
   const int n = params.uavs;
-  const auto starts = world::start_cells(params, hull);
+  if (starts.size() != static_cast<std::size_t>(n)) {
+    throw LogicError(fmt::format("{} start cells for {}", starts.size(), plural(n, "UAV")));
+  }
   for (const auto& c : starts) {
     if (no_fly(c)) {
       throw LogicError(fmt::format("a UAV starts on the no-fly position ({}, {})", c.x, c.y));
@@ -46,25 +53,34 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
         UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, false};
   }
   legs_ = world::plan_launch_legs(params, reach_, starts);
+  battery_ = world::battery_steps(params);
+  world::check_endurance_reaches(params, hull, reach_, legs_);
   if (!legs_.empty()) {
     // Each UAV waits on the ground (transfer, take-off) at its site, flies out on plane 2 and
     // descends when the mission starts on plane 1: the reverse of its flight home from the start.
     away_path_.resize(static_cast<std::size_t>(n));
     away_next_.assign(static_cast<std::size_t>(n), 0);
-    climbed_at_.assign(static_cast<std::size_t>(n), 0);
+    landed_end_.assign(static_cast<std::size_t>(n), 0);
+    out_begin_.assign(static_cast<std::size_t>(n), 0);
     for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
       auto out = legs_.path_home(static_cast<int>(k), starts[k]);
       std::reverse(out.begin(), out.end());
       const grid::Cell site = out.empty() ? starts[k] : out.front();
       auto& path = away_path_[k];
-      path.assign(static_cast<std::size_t>(legs_.transfer_steps + legs_.takeoff_steps), site);
-      for (std::size_t i = 1; i < out.size(); ++i) path.push_back(out[i]);
-      path.push_back(starts[k]);
-      path.resize(static_cast<std::size_t>(legs_.outbound[k]), starts[k]);
+      path.assign(static_cast<std::size_t>(legs_.transfer_steps + legs_.takeoff_steps),
+                  AwayStep{site});
+      for (std::size_t i = 1; i < out.size(); ++i) path.push_back(AwayStep{out[i]});
+      path.push_back(AwayStep{starts[k]});
+      path.resize(static_cast<std::size_t>(legs_.outbound[k]), AwayStep{starts[k]});
+      if (!path.empty()) path.back().z = static_cast<std::int8_t>(params.start_z);
       uavs_[k].pos = site;
-      uavs_[k].z = 2;
+      uavs_[k].z = path.empty() ? params.start_z : 2;
       uavs_[k].away_left = static_cast<int>(path.size());
+      uavs_[k].airborne = path.empty();
     }
+  }
+  if (battery_.limited) {
+    for (auto& u : uavs_) u.battery_left = battery_.endurance;
   }
   fail_time_.assign(static_cast<std::size_t>(n), -1);
   applied_.assign(static_cast<std::size_t>(n), Action::kHover);
@@ -82,8 +98,12 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
   result_.unreachable_cells = reach_.unreachable_z1;
   result_.unreachable_z2_cells = reach_.unreachable_z2;
   result_.uavs.assign(static_cast<std::size_t>(n), UavCounters{});
-  for (std::size_t k = 0; k < legs_.site_of.size(); ++k)
+  for (std::size_t k = 0; k < legs_.site_of.size(); ++k) {
     result_.uavs[k].launch_site = legs_.site_of[k];
+    if (battery_.limited) result_.uavs[k].min_battery = battery_.endurance;
+    // Take-off and transfer of no time from a site on the start cell: airborne from t = 0.
+    if (uavs_[k].airborne) result_.uavs[k].sorties.push_back({0, -1, legs_.site_of[k]});
+  }
   const auto series_capacity = static_cast<std::size_t>(std::min(params.time_limit, 1 << 20)) + 1;
   result_.inspected_series.reserve(series_capacity);
   result_.known_series.reserve(series_capacity);
@@ -113,26 +133,35 @@ void Simulator::step(std::span<const Action> actions) {
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
     UavState& u = uavs_[k];
     UavCounters& count = result_.uavs[k];
-    if (!u.failed && fail_time_[k] >= 0 && time_ >= fail_time_[k]) {
+    // Airborne with an empty battery: a crash, which fails the UAV as a failure does.
+    const bool crash = !u.failed && u.airborne && u.battery_left == 0;
+    if (crash || (!u.failed && fail_time_[k] >= 0 && time_ >= fail_time_[k])) {
       u.failed = true;
-      result_.uavs[k].failed_at = time_;
+      count.failed_at = time_;
+      count.battery_crash = crash;
+      if (crash) ++result_.battery_crashes;
       ++failed_;
     }
     applied_[k] = Action::kHover;
     if (u.failed) continue;
+    const bool was_airborne = u.airborne;
     if (u.away_left > 0) {
       advance_away(k);
+      use_battery(k, was_airborne);
       continue;
     }
+    if (!u.airborne) continue;  // landed at its site for good
     if (u.flight_left > 0) {
       // Still flying to the neighbour it moved to: a step on its plane without sensing.
       --u.flight_left;
       ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
+      use_battery(k, was_airborne);
       continue;
     }
     if (u.in_transit()) {
       ++count.steps_transit;
       if (--u.transit_left == 0) u.z = 3 - u.z;
+      use_battery(k, was_airborne);
       continue;
     }
     const Action a = actions[k];
@@ -168,6 +197,7 @@ void Simulator::step(std::span<const Action> actions) {
     }
     // A UAV is away only before the actions (handled above), so this is "not changing plane".
     if (u.transit_left == 0) ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
+    use_battery(k, was_airborne);
   }
   ++time_;
   sense_all();
@@ -203,19 +233,93 @@ void Simulator::check_separation() {
   result_.min_separation = smallest;
 }
 
+// A step flown (or taken off or landed in) uses one step of battery; the step that ends a swap
+// leaves a full one. Records take-offs and landings as sorties.
+void Simulator::use_battery(std::size_t k, bool was_airborne) {
+  UavState& u = uavs_[k];
+  UavCounters& count = result_.uavs[k];
+  if (!was_airborne && !u.airborne) return;
+  ++count.flight_steps;
+  if (!legs_.empty()) {
+    if (!was_airborne) count.sorties.push_back({time_, -1, legs_.site_of[k]});
+    if (!u.airborne && !count.sorties.empty()) count.sorties.back().landing = time_ + 1;
+  }
+  if (!battery_.limited) return;
+  --u.battery_left;
+  if (u.airborne) count.min_battery = std::min(count.min_battery, u.battery_left);
+}
+
 void Simulator::advance_away(std::size_t k) {
   UavState& u = uavs_[k];
   const auto& path = away_path_[k];
   std::size_t& next = away_next_[k];
-  u.pos = path[next++];
+  const AwayStep& s = path[next++];
+  u.pos = s.pos;
+  u.z = s.z;
+  u.airborne = (s.flags & kAirborne) != 0;
   u.away_left = static_cast<int>(path.size() - next);
   ++result_.uavs[k].steps_away;
-  if (homing_) {
-    if (u.away_left <= climbed_at_[k]) u.z = 2;
-    if (u.away_left == 0) result_.uavs[k].landed_at = time_ + 1;
-  } else if (u.away_left == 0) {
-    u.z = params_.start_z;
+  if ((s.flags & kSwapped) != 0) {
+    u.battery_left = battery_.endurance;
+    ++result_.uavs[k].swaps;
   }
+  if (homing_ && u.away_left == 0 && !u.airborne) result_.uavs[k].landed_at = time_ + 1;
+}
+
+grid::Cell Simulator::append_flight_home(std::size_t k) {
+  UavState& u = uavs_[k];
+  auto& path = away_path_[k];
+  // Climb (finishing a plane change), fly home on plane 2, land and transfer.
+  const int total = legs_.homeward_steps(static_cast<int>(k), u.pos, u.z, u.transit_left);
+  const auto flight = legs_.path_home(static_cast<int>(k), u.pos);
+  const grid::Cell site = flight.empty() ? u.pos : flight.back();
+  const int climb =
+      total - static_cast<int>(flight.size()) - legs_.takeoff_steps - legs_.transfer_steps;
+  const std::size_t begin = path.size();
+  path.resize(begin + static_cast<std::size_t>(climb),
+              AwayStep{u.pos, static_cast<std::int8_t>(u.z)});
+  for (const grid::Cell c : flight) path.push_back(AwayStep{c});
+  path.resize(begin + static_cast<std::size_t>(total), AwayStep{site});
+  if (path.size() > begin) path.back().flags = 0;
+  u.transit_left = 0;
+  u.flight_left = 0;
+  return site;
+}
+
+void Simulator::return_for_swap(int uav) {
+  if (legs_.empty() || uav < 0 || uav >= static_cast<int>(uavs_.size())) {
+    throw LogicError(fmt::format("return_for_swap: no UAV {} with a launch site", uav));
+  }
+  const auto k = static_cast<std::size_t>(uav);
+  UavState& u = uavs_[k];
+  if (u.failed || u.away_left > 0) {
+    throw LogicError(fmt::format("return_for_swap: UAV {} is {} at t = {}", uav,
+                                 u.failed ? "failed" : "already away", time_));
+  }
+  const grid::Cell resume = u.pos;
+  const int resume_z = u.transit_left > 0 ? 3 - u.z : u.z;
+  auto& path = away_path_[k];
+  path.clear();
+  const grid::Cell site = append_flight_home(k);
+  if (path.empty()) path.push_back(AwayStep{site, 2, 0});  // landed where it was: one step down
+  landed_end_[k] = path.size();
+  path.resize(path.size() + static_cast<std::size_t>(battery_.swap), AwayStep{site, 2, 0});
+  path.back().flags = kSwapped;
+  out_begin_[k] = path.size();
+  // The way out: transfer and take-off at the site, the flight to `resume`, the descent.
+  path.resize(path.size() + static_cast<std::size_t>(legs_.transfer_steps + legs_.takeoff_steps),
+              AwayStep{site});
+  auto out = legs_.path_home(uav, resume);
+  std::reverse(out.begin(), out.end());
+  for (std::size_t i = 1; i < out.size(); ++i) path.push_back(AwayStep{out[i]});
+  if (!out.empty()) path.push_back(AwayStep{resume});
+  if (resume_z == 1) {
+    path.resize(path.size() + static_cast<std::size_t>(legs_.plane_change_steps), AwayStep{resume});
+  }
+  if (path.size() == out_begin_[k]) path.push_back(AwayStep{resume});  // take off on the spot
+  path.back().z = static_cast<std::int8_t>(resume_z);
+  away_next_[k] = 0;
+  u.away_left = static_cast<int>(path.size());
 }
 
 void Simulator::start_homing() {
@@ -224,31 +328,31 @@ void Simulator::start_homing() {
     UavState& u = uavs_[k];
     if (u.failed) continue;
     auto& path = away_path_[k];
-    std::size_t& next = away_next_[k];
-    std::vector<grid::Cell> home;
-    if (u.away_left > 0) {
-      // Still on its way out: it turns back along the positions it has flown, to the ground.
-      for (std::size_t i = next; i-- > 1;) home.push_back(path[i - 1]);
-      if (next > 0) home.push_back(path[0]);
-      climbed_at_[k] = static_cast<int>(home.size());
+    const std::size_t next = away_next_[k];
+    if (u.away_left > 0 && next < landed_end_[k]) {
+      // Flying home for a swap: it lands and stays.
+      path.resize(landed_end_[k]);
+    } else if (u.away_left > 0 && next <= out_begin_[k]) {
+      path.resize(next);  // on the ground: it stays
+    } else if (u.away_left > 0) {
+      // On its way out: it turns back along the positions it has flown, to the ground.
+      const std::size_t b = out_begin_[k];
+      std::vector<AwayStep> home;
+      for (std::size_t i = next; i-- > b + 1;) home.push_back(AwayStep{path[i - 1].pos});
+      home.push_back(AwayStep{path[b].pos, 2, 0});
+      path = std::move(home);
+      away_next_[k] = 0;
     } else {
-      // Climb (finishing a plane change), fly home on plane 2, descend and transfer.
-      const int total = legs_.homeward_steps(static_cast<int>(k), u.pos, u.z, u.transit_left);
-      const auto flight = legs_.path_home(static_cast<int>(k), u.pos);
-      const grid::Cell site = flight.empty() ? u.pos : flight.back();
-      const int climb =
-          total - static_cast<int>(flight.size()) - legs_.takeoff_steps - legs_.transfer_steps;
-      home.assign(static_cast<std::size_t>(climb), u.pos);
-      home.insert(home.end(), flight.begin(), flight.end());
-      home.resize(static_cast<std::size_t>(total), site);
-      climbed_at_[k] = total - climb;
-      u.transit_left = 0;
-      u.flight_left = 0;
+      path.clear();
+      append_flight_home(k);
+      away_next_[k] = 0;
     }
-    path = std::move(home);
-    next = 0;
-    u.away_left = static_cast<int>(path.size());
-    if (u.away_left == 0) result_.uavs[k].landed_at = time_;
+    landed_end_[k] = out_begin_[k] = path.size();
+    u.away_left = static_cast<int>(path.size() - away_next_[k]);
+    if (u.away_left == 0) {
+      u.airborne = false;
+      result_.uavs[k].landed_at = time_;
+    }
   }
 }
 
@@ -265,7 +369,7 @@ void Simulator::sense_all() {
 
 void Simulator::sense(int uav) {
   const UavState& u = uavs_[static_cast<std::size_t>(uav)];
-  const int half = (params_.footprint(u.z) - 1) / 2;
+  const int half = params_.half_side(u.z);
   const int x0 = std::max(0, u.pos.x - half);
   const int x1 = std::min(map_.width() - 1, u.pos.x + half);
   const int y0 = std::max(0, u.pos.y - half);

@@ -9,6 +9,9 @@ namespace hullinspect::sim {
 
 std::optional<std::string> state_violation(const UavState& state, int plane_change_steps) {
   if (state.z != 1 && state.z != 2) return fmt::format("is on plane {} (expected 1 or 2)", state.z);
+  if (state.battery_left < -1) return fmt::format("has {} battery steps left", state.battery_left);
+  if (!state.airborne && state.transit_left != 0)
+    return std::string("is changing plane on the ground");
   if (state.transit_left < 0 || state.transit_left > plane_change_steps - 1) {
     return fmt::format("has {} plane-change steps left (at most {} with u_z = {})",
                        state.transit_left, plane_change_steps - 1, plane_change_steps);
@@ -16,9 +19,44 @@ std::optional<std::string> state_violation(const UavState& state, int plane_chan
   return std::nullopt;
 }
 
+namespace {
+
+// Batteries and the ground (docs/model.md, "Batteries and sorties"): a step flown (or taken off or
+// landed in) uses one step of battery, a step on the ground none unless it swaps the battery; only
+// a UAV away at its site takes off or lands, and on the ground it stays where it is; airborne with
+// an empty battery it crashes (fails) in the next step.
+std::optional<std::string> battery_violation(const UavState& before, const UavState& after) {
+  if (before.failed) return std::nullopt;
+  if (before.airborne && before.battery_left == 0 && !after.failed)
+    return std::string("flew on with an empty battery instead of crashing");
+  if (after.failed) return std::nullopt;
+  const bool away = before.away_left > 0 || after.away_left > 0;
+  if (before.airborne != after.airborne && !away) {
+    return fmt::format("{} away from a launch site", after.airborne ? "took off" : "landed");
+  }
+  if (!before.airborne && !after.airborne && before.pos != after.pos)
+    return std::string("moved while on the ground");
+  if ((before.battery_left < 0) != (after.battery_left < 0))
+    return std::string("changed between a limited and an unlimited battery");
+  if (before.battery_left < 0) return std::nullopt;
+  const bool flew = before.airborne || after.airborne;
+  if (flew && after.battery_left != before.battery_left - 1) {
+    return fmt::format("flew a step and its battery went from {} to {} steps", before.battery_left,
+                       after.battery_left);
+  }
+  if (!flew && after.battery_left < before.battery_left) {
+    return fmt::format("used battery on the ground ({} to {} steps)", before.battery_left,
+                       after.battery_left);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<std::string> step_violation(const UavState& before, const UavState& after,
                                           int plane_change_steps,
                                           const grid::FlightSteps& flights) {
+  if (auto broken = battery_violation(before, after)) return broken;
   const bool same_place = before.pos == after.pos;
   const bool unchanged = same_place && before.z == after.z &&
                          before.transit_left == after.transit_left &&

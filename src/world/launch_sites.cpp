@@ -11,43 +11,44 @@ namespace hullinspect::world {
 
 namespace {
 
-/// A time option: finite, not negative, and no longer than the mission's time limit (so that step
-/// counts stay far from overflow).
-void check_seconds(const char* name, double seconds, int time_limit) {
-  if (!std::isfinite(seconds) || seconds < 0.0 || seconds > time_limit) {
+/// A time option: finite, not negative, and no longer than the mission's time limit in seconds
+/// (so that step counts stay far from overflow).
+void check_seconds(const char* name, double seconds, const MissionParams& p) {
+  const double limit_s = p.time_limit * p.step_seconds();
+  if (!std::isfinite(seconds) || seconds < 0.0 || seconds > limit_s) {
     throw ParameterError(name, fmt::format("must be a number of seconds in [0, {}] (the time "
                                            "limit) (got {})",
-                                           time_limit, seconds));
+                                           limit_s, seconds));
   }
-}
-
-bool on_edge(grid::Cell c, const HullMask& hull) {
-  return c.x == 0 || c.y == 0 || c.x == hull.width() - 1 || c.y == hull.height() - 1;
 }
 
 }  // namespace
 
-int seconds_to_steps(double seconds) {
-  // A step lasts one second; the tolerance keeps 3.0000000001 (a decimal's binary error) at 3.
-  return static_cast<int>(std::ceil(seconds - 1e-9));
+void check_launch_site(grid::Cell c, int width, int height,
+                       const std::function<bool(grid::Cell)>& is_hull,
+                       const std::function<bool(grid::Cell)>& is_no_fly) {
+  if (c.x < 0 || c.y < 0 || c.x >= width || c.y >= height) {
+    throw ParameterError("launch", fmt::format("site ({}, {}) is outside the {} × {} grid", c.x,
+                                               c.y, width, height));
+  }
+  if (is_no_fly(c)) {
+    throw ParameterError("launch", fmt::format("site ({}, {}) is a no-fly position", c.x, c.y));
+  }
+  const bool edge = c.x == 0 || c.y == 0 || c.x == width - 1 || c.y == height - 1;
+  if (is_hull(c) && !edge) {
+    throw ParameterError("launch", fmt::format("site ({}, {}) is a hull cell inside the grid (a "
+                                               "site is a non-hull cell or on the grid's edge)",
+                                               c.x, c.y));
+  }
 }
 
 void validate_launch_sites(const MissionParams& p, const HullMask& hull) {
-  check_seconds("launch-transfer", p.launch_transfer_s, p.time_limit);
-  if (p.takeoff_time_s) check_seconds("takeoff-time", *p.takeoff_time_s, p.time_limit);
+  check_seconds("launch-transfer", p.launch_transfer_s, p);
+  if (p.takeoff_time_s) check_seconds("takeoff-time", *p.takeoff_time_s, p);
   for (const grid::Cell c : p.launch_sites) {
-    if (!hull.mask().contains(c)) {
-      throw ParameterError("launch", fmt::format("site ({}, {}) is outside the {} × {} grid", c.x,
-                                                 c.y, hull.width(), hull.height()));
-    }
-    if (p.no_fly && (*p.no_fly)[c] != 0) {
-      throw ParameterError("launch", fmt::format("site ({}, {}) is a no-fly position", c.x, c.y));
-    }
-    if (hull.is_hull(c) && !on_edge(c, hull)) {
-      throw ParameterError("launch", fmt::format("site ({}, {}) is a hull cell inside the grid (a "
-                                                 "site is a non-hull cell or on the grid's edge)",
-                                                 c.x, c.y));
-    }
+    check_launch_site(
+        c, hull.width(), hull.height(), [&](grid::Cell h) { return hull.is_hull(h); },
+        [&](grid::Cell h) { return p.no_fly && (*p.no_fly)[h] != 0; });
   }
 }
 
@@ -87,8 +88,8 @@ LaunchLegs plan_launch_legs(const MissionParams& p, const Reachability& reach,
   legs.sites = p.launch_sites;
   legs.plane_change_steps = p.plane_change_steps();
   legs.takeoff_steps =
-      p.takeoff_time_s ? seconds_to_steps(*p.takeoff_time_s) : legs.plane_change_steps;
-  legs.transfer_steps = seconds_to_steps(p.launch_transfer_s);
+      p.takeoff_time_s ? p.steps_for_seconds(*p.takeoff_time_s) : legs.plane_change_steps;
+  legs.transfer_steps = p.steps_for_seconds(p.launch_transfer_s);
 
   // The flyable positions plus the sites themselves: a site off the start's component is refused
   // below rather than silently unreachable.

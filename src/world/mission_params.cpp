@@ -10,6 +10,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/launch_sites.hpp"
 
 namespace hullinspect::world {
@@ -23,11 +24,31 @@ double MissionParams::delta_zeta_cells() const {
   return (s2 - s1) / (2.0 * std::tan(theta_deg * std::numbers::pi / 360.0));
 }
 
+double MissionParams::step_seconds() const {
+  return speed_m_s ? cell_size_m / *speed_m_s : 1.0;
+}
+
+double MissionParams::seconds(long long steps) const {
+  if (!speed_m_s) return static_cast<double>(steps);
+  return std::round(static_cast<double>(steps) * step_seconds() * 1e6) / 1e6;
+}
+
+int MissionParams::steps_for_seconds(double seconds) const {
+  return static_cast<int>(std::ceil(seconds / step_seconds() - 1e-9));
+}
+
 int MissionParams::plane_change_steps() const {
+  // The climb speed in cells per step: plane_speed_cells itself in the paper's model (so that its
+  // u_z is computed exactly as before); otherwise metres per second times the step's seconds.
+  double cells_per_step = plane_speed_cells;
+  if (speed_m_s || climb_speed_m_s) {
+    const double climb_m_s = climb_speed_m_s.value_or(plane_speed_cells * cell_size_m);
+    cells_per_step = climb_m_s * step_seconds() / cell_size_m;
+  }
   // tan(45°) is not exactly 1 in floating point; without the tolerance Δζ = 1 would need 2 steps.
   // validate() refuses parameters whose plane change exceeds kMaxPlaneChangeSteps before this is
   // used; the clamp keeps the conversion defined even for θ = 1e-300 (Δζ ≈ 1e300 cells).
-  const double steps = std::ceil(delta_zeta_cells() / plane_speed_cells - 1e-9);
+  const double steps = std::ceil(delta_zeta_cells() / cells_per_step - 1e-9);
   if (!(steps < kMaxPlaneChangeSteps + 1.0)) return kMaxPlaneChangeSteps + 1;
   return std::max(1, static_cast<int>(steps));
 }
@@ -102,6 +123,15 @@ void validate(const MissionParams& p, const HullMask& hull) {
   if (!(p.plane_speed_cells > 0.0 && p.plane_speed_cells <= 1e6)) {
     throw ParameterError("plane_speed", fmt::format("must be in (0, 1e6] cells per step (got {})",
                                                     p.plane_speed_cells));
+  }
+  // Speeds: positive and finite; bounded so that a step lasts between a microsecond and a day for
+  // any cell size validate() accepts.
+  for (const auto& [name, value] : {std::pair{"speed", p.speed_m_s},
+                                    std::pair{"climb-speed", p.climb_speed_m_s}}) {
+    if (value && !(*value >= kMinSpeedMs && *value <= kMaxSpeedMs)) {
+      throw ParameterError(name, fmt::format("must be a speed in [{}, {}] m/s (got {})", kMinSpeedMs,
+                                             kMaxSpeedMs, *value));
+    }
   }
   if (p.start_z != 1 && p.start_z != 2) {
     throw ParameterError("start_z", fmt::format("must be 1 or 2 (got {})", p.start_z));
@@ -179,6 +209,7 @@ void validate(const MissionParams& p, const HullMask& hull) {
     }
   }
   validate_separation(p, hull);
+  validate_battery(p, hull);
 }
 
 std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::world {
 
@@ -148,13 +149,13 @@ Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly,
   grid::BfsScratch scratch;
   grid::bfs_distances(allowed, sources, d, scratch);
   for (int i = 0; i < d.size(); ++i) r.flyable[i] = d[i] < grid::kUnreachable ? 1 : 0;
-  mark_reachable(hull, r.flyable, (s1 - 1) / 2, kReachZ1, r.reach);
-  mark_reachable(hull, r.flyable, (s2 - 1) / 2, kReachZ2, r.reach);
+  mark_reachable(hull, r.flyable, footprint_half(s1), kReachZ1, r.reach);
+  mark_reachable(hull, r.flyable, footprint_half(s2), kReachZ2, r.reach);
   for (int i : hull.cells()) {
     if ((r.reach[i] & kReachZ1) == 0) ++r.unreachable_z1;
     if ((r.reach[i] & kReachZ2) == 0) ++r.unreachable_z2;
   }
-  label_flight_components(hull, starts, (s1 - 1) / 2, (s2 - 1) / 2, r);
+  label_flight_components(hull, starts, footprint_half(s1), footprint_half(s2), r);
   return r;
 }
 

@@ -236,7 +236,8 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "bad.yaml:2: grdi: unknown key (known: name, description, hull, grid, scenarios, sweeps, "
        "s1, "
        "s2, theta, uavs, start_z, algorithms, instances, first_seed, time_limit, curve, prior, "
-       "truth, prior-defects, truth-defects, frame-spacing, no-fly, launch, separation)"},
+       "truth, prior-defects, truth-defects, frame-spacing, no-fly, launch, separation, speed, "
+       "climb-speed, battery)"},
       {"grid:\n  width: 230\n  depth: 3\n",
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
@@ -350,7 +351,12 @@ TEST(ExperimentConfig, DefectListsBecomeThePriorAndTruth) {
   int corroded = 0;
   for (int i = 0; i < c.maps.prior->cells.size(); ++i) corroded += c.maps.prior->cells[i] == 1;
   EXPECT_EQ(corroded, 2);  // x ∈ [0.5, 1.5) at row 0: columns 1 and 2
-  EXPECT_EQ(config_json(c)["prior_defects"], (dir / "survey.csv").string());
+  // As the config names it (found from its directory), identified by the map it gives.
+  EXPECT_EQ(config_json(c)["prior_defects"], "survey.csv");
+  EXPECT_EQ(config_json(c)["prior_hash"].get<std::string>().size(), 16u);
+  EXPECT_EQ(config_json(c)["prior_hash"], config_json(c)["truth_hash"]);
+  EXPECT_EQ(config_fingerprint(config_from_json(config_json(c), "manifest.json")),
+            config_fingerprint(c));
   EXPECT_EQ(config_json(c)["frame_spacing"], 0.5);
 
   try {

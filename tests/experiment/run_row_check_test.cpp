@@ -258,6 +258,27 @@ TEST_F(RowCheck, ResumeRefusesARowThatContradictsItself) {
   EXPECT_EQ(read(copy / kRunsFile), bad) << "the refused results were changed";
 }
 
+TEST_F(RowCheck, BatteryColumnsThatLieAreRefused) {
+  const auto [row, samples] = busy_row();
+  const auto h = runs_header();
+  const int steps = std::stoi(field(row, h, "steps"));
+  const int uavs = std::stoi(field(row, h, "uavs"));
+  ASSERT_EQ(field(row, h, "failed_uavs"), "0");
+  EXPECT_EQ(field(row, h, "sorties"), "0");
+  EXPECT_EQ(field(row, h, "battery_crashes"), "0");
+  EXPECT_EQ(field(row, h, "min_battery_s"), "");
+  EXPECT_EQ(run_problem(with(row, h, "battery_crashes", "1")),
+            "battery_crashes is 1 but failed_uavs is only 0 (a crash fails the UAV)");
+  EXPECT_EQ(run_problem(with(row, h, "min_battery_s", "5")),
+            "min_battery_s is 5 but this experiment's flight is unlimited");
+  EXPECT_EQ(run_problem(with(row, h, "sorties", "3")),
+            "sorties is 3 but this experiment's UAVs start in the air (no launch site)");
+  const long long too_long = static_cast<long long>(uavs) * steps + 1;
+  EXPECT_EQ(run_problem(with(row, h, "flight_s", std::to_string(too_long))),
+            fmt::format("flight_s is {} but {} UAVs × {} steps fly at most {} s", too_long, uavs,
+                        steps, too_long - 1));
+}
+
 }  // namespace
 }  // namespace hullinspect::experiment
 

@@ -68,13 +68,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadExport{{"--max-waypoints", "1"},
                   "hullinspect: --max-waypoints: 1 is below the 2 waypoints a mission file needs "
                   "(the point it starts from and one to fly to)"},
-        BadExport{{"--launch", "3"},
-                  "hullinspect: --launch: expects X,Y, a grid position in cells (got '3')"},
+        BadExport{{"--launch", "3"}, "hullinspect: --launch: expects X,Y (got '3')"},
+        BadExport{{"--launch", "3,x"},
+                  "hullinspect: --launch: expects X,Y with integers X and Y in [-2147483648, "
+                  "2147483647] (got '3,x')"},
         BadExport{{"--launch", "500,0"},
-                  "hullinspect: --launch: 500,0 is outside the 230 × 30 grid"},
+                  "hullinspect: --launch: site (500, 0) is outside the 230 × 30 grid"},
         BadExport{{"--launch", "100,15"},
-                  "hullinspect: --launch: 100,15 is a hull cell inside the grid; expected a "
-                  "non-hull cell or a cell on the grid's edge"},
+                  "hullinspect: --launch: site (100, 15) is a hull cell inside the grid (a site "
+                  "is a non-hull cell or on the grid's edge)"},
         BadExport{{"--firmware", "apm"},
                   "hullinspect: --firmware: 'apm' is not a firmware (expected px4 or ardupilot)"},
         BadExport{{"--format", "qgc"},

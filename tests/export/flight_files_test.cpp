@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -472,6 +474,46 @@ TEST(PreflightReport, SortiesCellsAndWarningsMatchTheFiles) {
   for (auto l = svg.child("svg").child("polyline"); l; l = l.next_sibling("polyline")) ++lines;
   EXPECT_EQ(lines, 2);
   fs::remove_all(dir);
+}
+
+// The report's separation: the D planned with and the smallest separation the flights keep,
+// recomputed here from the trace's states; with no D, a shared cell is a warning.
+TEST(PreflightReport, SeparationIsTheSmallestGapOfTheTrace) {
+  for (const char* d : {"0", "2"}) {
+    const auto dir = make_temp_dir("preflight-separation");
+    const auto r = run_cli({"plan", "-a", "lawnmower", "-n", "8", "--separation", d, "--trace",
+                            dir + "/trace.json", "--export", dir + "/files", "--format", "csv",
+                            "--report", dir + "/report"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto report = nlohmann::json::parse(io::read_file(dir + "/report/preflight.json"));
+    const auto trace = nlohmann::json::parse(io::read_file(dir + "/trace.json"));
+    int smallest = 1 << 30;
+    for (const auto& f : trace["frames"]) {
+      const auto& u = f["u"];
+      for (std::size_t a = 0; a < u.size(); a += 5) {
+        for (std::size_t b = a + 5; b < u.size(); b += 5) {
+          smallest =
+              std::min(smallest, std::max(std::abs(u[a].get<int>() - u[b].get<int>()),
+                                          std::abs(u[a + 1].get<int>() - u[b + 1].get<int>())));
+        }
+      }
+    }
+    const auto& sep = report["separation"];
+    EXPECT_EQ(sep["d"], std::stoi(d));
+    EXPECT_EQ(sep["min_cells"], smallest);
+    EXPECT_DOUBLE_EQ(sep["min_m"].get<double>(), smallest * 0.5);
+    EXPECT_EQ(sep["conflicts"], 0);
+    if (std::string(d) == "2") {
+      EXPECT_GE(smallest, 2);
+    }
+    const bool warned = report["warnings"].dump().find("no separation") != std::string::npos;
+    EXPECT_EQ(warned, smallest == 0 && std::string(d) == "0");
+    for (const auto& s : report["sorties"]) EXPECT_TRUE(s["battery_margin_s"].is_null());
+    const auto md = io::read_file(dir + "/report/preflight.md");
+    EXPECT_NE(md.find("## Separation"), std::string::npos);
+    EXPECT_NE(md.find("Battery margin: not computed"), std::string::npos);
+    fs::remove_all(dir);
+  }
 }
 
 TEST(PlanPrior, WithoutPriorThePlanIsPureCoverageWhateverTheSeed) {

@@ -62,8 +62,8 @@ TEST(BandSweep, ColumnBandsOfARectangleStartAtItsLeftEdgeAndAreTrimmed) {
   EXPECT_TRUE(band_sweep(owner, 1, 3, BandAxis::kColumns, true, {0, 0}).empty());
 }
 
-// share-sweep cuts a sweep's waypoints: keep(n) keeps the next n not yet reached, keep(n, c) ends
-// them at c instead of the rest; the reached ones never come back.
+// A sweep's tail handed over cuts its waypoints: keep(n) keeps the next n not yet reached, keep(n,
+// c) ends them at c instead of the rest; the reached ones never come back.
 TEST(WaypointFollower, KeepCutsTheWaypointsNotYetReached) {
   WaypointFollower follower;
   follower.assign({{0, 0}, {0, 5}, {3, 5}, {3, 0}});

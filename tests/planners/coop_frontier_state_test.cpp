@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/planners/coop_frontier_cell_set.hpp"
 #include "hullinspect/planners/coop_frontier_fields.hpp"
 #include "hullinspect/planners/coop_frontier_frontiers.hpp"
@@ -44,9 +45,13 @@ TEST(ManhattanDistanceTransform, MatchesBruteForceOnRandomSourceSets) {
   }
 }
 
-TEST(SourceDistanceField, RecomputesOnlyWhenReadAfterAChange) {
+TEST(SourceDistanceField, WithNoFlyPositionsRecomputesOnlyWhenReadAfterAChange) {
+  // One no-fly position, (9, 0), out of every shortest path below: the field comes from searches.
+  grid::Grid<std::uint8_t> allowed(10, 4, 1);
+  allowed(9, 0) = 0;
+  grid::DistanceService service(allowed);
   SourceDistanceField f;
-  f.reset(10, 4);
+  f.reset(10, 4, &service);
   EXPECT_TRUE(f.empty());
   f.refresh();
   EXPECT_EQ(f.transforms(), 0);  // nothing changed since reset: the field is already "all far"
@@ -72,6 +77,48 @@ TEST(SourceDistanceField, RecomputesOnlyWhenReadAfterAChange) {
   f.refresh();
   EXPECT_TRUE(f.empty());
   EXPECT_EQ(f.distance(0), grid::kUnreachable);
+}
+
+// Read on demand (no no-fly positions, a grid above the size limit, here 0), every read must equal
+// the definition after any sequence of additions and removals, on grids taller than one 64-row
+// word; small grids keep the transform.
+TEST(SourceDistanceField, ManhattanReadsMatchBruteForceThroughAddsAndRemovals) {
+  world::RandomStream rng(7, 0);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int w = 1 + static_cast<int>(rng.below(30));
+    const int h = 1 + static_cast<int>(rng.below(trial % 2 == 0 ? 12 : 150));
+    SourceDistanceField f;
+    f.reset(w, h, nullptr, 0);  // on demand at every size
+    grid::Grid<std::uint8_t> members(w, h, 0);
+    for (int step = 0; step < 60; ++step) {
+      // Mostly removals after a first filling, as with the prior's cells being seen.
+      const int changes = 1 + static_cast<int>(rng.below(8));
+      for (int c = 0; c < changes; ++c) {
+        const int i = static_cast<int>(rng.below(static_cast<std::uint64_t>(w * h)));
+        const bool member = step < 5 ? true : rng.below(5) == 0;
+        members[i] = member ? 1 : 0;
+        f.set(i, member);
+      }
+      f.refresh();
+      EXPECT_EQ(f.transforms(), 0);
+      for (int probe = 0; probe < 20; ++probe) {
+        const int i = static_cast<int>(rng.below(static_cast<std::uint64_t>(w * h)));
+        ASSERT_EQ(f.distance(i), brute_force_distance(members, i))
+            << "trial " << trial << " " << w << "x" << h << " step " << step << " cell " << i;
+      }
+    }
+  }
+}
+
+TEST(SourceDistanceField, SmallGridsKeepTheTransformLargeOnesReadOnDemand) {
+  for (const int side : {50, 200}) {
+    SourceDistanceField f;
+    f.reset(side, side);
+    f.set(3, true);
+    f.refresh();
+    EXPECT_EQ(f.distance(0), 3);
+    EXPECT_EQ(f.transforms(), side * side > SourceDistanceField::kOnDemandCells ? 0 : 1) << side;
+  }
 }
 
 TEST(IndexedCellSet, InsertEraseAndMembership) {

@@ -32,14 +32,15 @@ TEST(PartTspRegistry, BothPlannersDeclareTheirOptions) {
   for (const char* name : {"part-tsp", "part-tsp0"}) {
     std::vector<std::string> names;
     for (const auto& o : info(name).options) names.push_back(o.name);
-    EXPECT_EQ(names, (std::vector<std::string>{"r1", "r2", "tsp-solver", "partitioner",
-                                               "partition-seed", "skip-resolved", "trim-ends",
-                                               "tsp.<key>", "partitioner.<key>", "prior-weights",
-                                               "prior-statistics", "share-work"}))
+    EXPECT_EQ(names, (std::vector<std::string>{"r1", "r2", "tsp-solver", "tsp-max-segments",
+                                               "partitioner", "partition-seed", "skip-resolved",
+                                               "trim-ends", "tsp.<key>", "partitioner.<key>",
+                                               "prior-weights", "prior-statistics", "share-work"}))
         << name;
     EXPECT_EQ(info(name).options[0].default_value, "2");
     EXPECT_EQ(info(name).options[1].default_value, "0");
     EXPECT_EQ(info(name).options[2].default_value, "exact");
+    EXPECT_EQ(info(name).options[3].default_value, "30");
   }
 }
 
@@ -50,7 +51,8 @@ TEST(PartTspRegistry, ReadsTheOptions) {
                                       {"partitioner", "stripes"},
                                       {"partition-seed", "7"},
                                       {"skip-resolved", "true"},
-                                      {"trim-ends", "on"}});
+                                      {"trim-ends", "on"},
+                                      {"tsp-max-segments", "40"}});
   const auto& o = dynamic_cast<const PartTspPlanner&>(*p).options();
   EXPECT_FALSE(o.use_prior);
   EXPECT_EQ(o.r1, 3);
@@ -60,6 +62,7 @@ TEST(PartTspRegistry, ReadsTheOptions) {
   EXPECT_EQ(o.partition_seed, 7u);
   EXPECT_TRUE(o.skip_resolved);
   EXPECT_TRUE(o.trim_ends);
+  EXPECT_EQ(o.tsp_max_segments, 40);
   const auto default_planner = make_planner("part-tsp");
   const auto& d = dynamic_cast<const PartTspPlanner&>(*default_planner).options();
   EXPECT_TRUE(d.use_prior);
@@ -68,6 +71,7 @@ TEST(PartTspRegistry, ReadsTheOptions) {
   EXPECT_EQ(d.tsp_solver, "exact");
   EXPECT_FALSE(d.skip_resolved);
   EXPECT_FALSE(d.trim_ends);
+  EXPECT_EQ(d.tsp_max_segments, 30);
 }
 
 TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {
@@ -78,8 +82,8 @@ TEST(PartTspRegistry, RejectsBadOptionsWithExactMessages) {
   EXPECT_EQ(error_of("part-tsp", {{"trim-ends", "maybe"}}),
             "part-tsp.trim-ends: must be true or false (got 'maybe')");
   EXPECT_EQ(error_of("part-tsp0", {{"alpha", "0.5"}}),
-            "part-tsp0.alpha: unknown option (known: r1, r2, tsp-solver, partitioner, "
-            "partition-seed, skip-resolved, trim-ends, tsp.<key>, partitioner.<key>, "
+            "part-tsp0.alpha: unknown option (known: r1, r2, tsp-solver, tsp-max-segments, "
+            "partitioner, partition-seed, skip-resolved, trim-ends, tsp.<key>, partitioner.<key>, "
             "prior-weights, prior-statistics, share-work)");
   EXPECT_EQ(error_of("part-tsp", {{"tsp-solver", "nope"}})
                 .rfind("part-tsp.tsp-solver: unknown name 'nope'", 0),

@@ -200,14 +200,10 @@ TEST(PriorWeightedPartition, BalancesTheExpectedWorkForEveryPartitionedPlanner) 
     const auto plain = start_planner("part-tsp", {}, instance, params, partitions, &corrosion);
     const double plain_spread = spread(region_work(plain.partition(), weights, params.uavs));
     std::vector<Started> weighted;
-    for (const char* algorithm : {"part-tsp", "lawnmower", "sweep-inspect"}) {
-      // (Sweep-Inspect's own defaults are the band partition, then column slabs of the same
-      // weights: the slabs are checked below, the band partition in band_partition_test.cpp.)
+    for (const char* algorithm : {"part-tsp", "lawnmower"}) {
+      // (Sweep-Inspect's regions are the band partition, then column slabs of the same weights:
+      // the slabs are checked below, the band partition in band_partition_test.cpp.)
       OptionMap options{{"prior-weights", "true"}};
-      if (std::string(algorithm) == "sweep-inspect") {
-        options["band-partition"] = "false";
-        options["slab-partition"] = "false";
-      }
       weighted.push_back(
           start_planner(algorithm, options, instance, params, partitions, &corrosion));
     }
@@ -228,15 +224,15 @@ TEST(PriorWeightedPartition, BalancesTheExpectedWorkForEveryPartitionedPlanner) 
     EXPECT_LT(weighted_spread, plain_spread);
     EXPECT_LT(weighted_spread, 1.01);
     EXPECT_GT(plain_spread, 1.05);  // the inhomogeneous hull's front half has more work
-    // slab-partition: column slabs, in the order of the starts along x, that balance the same
-    // weights as well: every column but the n - 1 cut ones has one owner.
-    const auto slabs = start_planner("sweep-inspect", {{"band-partition", "false"}}, instance,
-                                     params, partitions, &corrosion);
+    // Sweep-Inspect's fallback regions: column slabs (the stripes partitioner), in the order of
+    // the starts along x, that balance the same weights as well: every column but the n - 1 cut
+    // ones has one owner.
+    const partition::Partition slabs = partition::make_partitioner("stripes")->partition(request);
     testing::PartitionCheck slab_check;
     slab_check.regions_hold_starts = false;  // a slab need not hold its UAV's start
-    EXPECT_TRUE(testing::valid_partition(request, slabs.partition(), slab_check));
-    EXPECT_LT(spread(region_work(slabs.partition(), weights, params.uavs)), 1.01);
-    const auto& owner = slabs.partition().owner;
+    EXPECT_TRUE(testing::valid_partition(request, slabs, slab_check));
+    EXPECT_LT(spread(region_work(slabs, weights, params.uavs)), 1.01);
+    const auto& owner = slabs.owner;
     int cut_columns = 0;
     int last_owner = -1;
     for (int x = 0; x < owner.width(); ++x) {

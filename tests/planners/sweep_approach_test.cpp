@@ -135,12 +135,7 @@ TEST(SweepApproach, OwnBandFirstOnARectangle) {
 // 4 · 15 + 3 · 5 = 135: 162 in all. Both see every cell. A region one band wide keeps its
 // plain sweep.
 TEST(SweepApproach, TwoBlockSweepOnARaggedRegion) {
-  grid::Grid<std::int16_t> owner(40, 30, -1);
-  for (int y = 0; y < 30; ++y) {
-    for (int x = 0; x < 40; ++x) {
-      if (x >= 20 || y < 10) owner(x, y) = 0;
-    }
-  }
+  const auto owner = sweep_coverage::ragged_region();
   const SweepRequest request{0, 5, BandAxis::kRows, true, {}, true};
   const grid::Cell from{10, 7};
   const auto plain = plain_sweep(owner, request, from);

@@ -1,6 +1,6 @@
 #pragma once
-// What a flight through waypoints sees, and the fleets they start: shared by the tests of
-// band_sweep, band_partition and sweep_approach.
+// What a flight through waypoints sees, the fleets they start and a ragged region: shared by the
+// tests of band_sweep, band_partition, sweep_approach and sweep_chooser.
 
 #include <algorithm>
 #include <cstdint>
@@ -45,6 +45,18 @@ inline std::vector<grid::Cell> spread_starts(int width, int n, int y = 15) {
   std::vector<grid::Cell> starts;
   for (int k = 0; k < n; ++k) starts.push_back({(2 * k + 1) * width / (2 * n), y});
   return starts;
+}
+
+/// A ragged region of UAV 0 on a 40 × 30 grid: columns 0-19 hold rows 0-9 only, columns 20-39
+/// all 30 rows (a share left part-swept has such steps).
+inline grid::Grid<std::int16_t> ragged_region() {
+  grid::Grid<std::int16_t> owner(40, 30, -1);
+  for (int y = 0; y < 30; ++y) {
+    for (int x = 0; x < 40; ++x) {
+      if (x >= 20 || y < 10) owner(x, y) = 0;
+    }
+  }
+  return owner;
 }
 
 }  // namespace hullinspect::planners::sweep_coverage

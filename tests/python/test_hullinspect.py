@@ -77,6 +77,13 @@ class RunMission(unittest.TestCase):
             algorithm="lawnmower", uavs=2, options={"partitioner.cc": 0.02},
             starts=[(10, 5), (200, 20)], fail=["1@40"])
 
+    def test_flags_and_no_fly_boxes_equal_cli(self):
+        self.check_equal_to_cli(
+            ["-a", "part-tsp", "-n", "3", "--seed", "4", "--separation", "2", "--no-deconfliction",
+             "--no-fly-box", "30,5,40,12", "--no-fly-box", "60,0,62,3"],
+            algorithm="part-tsp", uavs=3, seed=4, separation=2, no_deconfliction=True,
+            strict_separation=False, no_fly_box=["30,5,40,12", (60, 0, 62, 3)])
+
     def test_hull_path_and_hull_object_equal_cli(self):
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, "hull.txt")
@@ -97,6 +104,14 @@ class RunMission(unittest.TestCase):
                                                               options={"tsp-solver": "foo"})),
             (["-a", "part-tsp", "--hull", "/nonexistent/hull.txt"],
              dict(algorithm="part-tsp", hull="/nonexistent/hull.txt")),
+            (["--speed", "0"], dict(speed=0)),
+            (["--climb-speed", "-1"], dict(climb_speed=-1)),
+            (["--fail-one-within", "abc"], dict(fail_one_within="abc")),
+            (["--launch", "0,0", "--launch-transfer", "nan"],
+             dict(launch=[(0, 0)], launch_transfer=float("nan"))),
+            (["--frame-spacing", "0"], dict(frame_spacing=0)),
+            (["--cell-size", "abc"], dict(cell_size="abc")),
+            (["--seed", "-1"], dict(seed=-1)),
         ]
         for args, kwargs in cases:
             with self.subTest(args=args):
@@ -104,6 +119,13 @@ class RunMission(unittest.TestCase):
                 with self.assertRaises(ValueError) as caught:
                     hullinspect.run_mission(**kwargs)
                 self.assertEqual(str(caught.exception), python_message(message))
+
+    def test_speed_gives_the_same_steps_in_seconds_of_the_step(self):
+        # 0.5 m cells at 1 m/s: steps of 0.5 s; climbing at 1 m/s keeps one step per plane change.
+        paper = hullinspect.run_mission("lawnmower", uavs=4)
+        fast = hullinspect.run_mission("lawnmower", uavs=4, speed=1, climb_speed=1)
+        self.assertEqual(fast.T_c, paper.T_c * 0.5)
+        self.assertEqual(fast.T_m, paper.T_m * 0.5)
 
     def test_unknown_algorithm_lists_the_registered_python_planners_too(self):
         message = cli_error("run", "-a", "part_tsp")

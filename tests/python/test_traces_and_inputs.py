@@ -253,6 +253,24 @@ class InputChecks(unittest.TestCase):
                     hullinspect.make_instance(None, seed)
         self.assertEqual(hullinspect.make_instance(None, 2**64 - 1).seed, 2**64 - 1)
 
+    def test_battery_keywords_fly_sorties_and_bad_ones_are_value_errors(self):
+        r = hullinspect.run_mission("sweep-inspect", uavs=4, seed=1, launch=[(115, 0)],
+                                    endurance=400, swap_time=60)
+        self.assertTrue(r.complete)
+        self.assertGreater(r.counters["sorties"], 4)
+        self.assertEqual(r.counters["battery_crashes"], 0)
+        for kw, message in (
+                (dict(endurance=400), r"^endurance: needs a launch site"),
+                (dict(launch=[(115, 0)], endurance=float("nan")),
+                 r"^endurance: must be a number of seconds"),
+                (dict(launch=[(115, 0)], endurance=400, reserve=400),
+                 r"^reserve: must be below the endurance of 400 s"),
+                (dict(launch=[(115, 0)], endurance=100),
+                 r"^endurance: 100 s cannot reach the farthest hull cell \(0, 29\)")):
+            with self.subTest(**{k: str(v) for k, v in kw.items()}):
+                with self.assertRaisesRegex(ValueError, message):
+                    hullinspect.run_mission("lawnmower", uavs=4, seed=1, **kw)
+
     def test_run_experiment_jobs_in_the_cli_range(self):
         for jobs in (-1, 100000, 2.0, "2"):
             with self.subTest(jobs=jobs):

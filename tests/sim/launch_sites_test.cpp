@@ -10,32 +10,14 @@
 #include "hullinspect/sim/simulator.hpp"
 #include "hullinspect/world/launch_sites.hpp"
 #include "support/printers.hpp"
+#include "support/strip_world.hpp"
 
 namespace hullinspect::sim {
 namespace {
 
 using grid::Cell;
 
-// A 20 × 5 grid whose hull is rows 1..3 (rows 0 and 4 are open water along the hull).
-struct Strip {
-  world::HullMask hull{make_mask(), "test"};
-  world::Instance instance;
-  world::MissionParams params;
-  Strip() {
-    instance.truth = grid::Grid<std::int8_t>(20, 5, 0);
-    instance.prior = grid::Grid<std::int8_t>(20, 5, 0);
-    params.uavs = 1;
-    params.s1 = 1;
-    params.s2 = 3;
-    params.starts = {{5, 2}};
-  }
-  static grid::Grid<std::uint8_t> make_mask() {
-    grid::Grid<std::uint8_t> m(20, 5, 0);
-    for (int y = 1; y <= 3; ++y)
-      for (int x = 0; x < 20; ++x) m(x, y) = 1;
-    return m;
-  }
-};
+using Strip = testing::StripWorld;
 
 TEST(LaunchSites, AUavWaitsOnTheGroundFliesOutThenActs) {
   Strip w;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/sim/lower_bound.hpp"
 #include "support/printers.hpp"
 
 namespace hullinspect::sim {
@@ -28,7 +29,9 @@ struct World {
   }
 };
 
-std::vector<Action> one(Action a) { return {a}; }
+std::vector<Action> one(Action a) {
+  return {a};
+}
 
 TEST(Sensing, DetectionPlaneFollowsTheTable) {
   // 9 × 9, UAV at (4, 4) on z = 2 with a 5 × 5 footprint (cells 2..6).
@@ -74,7 +77,7 @@ TEST(Sensing, CloseUpPlaneInspectsAndInspectedCellsStayInspected) {
   EXPECT_EQ(sim.map()(4, 4), kInspected);
   for (const auto& r : sim.view().sensed.readings(0)) {
     if (r.index == sim.map().index(4, 4)) {
-      EXPECT_EQ(r.value, kCorrosionSeen);  // the camera at z = 2 reports corrosion…
+      EXPECT_EQ(r.value, kCorrosionSeen);       // the camera at z = 2 reports corrosion…
       EXPECT_TRUE(r.events & kEventRedundant);  // …which is nothing new
     }
   }
@@ -186,6 +189,38 @@ TEST(StepTowards, MovesAlongXFirstThenY) {
   EXPECT_EQ(step_towards({3, 2}, {1, 0}), Action::kWest);
   EXPECT_EQ(step_towards({1, 2}, {1, 0}), Action::kSouth);
   EXPECT_EQ(step_towards({1, 0}, {1, 0}), Action::kHover);
+}
+
+TEST(Starts, TheSimulatorPlacesTheUavsOnTheStartsItIsGiven) {
+  World w(9, 9, {}, {}, 3, 5, {4, 4});
+  w.params.uavs = 2;
+  w.params.starts = {{1, 1}, {7, 7}};
+  // The caller's start cells, not params.starts: a mission computes them once and hands them on.
+  const std::vector<Cell> starts = {{2, 3}, {6, 5}};
+  Simulator sim(w.hull, w.instance, w.params, starts);
+  ASSERT_EQ(sim.uavs().size(), 2u);
+  EXPECT_EQ(sim.uavs()[0].pos, (Cell{2, 3}));
+  EXPECT_EQ(sim.uavs()[1].pos, (Cell{6, 5}));
+  EXPECT_EQ(std::vector<Cell>(sim.starts().begin(), sim.starts().end()), starts);
+  // Without them it computes world::start_cells itself.
+  Simulator own(w.hull, w.instance, w.params);
+  EXPECT_EQ(own.uavs()[0].pos, (Cell{1, 1}));
+  EXPECT_EQ(own.uavs()[1].pos, (Cell{7, 7}));
+  const std::vector<Cell> one_start = {{2, 3}};
+  EXPECT_THROW(Simulator(w.hull, w.instance, w.params, one_start), LogicError);
+}
+
+TEST(Starts, TheLowerBoundMeasuresFromTheStartsItIsGiven) {
+  // A 30 × 3 strip with one corroded cell at its right end; one UAV, params.starts at the left.
+  World w(30, 3, {{29, 1}}, {}, 1, 3, {0, 1});
+  const std::vector<Cell> right = {{28, 1}};
+  const LowerBound given = lower_bound(w.hull, w.instance.truth, w.params, right);
+  const LowerBound own = lower_bound(w.hull, w.instance.truth, w.params);
+  w.params.starts = right;
+  const LowerBound from_params = lower_bound(w.hull, w.instance.truth, w.params);
+  EXPECT_EQ(given.reach_t_c, from_params.reach_t_c);
+  EXPECT_EQ(given.t_m, from_params.t_m);
+  EXPECT_LT(given.reach_t_c, own.reach_t_c);  // the corroded cell is far from the left start
 }
 
 }  // namespace

@@ -23,6 +23,19 @@ TEST(MissionParams, PlaneChangeStepsMatchThePaper) {
   EXPECT_EQ(p.plane_change_steps(), 1);
 }
 
+TEST(MissionParams, HalfSideIsTheFootprintsChebyshevRadius) {
+  EXPECT_EQ(footprint_half(1), 0);
+  EXPECT_EQ(footprint_half(5), 2);
+  EXPECT_EQ(footprint_half(7), 3);
+  MissionParams p;
+  p.s1 = 3;
+  p.s2 = 9;
+  EXPECT_EQ(p.half_side(1), 1);
+  EXPECT_EQ(p.half_side(2), 4);
+  // A footprint of side s holds the cells within h of its centre: 2h + 1 = s.
+  for (int z : {1, 2}) EXPECT_EQ(2 * p.half_side(z) + 1, p.footprint(z));
+}
+
 TEST(MissionParams, DefaultStartsAreSpreadAndSnapped) {
   MissionParams p;
   p.uavs = 4;
@@ -56,12 +69,17 @@ TEST(MissionParams, ValidationNamesFieldAndRange) {
     return message(q);
   };
   EXPECT_EQ(with([](auto& q) { q.uavs = 0; }), "uavs: must be at least 1 (got 0)");
-  EXPECT_EQ(with([](auto& q) { q.uavs = 7000; }), "uavs: must be at most the 6361 hull cells (got 7000)");
+  EXPECT_EQ(with([](auto& q) { q.uavs = 7000; }),
+            "uavs: must be at most the 6361 hull cells (got 7000)");
   EXPECT_EQ(with([](auto& q) { q.s1 = 4; }), "s1: must be a positive odd integer (got 4)");
-  EXPECT_EQ(with([](auto& q) { q.s2 = 8; }), "s2: must be an odd integer greater than s1 = 5 (got 8)");
-  EXPECT_EQ(with([](auto& q) { q.s2 = 5; }), "s2: must be an odd integer greater than s1 = 5 (got 5)");
-  EXPECT_EQ(with([](auto& q) { q.theta_deg = 180; }), "theta: must be in (0, 180) degrees, exclusive (got 180)");
-  EXPECT_EQ(with([](auto& q) { q.theta_deg = 0; }), "theta: must be in (0, 180) degrees, exclusive (got 0)");
+  EXPECT_EQ(with([](auto& q) { q.s2 = 8; }),
+            "s2: must be an odd integer greater than s1 = 5 (got 8)");
+  EXPECT_EQ(with([](auto& q) { q.s2 = 5; }),
+            "s2: must be an odd integer greater than s1 = 5 (got 5)");
+  EXPECT_EQ(with([](auto& q) { q.theta_deg = 180; }),
+            "theta: must be in (0, 180) degrees, exclusive (got 180)");
+  EXPECT_EQ(with([](auto& q) { q.theta_deg = 0; }),
+            "theta: must be in (0, 180) degrees, exclusive (got 0)");
   EXPECT_EQ(with([](auto& q) { q.start_z = 3; }), "start_z: must be 1 or 2 (got 3)");
   EXPECT_EQ(with([](auto& q) { q.time_limit = 0; }), "time_limit: must be at least 1 step (got 0)");
   EXPECT_EQ(with([](auto& q) { q.starts = {{1, 1}}; }), "starts: gives 1 start cell for 4 UAVs");

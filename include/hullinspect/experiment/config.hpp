@@ -18,6 +18,7 @@
 #include "hullinspect/world/failures.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/user_maps.hpp"
 
 namespace hullinspect::experiment {
@@ -63,36 +64,50 @@ struct ExperimentConfig {
   int hull_width = 0;
   int hull_height = 0;
   int hull_cells = 0;
-  double cell_size = 0.5;
+  double cell_size = world::MissionParams{}.cell_size_m;
   /// No-fly positions (null = none) and how the config stated them ({file, boxes-m, hash}).
   std::shared_ptr<const grid::Grid<std::uint8_t>> no_fly;
   nlohmann::json no_fly_spec;
-  std::string prior_path, truth_path;   ///< the user's C′ and C ("prior:", "truth:"), resolved
-  /// The same as defects in ship coordinates ("prior-defects:", "truth-defects:"), resolved, and
-  /// the frame spacing for defects placed by frame ("frame-spacing:").
+  /// The user's C′ and C ("prior:", "truth:") as the config names them (relative to its
+  /// directory).
+  std::string prior_path, truth_path;
+  /// The same as defects in ship coordinates ("prior-defects:", "truth-defects:"), as the config
+  /// names them, and the frame spacing for defects placed by frame ("frame-spacing:").
   std::string prior_defects_path, truth_defects_path;
+  /// Stable ids of the loaded C′ and C (from a mask or defects; empty without), so that the
+  /// fingerprint follows the files' contents.
+  std::string prior_hash, truth_hash;
   std::optional<double> frame_spacing;
   world::UserMaps maps;                 ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
-  int s1 = 5;
-  std::vector<int> s2 = {7};
-  double theta = 90.0;
-  std::vector<int> uavs = {4};
-  int start_z = 2;
-  int separation = 0;  ///< D, cells (model.md, "Separation"); 0 = none
+  // Defaults are MissionParams{}'s (world/mission_params.hpp), the one place they are declared.
+  int s1 = world::MissionParams{}.s1;
+  std::vector<int> s2 = {world::MissionParams{}.s2};
+  double theta = world::MissionParams{}.theta_deg;
+  std::vector<int> uavs = {world::MissionParams{}.uavs};
+  int start_z = world::MissionParams{}.start_z;
+  int separation = world::MissionParams{}.separation;  ///< D, cells (model.md, "Separation")
   std::vector<AlgorithmSpec> algorithms;
   std::vector<std::uint64_t> seeds;
-  int time_limit = 20000;
+  int time_limit = world::MissionParams{}.time_limit;
   /// Launch sites ("launch:", docs/model.md); empty = the paper's model.
   std::vector<grid::Cell> launch_sites;
-  double launch_transfer = 0;          ///< seconds each way beyond the grid
-  std::optional<double> takeoff_time;  ///< seconds; empty = u_z
+  double launch_transfer = world::MissionParams{}.launch_transfer_s;  ///< seconds each way
+  std::optional<double> takeoff_time;                                 ///< seconds; empty = u_z
+  /// "speed:" and "climb-speed:" in m/s (docs/model.md, "Speed and time"); empty = the paper's.
+  std::optional<double> speed, climb_speed;
+  /// Batteries ("battery:", docs/model.md); no endurance = unlimited flight, the paper's model.
+  std::optional<double> endurance;  ///< seconds of flight per battery
+  std::optional<double> reserve;    ///< seconds; empty = 10 % of the endurance
+  double swap_time = world::MissionParams{}.swap_time_s;
   CurveGrid curve;
   /// Config line of each key and list item ("s1", "s2[1]", "uavs[0]", "time_limit"), so that an
   /// error found later (when cells are validated) can still name its line. 0 = not in the file.
   std::map<std::string, int> lines;
 
   int line_of(const std::string& key) const;
+  /// The parameters that convert this experiment's steps to seconds (cell size and speeds).
+  world::MissionParams timing() const;
 };
 
 /// Parses a config. `source` names it in errors ("FILE:LINE: key: problem"); a relative hull path

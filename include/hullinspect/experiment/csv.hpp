@@ -33,6 +33,11 @@ struct CsvTable {
 int csv_int(const std::string& field, const std::string& source, int line,
             const std::string& column, int min = 0, int max = 1 << 30);
 
+/// A time field in seconds (T_c, T_m and their bounds; whole numbers without --speed): a real in
+/// [0, 1e15], read like csv_int.
+double csv_seconds(const std::string& field, const std::string& source, int line,
+                   const std::string& column);
+
 /// Parses a complete CSV file (every line ends with a line break). Throws InputError naming
 /// `source` and the line for a malformed row or a row with the wrong number of fields.
 CsvTable parse_csv(std::string_view text, const std::string& source);

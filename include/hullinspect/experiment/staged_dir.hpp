@@ -2,9 +2,12 @@
 // All-or-nothing output directories (report, merge): every file is written into a hidden staging
 // directory beside the target, and only when all are written does commit() move them in, so a full
 // disk, a failing child program or an interrupt leaves the target as it was (and no staging
-// directory: the destructor removes an uncommitted one).
+// directory: the destructor removes an uncommitted one, and the CLI's SIGINT/SIGTERM/SIGHUP
+// handler one listed among the pending temporaries).
 
 #include <filesystem>
+
+#include "hullinspect/files/pending_temporaries.hpp"
 
 namespace hullinspect::experiment {
 
@@ -28,6 +31,7 @@ class StagedDir {
  private:
   std::filesystem::path target_;
   std::filesystem::path staging_;
+  io::PendingTemporary listed_;  ///< the staging directory, for the signal handler
   bool committed_ = false;
 };
 

@@ -14,10 +14,12 @@ inline constexpr std::size_t kMaxPendingTemporaries = 64;
 inline constexpr std::size_t kMaxPendingPath = 1024;
 
 /// Lists `path` while it lives (or until release()): create it before the temporary is opened.
+/// A listed directory (a staging directory of report or merge) is removed with what it holds.
 class PendingTemporary {
  public:
+  enum class Kind { file, directory };
   PendingTemporary() = default;
-  explicit PendingTemporary(const std::filesystem::path& path);
+  explicit PendingTemporary(const std::filesystem::path& path, Kind kind = Kind::file);
   PendingTemporary(PendingTemporary&& other) noexcept;
   PendingTemporary& operator=(PendingTemporary&& other) noexcept;
   PendingTemporary(const PendingTemporary&) = delete;
@@ -31,7 +33,9 @@ class PendingTemporary {
   int slot_ = -1;
 };
 
-/// Unlinks every listed temporary. Async-signal-safe (only atomics and unlink()).
+/// Unlinks every listed temporary, then removes every listed directory with its contents (up to
+/// four levels deep). Async-signal-safe: only atomics and system calls (unlink, open, getdents64,
+/// unlinkat, close, rmdir), buffers on the stack.
 void remove_pending_temporaries() noexcept;
 
 /// How many temporaries are listed now (for tests).

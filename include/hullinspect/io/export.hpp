@@ -67,6 +67,9 @@ struct ExportPlan {
   std::vector<std::vector<ExportWaypoint>> uavs;  ///< per UAV, the trace's waypoints
   std::vector<grid::Cell> no_fly;
   std::vector<std::string> hull_rows;  ///< the trace's truth rows ('.' = not hull)
+  double step_seconds = 1.0;           ///< the trace's step in seconds (docs/model.md)
+  /// A waypoint's time or duration in steps, in seconds.
+  double seconds(int steps) const { return steps * step_seconds; }
   bool is_hull(grid::Cell c) const;
 };
 
@@ -93,12 +96,14 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
                                      const std::optional<GeoReference>& geo,
                                      const ExportSettings& settings);
 
-/// The hold time (s) a flight controller waits at waypoint `w` so that a vehicle flying at
-/// `speed_mps` between waypoints arrives at the trace's times: the hold's duration, or the part of
-/// a plane change its straight flight does not take.
-double hold_seconds(const ExportWaypoint& w, const ExportWaypoint& previous, double speed_mps);
+/// The hold time (s) a flight controller waits at waypoint `w` so that a vehicle flying at the
+/// plan's cruise speed between waypoints arrives at the trace's times: the hold's duration, or the
+/// part of a plane change its straight flight does not take.
+double hold_seconds(const ExportPlan& plan, const ExportWaypoint& w,
+                    const ExportWaypoint& previous);
 
-/// The cruise speed of an exported plan: one cell per second (model.md §1: a move takes one step).
+/// The cruise speed of an exported plan: one cell per step (model.md §1: a move takes one step),
+/// in m/s.
 double cruise_speed_mps(const ExportPlan& plan);
 
 /// The distance between two photos that gives every cell a picture, as the model senses once per

@@ -15,6 +15,7 @@
 
 #include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/grid.hpp"
+#include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::io {
 
@@ -32,13 +33,13 @@ enum class HullSide { kPort, kStarboard, kBoth };
 
 /// Everything that places the grid in the ship frame.
 struct ShipFrameSpec {
-  double cell_m = 0.5;  ///< cell side
-  int s1 = 5;           ///< footprint sides (cells) at z = 1, 2
-  int s2 = 7;
-  double theta_deg = 90.0;               ///< camera aperture
-  double x0 = 0;                         ///< X of the grid's left (stern) edge
-  double z0 = 0;                         ///< Z of the grid's bottom edge
-  double ys = 0;                         ///< Y of the side plane
+  double cell_m = world::MissionParams{}.cell_size_m;  ///< cell side
+  int s1 = world::MissionParams{}.s1;                  ///< footprint sides (cells) at z = 1, 2
+  int s2 = world::MissionParams{}.s2;
+  double theta_deg = world::MissionParams{}.theta_deg;  ///< camera aperture
+  double x0 = 0;                                        ///< X of the grid's left (stern) edge
+  double z0 = 0;                                        ///< Z of the grid's bottom edge
+  double ys = 0;                                        ///< Y of the side plane
   HullSide side = HullSide::kStarboard;  ///< as world::HullGeometry; a plain mask is starboard
   grid::Grid<double> depth;              ///< per cell, metres; empty = 0 everywhere
   /// Per cell outward unit normal (ship frame); empty = the side's normal (0, ±1, 0).

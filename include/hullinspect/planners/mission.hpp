@@ -33,9 +33,16 @@ struct MissionOptions {
   const world::CorrosionParams* corrosion = nullptr;
 };
 
-/// Validates the parameters, runs the mission and returns its result.
+/// Validates the parameters and failures, runs the mission and returns its result.
 sim::MissionResult run_mission(const world::HullMask& hull, const world::Instance& instance,
                                const world::MissionParams& params, Planner& planner,
                                const MissionOptions& options = {});
+
+/// run_mission for parameters and failures already validated (run_mission(MissionSpec) validates
+/// the whole spec once, before it builds anything).
+sim::MissionResult run_validated_mission(const world::HullMask& hull,
+                                         const world::Instance& instance,
+                                         const world::MissionParams& params, Planner& planner,
+                                         const MissionOptions& options = {});
 
 }  // namespace hullinspect::planners

@@ -13,6 +13,8 @@
 namespace hullinspect::planners {
 
 struct MissionSpec {
+  /// The default planner of every front door (CLI, experiment configs, Python): the paper's
+  /// baseline, which needs no options.
   std::string algorithm = "lawnmower";
   OptionMap planner_options;
   world::MissionParams params;
@@ -30,7 +32,18 @@ void validate(const MissionSpec& spec, const world::HullMask& hull);
 /// `spec.corrosion`, or null when a user map replaced C' or C (then they describe neither).
 const world::CorrosionParams* prior_statistics(const MissionSpec& spec);
 
-/// Draws the instance (then applies spec.maps), builds the planner and runs the mission.
+/// The mission's instance: drawn from spec.seed with spec.corrosion, then spec.maps applied.
+world::Instance mission_instance(const MissionSpec& spec, const world::HullMask& hull);
+
+/// The one place a mission is assembled: builds the planner and runs it on `instance` with the
+/// spec's failures and prior statistics (unless `options` names its own). `spec` must have passed
+/// validate(spec, hull) (a command validates before it declares its outputs); it is not validated
+/// again. For callers that watch or change the instance (a trace recorder, `plan`'s world whose
+/// truth is the prior).
+sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
+                               const world::Instance& instance, const MissionOptions& options = {});
+
+/// Validates `spec` (once), draws its instance and runs the mission.
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const MissionOptions& options = {});
 

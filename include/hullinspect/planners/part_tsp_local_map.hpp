@@ -14,6 +14,7 @@
 
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/sim/types.hpp"
+#include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::planners::part_tsp {
 
@@ -27,7 +28,8 @@ struct StripLayout {
   int first_row(int j) const { return j * s; }
   int last_row(int j) const { return (j + 1) * s < height ? (j + 1) * s - 1 : height - 1; }
   int flight_row(int j) const {
-    return j * s + (s - 1) / 2 < height ? j * s + (s - 1) / 2 : height - 1;
+    const int centre = j * s + world::footprint_half(s);
+    return centre < height ? centre : height - 1;
   }
 };
 

@@ -30,6 +30,11 @@ struct PartTspOptions {
   int r2 = 0;  ///< steps since the last inspection (or arrival at z = 1) before ascending
   std::string tsp_solver{tsp::kDefaultTspSolver};  ///< segment-TSP solver by name ("exact")
   OptionMap tsp_solver_options;
+  /// A plan over more segments is ordered by the local search (the `heuristic` solver with the
+  /// exact solver's first-tour settings) instead of `tsp_solver`, without a proof: every solve's
+  /// work stays bounded as regions grow. The paper preset's largest plan has 28 segments, so
+  /// its plans are unchanged. 0 = no cap.
+  int tsp_max_segments = 30;
   std::string partitioner{partition::kDefaultPartitioner};  ///< by name
   OptionMap partitioner_options;
   std::uint64_t partition_seed = 0;  ///< seed of the partitioner (not of the instance)
@@ -99,6 +104,7 @@ class PartTspPlanner final : public Planner {
 
   PartTspOptions options_;
   std::unique_ptr<tsp::TspSolver> solver_;
+  std::unique_ptr<tsp::TspSolver> large_solver_;  // plans over more than tsp_max_segments
   std::shared_ptr<const partition::Partition> partition_;
   std::unique_ptr<part_tsp::LocalMaps> maps_;
   std::vector<UavState> uavs_;

@@ -11,6 +11,7 @@
 
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/planners/band_sweep.hpp"
+#include "hullinspect/planners/sweep_chooser.hpp"
 
 namespace hullinspect::planners {
 
@@ -25,15 +26,8 @@ struct SweepRequest {
   bool nearer_end = true;           ///< fly the sweep backwards when its last waypoint is nearer
   int x_lo = 0;                     ///< only these columns hold the UAV's cells (band_sweep's)
   int x_hi = -1;
-  bool edge_approach = true;    ///< consider approaches along the region's edge (approach-edge)
-  bool own_band_first = false;  ///< consider sweeps that begin at the UAV's band (own-band-first)
-};
-
-/// A sweep's waypoints, the first `approach` of them its approach's.
-struct SweepPlan {
-  std::vector<grid::Cell> waypoints;
-  std::size_t approach = 0;
-  bool own_band_first = false;  ///< the sweep begins with the bands on one side of the UAV's
+  bool edge_approach = true;    ///< consider approaches along the region's edge
+  bool own_band_first = false;  ///< consider sweeps that begin at the UAV's band
 };
 
 /// Reused between plans: the owner grid less an approach's cells, and the bands' cells along.
@@ -45,8 +39,9 @@ struct SweepScratch {
   RegionBands second;
 };
 
-/// The waypoints of a sweep over `owner`'s cells of `request.uav` from `from`: the shortest
-/// flight (Manhattan) of the plain sweep and the plans below that the request allows.
+/// The candidate sweeps over `owner`'s cells of `request.uav` from `from`, costed by their
+/// Manhattan flight (reach: to the first band, the approach included): first the plain sweep,
+/// then the plans below that the request allows.
 /// - `edge_approach`: led by an approach — across to a band's centre line, along it to the
 ///   region's first or last row a footprint must reach, and along that edge to the region's
 ///   first or last band; the cells the approach's footprints see are left out of the sweep, so
@@ -55,6 +50,11 @@ struct SweepScratch {
 ///   bands it will fly again: the bands from the UAV's own to one side of it (all of their
 ///   cells, or those on one side of a cut along the bands at, or h before or after, the UAV's
 ///   position) swept from `from`, then the rest from where they end.
+std::vector<SweepCandidate> approach_candidates(const grid::Grid<std::int16_t>& owner,
+                                                const SweepRequest& request, grid::Cell from,
+                                                SweepScratch& scratch);
+
+/// choose_plan's pick among approach_candidates.
 SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepRequest& request,
                              grid::Cell from, SweepScratch& scratch);
 
@@ -63,13 +63,24 @@ SweepPlan approach_and_sweep(const grid::Grid<std::int16_t>& owner, const SweepR
 std::vector<grid::Cell> plain_sweep(const grid::Grid<std::int16_t>& owner,
                                     const SweepRequest& request, grid::Cell from);
 
-/// `request`'s cells swept as two blocks of columns, one after the other: cut between two bands
-/// (at x_lo + j·band for row bands, at a start of the band grid for column bands), either block
-/// first, each a plain_sweep. Returns the shortest such flight from `from` (flight_length), or
-/// `plain` when none is shorter. A region swept in part is ragged, and one boustrophedon over
-/// its bands can leave a band for last on its far side.
+/// The candidate sweeps of `request`'s cells as two blocks of columns, one after the other,
+/// after `plain` (the one boustrophedon, listed first): cut between two bands (at x_lo + j·band
+/// for row bands, at a start of the band grid for column bands), either block first, each a
+/// plain_sweep, costed by their Manhattan flight from `from`. A region swept in part is ragged,
+/// and one boustrophedon over its bands can leave a band for last on its far side.
+std::vector<SweepCandidate> two_block_candidates(const grid::Grid<std::int16_t>& owner,
+                                                 const SweepRequest& request, grid::Cell from,
+                                                 std::vector<grid::Cell> plain);
+
+/// choose_plan's pick among two_block_candidates (`plain` when none is shorter).
 std::vector<grid::Cell> two_block_sweep(const grid::Grid<std::int16_t>& owner,
                                         const SweepRequest& request, grid::Cell from,
                                         std::vector<grid::Cell> plain);
+
+/// The two candidate sweeps of band_sweep over `owner`'s cells of `uav` from `from` (ends
+/// trimmed): along rows, then along columns, costed by their Manhattan flight.
+std::vector<SweepCandidate> axis_candidates(const grid::Grid<std::int16_t>& owner, int uav,
+                                            int band, grid::Cell from,
+                                            std::span<const int> band_start);
 
 }  // namespace hullinspect::planners

@@ -8,7 +8,7 @@
 // first), climbs back and resumes its sweep where it left it, or plans it anew from there when
 // that is the shorter flight. A UAV whose sweep is done helps: it takes the nearest unclaimed
 // detected, uninspected cell (at z = 1), else the far end of the sweep that would end last
-// (share-sweep), else the nearest unknown cell (at z = 2), which also finishes the region of a
+// (a sweep's tail), else the nearest unknown cell (at z = 2), which also finishes the region of a
 // failed UAV. Communication: the shared map M and the failed flags (as Coop-Frontier), plus each
 // helper's current target (its claim).
 
@@ -20,135 +20,32 @@
 #include "hullinspect/planners/band_sweep.hpp"
 #include "hullinspect/planners/flight_distances.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/planners/prior_tour_split.hpp"
 #include "hullinspect/planners/sweep_approach.hpp"
 #include "hullinspect/planners/waypoint_follower.hpp"
 
 namespace hullinspect::planners {
 
 struct SweepInspectOptions {
+  /// The regions' last fallback (a piece of the band partition or a column slab not
+  /// 4-connected): this partitioner, its options and seed.
   std::string partitioner{partition::kDefaultPartitioner};
   OptionMap partitioner_options;
   std::uint64_t partition_seed = 0;
-  bool help = true;  ///< after its sweep a UAV takes work anywhere (false: only its own region's)
-  bool inspect_on_the_way = true;  ///< descend when a detection is abreast (false: only at the end)
-  double radius_factor = 1.0;    ///< inspect detected cells within radius_factor·s2 of the descent
   bool prior_weights = true;     ///< partition weighted by the expected work per cell
   bool prior_statistics = true;  ///< those weights use the scenario's p_TP, p_FP
-  bool prior_first = true;       ///< first inspect the prior's cells of the region at z = 1
-  /// After an inspection, rejoin the strip up to s2/2 columns ahead of where it was left (those
-  /// columns were already seen from there) instead of flying back to that point.
-  bool resume_ahead = true;
-  /// After an inspection, plan the sweep anew from where the UAV is (over the cells of its region
-  /// not yet observed) when that flight is shorter than the way back to the rejoin point and the
-  /// sweep planned from there (flights as the distance service gives them).
-  bool replan_rejoin = true;
-  /// Plan the sweep from where the prior's inspections ended, over the region's cells they did
-  /// not see, bottom-up or top-down, whichever end is nearer (false: the whole region bottom-up
-  /// from the start cell).
-  bool nearer_sweep_end = true;
-  /// Stop the prior's inspections (and sweep) once at least `prior_check_cells` of the prior's
-  /// cells have been seen and fewer than this fraction of them were corroded (0: never).
+  bool prior_first = true;       ///< first tour the prior's cells of the region at z = 1
+  /// Drop the prior (stop its tours) when fewer than this fraction of its cells are corroded:
+  /// at the start when the scenario's statistics say so, else once its first cells are seen
+  /// (0: never).
   double prior_trust = 0.8;
-  int prior_check_cells = 10;
-  /// Drop the prior at the start when the scenario's statistics (p_C, l_C, p_TP, p_FP) make fewer
-  /// than `prior_trust` of its cells corroded on average, instead of finding it out on a tour.
-  bool trust_statistics = true;
-  /// A failed UAV's prior cells go at once to the nearest working UAV, which interrupts its sweep
-  /// for them (false: they wait for the helpers, after their sweeps).
-  bool take_over_prior = true;
-  /// A failed UAV's unswept cells go at once to the working UAVs, split so that they end together
-  /// (each sweeps its share after its own strips; false: they wait for the helpers' nearest-cell
-  /// search after their sweeps).
-  bool take_over_sweep = true;
-  /// After a failure's re-split, a UAV leaves a detection in another working UAV's share of the
-  /// dense columns (swept at z = 1, which inspects it on its way) to that UAV, instead of
-  /// descending for it on its flight to its own share (false: whoever passes it descends).
-  bool leave_to_low_sweep = true;
-  /// After a failure's re-split, the detections not yet inspected stay in the share they went to
-  /// until inspected, also at z = 2: its bands are planned to pass abreast of them, and it
-  /// descends for them on the way (false: dropped from the share at z = 2; a failed UAV's were
-  /// left to the helpers at the mission's end).
-  bool pass_left_detections = true;
-  /// After a failure's re-split, a share's dense part is swept at z = 1 as two blocks of
-  /// columns, one after the other, where that is a shorter flight than one boustrophedon over
-  /// its bands: swept in part, the share is ragged (false: one boustrophedon).
-  bool two_block_sweep = true;
-  /// Neighbours re-split their prior cells so that their tours (estimated) end together, at the
-  /// start and after a failure's prior cells were handed over; a UAV whose tour is done takes the
-  /// part of the longest tour left (of a UAV of its flight part) that makes the later of the two
-  /// end earliest (false: each tours its region's prior cells).
-  bool share_prior = true;
-  /// A claimed target goes to a UAV nearer to it than its claimer (false: claims hold).
-  bool yield_claims = true;
-  /// The sweep's bands: "rows" (s2 rows from the grid's bottom, flown along the hull) or
-  /// "columns" (s2 columns from the region's leftmost, flown up and down the hull's height).
-  std::string strips = "auto";
-  /// Fly a band only as far as the footprint needs to reach its ends (false: end cell to end cell).
-  bool trim_strip_ends = true;
-  /// At z = 1, before climbing, also look at the unobserved cells next to a cell it inspected
-  /// (a corrosion rectangle going on beyond what was seen) within the inspection radius, instead
-  /// of climbing and descending again for its next rows.
-  bool follow_clusters = true;
-  /// At z = 1, fly to the position whose footprint takes in the most of that work (detections
-  /// within the inspection radius and, with follow_clusters, cells beside inspected ones) per step
-  /// of flight, held until reached or empty (false: to the nearest cell's nearest viewpoint,
-  /// chosen anew each step).
-  bool inspect_viewpoints = true;
-  /// While sweeping, skip the rest of a band whose cells (within the footprint of what is left of
-  /// it) have all been observed already — by a helper, or on the way of an inspection (at z = 1:
-  /// observed and, if detected, inspected).
-  bool skip_seen_bands = true;
   /// The cells of a corrosion zone whose expected corroded fraction (of what the sweep will find:
   /// without the prior's toured cells) exceeds this are swept at z = 1 in bands of s1 (1: never).
   double low_sweep_above = 0.1;
-  /// A UAV whose dense columns span at most this many bands of s1 (and that has other cells too)
-  /// sweeps them at z = 2 with its other cells (0: never).
-  int low_sweep_min_bands = 2;
-  /// A UAV whose sweep is done takes the tail of the remaining sweep (its last bands) of the
-  /// working UAV that would end last, split so that the later of the two ends earliest, before
-  /// it helps cell by cell.
-  bool share_sweep = true;
-  /// Partition in column slabs (the stripes partitioner, with the same weights) where they are
-  /// 4-connected, else with `partitioner`.
-  bool slab_partition = true;
-  /// Partition in pieces of one boustrophedon over the hull's column bands (band_partition.hpp),
-  /// each region's bands on that band grid, where the pieces are 4-connected and the flight space
-  /// is one; else slab-partition's.
-  bool band_partition = true;
-  /// In the band partition, the inspections expected at a cell the sweep detects (its weight's
-  /// excess over 1) count this many times (a toured prior cell's, prior_tour_weight times).
-  double inspection_weight = 2.0;
-  /// With share-prior, in the band partition, a prior cell toured first counts its weight's
-  /// excess over 1 this many times: share-prior re-splits the tours among neighbours after the
-  /// partition, so a piece that the partition shrank for its tour would end its sweep early
-  /// (0.25: tuning seeds, docs/sweep-inspect.md, "Regions"). Without share-prior it counts once.
-  double prior_tour_weight = 0.25;
-  /// While sweeping, also descend for a detected cell within the footprint (but not abreast)
-  /// that the current leg of the flight comes no nearer to: beyond a band's trimmed end, or
-  /// behind its start (false: such cells wait for the helpers).
-  bool inspect_band_ends = true;
-  /// Descend for a detection abreast only once it is no longer ahead on the leg being flown (up
-  /// to h1 behind), so that the z = 2 footprint has seen the rows beyond it first (false: as soon
-  /// as it is within h1 ahead).
-  bool descend_when_level = true;
-  /// Visit the prior's cells in the order of a planned open tour (open_tour.hpp: nearest
-  /// neighbour, 2-opt, Or-opt), planned again whenever the cell it flies to has been seen while
-  /// it has at most kReplannedTourCells cells, repaired (seen cells dropped) above (false: the
-  /// nearest cell at every step).
-  bool plan_prior_tour = true;
-  /// Fly to the sweep's first band along the region's edge row (and a band's centre line) when
-  /// that makes the whole flight shorter: the bands it passes are then flown only as far as the
-  /// cells it did not see (false: straight there, x then y).
-  bool approach_edge = true;
-  /// Also plan sweeps that begin at the UAV's own band: the bands on one side of it (whole, or
-  /// their cells on one side of a cut along them near the UAV) first, then the rest, when that
-  /// is a shorter flight: a UAV in mid-region otherwise first crosses bands it flies again.
-  bool own_band_first = true;
-  /// Without a prior tour, move the band partition's cuts (a few rows at a time, up to
-  /// `balance_rounds` passes over them) while the UAVs' latest planned end — the flight from its
-  /// start, with the approach, plus expected inspections — gets earlier.
-  bool balance_flights = true;
-  int balance_rounds = 10;
+  /// The sweep's bands: "rows" (s2 rows from the grid's bottom, flown along the hull),
+  /// "columns" (s2 columns, flown up and down the hull's height) or "auto" (per region and
+  /// re-plan, the shorter flight; the band partition's z = 2 sweeps fly its columns).
+  std::string strips = "auto";
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -167,7 +64,7 @@ class SweepInspectPlanner final : public Planner {
     WaypointFollower sweep;
     grid::Cell resume{-1, -1};        // where the sweep was left for an inspection
     grid::Cell target{-1, -1};        // the position it flies to (inspect / help)
-    int target_cell = -1;             // the cell that target serves (help claims it)
+    int target_cell = -1;             // the cell that target serves (its claim)
     bool sweep_planned = false;       // its sweep was planned (it left the prior's cells once)
     Mode after_prior = Mode::kSweep;  // where to go on when prior cells handed over are done
     bool replan = false;              // its cells were re-split (a failure): plan strips anew
@@ -175,67 +72,91 @@ class SweepInspectPlanner final : public Planner {
     bool low = false;                 // its sweep is flown at z = 1 (low-sweep-above)
     bool other_part = false;          // its cells of the other plane are swept after these
     std::size_t approach_rest = 0;    // waypoints after its sweep's approach (0: none left)
-    grid::Cell viewpoint{-1, -1};     // where it flies at z = 1 (inspect-viewpoints)
-    // plan-prior-tour: its prior cells in the planned order (empty: plan one), tour[tour_next]
+    grid::Cell viewpoint{-1, -1};     // where it flies at z = 1 (inspection_viewpoint)
+    // Its prior cells in the planned order (empty: plan one), tour[tour_next]
     // the first not yet seen when last looked; `repaired` when it was planned over more than
     // kReplannedTourCells cells, so that it is repaired, not planned anew, until re-assigned.
     std::vector<int> tour;
     std::size_t tour_next = 0;
     bool repaired = false;
   };
+  // The state machine (sweep_inspect_modes.cpp). A UAV's mode, and how it leaves it:
+  //   kPrior   tours its prior cells at z = 1 → kSweep (first time), or back to what it left
+  //            for prior cells handed over (kReturn, kHelp)
+  //   kSweep   flies its bands (z = 2, or z = 1 in dense columns) → kInspect (descended for a
+  //            detection abreast), kHelp (its sweep is done)
+  //   kInspect inspects the detections around its descent at z = 1 → kReturn (climbed), kSweep
+  //            (the sweep planned from here starts at z = 1)
+  //   kReturn  flies back to where it rejoins its sweep → kSweep, kInspect
+  //   kHelp    takes the nearest unclaimed work anywhere → kSweep (a sweep's tail taken, or cells
+  //            of a failure's re-split), kDone (nothing left)
+  //   kDone    hovers → kHelp (work may appear)
+  //   kFailed  (failed)
+  // Any of kSweep, kHelp, kDone → kPrior when prior cells of a failed UAV are handed to it.
+  /// UAV k's action this step: the functions of its modes, in turn, until one acts.
   sim::Action decide_uav(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Any of kSweep, kHelp, kDone → kPrior when `prior` (the UAV's) holds cells handed over.
+  static void take_handed_prior(Uav& p, const sim::UavState& u, const std::vector<int>& prior);
+  /// Each mode's step: the action, or nullopt when the UAV moved to a mode that now decides.
+  std::optional<sim::Action> sweep_mode(int k, const sim::UavState& u,
+                                        const sim::PlannerView& view);
+  std::optional<sim::Action> return_mode(int k, const sim::UavState& u,
+                                         const sim::PlannerView& view);
+  std::optional<sim::Action> inspect_mode(int k, const sim::UavState& u,
+                                          const sim::PlannerView& view);
+  std::optional<sim::Action> help_mode(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// kSweep at z = 2: descend for a detection abreast, else on along the sweep.
+  std::optional<sim::Action> sweep_at_z2(int k, const sim::UavState& u,
+                                         const sim::PlannerView& view);
   /// Mode kPrior: UAV k's next move on its tour of the prior's cells at z = 1; nullopt when the
   /// tour is done and the UAV has moved on to its sweep (or back to what it left).
   std::optional<sim::Action> prior_tour_step(int k, const sim::UavState& u,
                                              const sim::PlannerView& view);
-  /// inspect-on-the-way: whether a detected cell is abreast of UAV k sweeping at `pos` (or, with
-  /// inspect-band-ends, beyond the leg it flies), so that it descends now.
+  /// Whether a detected cell is abreast of UAV k sweeping at `pos` (or beyond the leg it
+  /// flies), so that it descends now.
   bool detection_abreast(int k, grid::Cell pos, const sim::PlannerView& view) const;
-  /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere (or a sweep tail).
-  sim::Action help_step(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Mode kHelp: UAV k's next move towards the nearest unclaimed work anywhere; nullopt when it
+  /// took a sweep's tail (now kSweep).
+  std::optional<sim::Action> help_step(int k, const sim::UavState& u, const sim::PlannerView& view);
   /// Removes from owner_ UAV k's cells that are observed already (a sweep planned then skips them),
   /// but for the detections in columns swept at z = 1, which that sweep is to inspect, and those
   /// a re-split gave it (resplit_detection_), which its sweep is to pass abreast of.
   void drop_observed(int k, const sim::PlannerView& view);
-  /// UAV k's next move along its sweep (skipping bands seen already): on to its other part when
-  /// this one is done; nullopt, the UAV now helping, when its sweep is over.
+  /// UAV k's next move along its sweep (skipping bands seen already); nullopt when this part is
+  /// done: its other part planned (still kSweep), or, the sweep over, now kHelp.
   std::optional<sim::Action> follow_sweep(int k, const sim::UavState& u,
                                           const sim::PlannerView& view);
-  /// The part of UAV k's cells on the other plane, when the current part's sweep is done.
-  sim::Action next_part(int k, const sim::UavState& u, const sim::PlannerView& view);
+  /// Plans the part of UAV k's cells on the other plane, when the current part's sweep is done.
+  void next_part(int k, const sim::UavState& u);
   /// Nearest pending detected cell to `pos` within Chebyshev radius `radius` of `around` (any
   /// radius when radius < 0), not claimed by another UAV; −1 if none.
   int nearest_pending(int k, grid::Cell pos, grid::Cell around, int radius,
                       const sim::PlannerView& view) const;
-  /// inspect-viewpoints: the position UAV k at z = 1 flies to next, `held` while its footprint
+  /// The position UAV k at z = 1 flies to next, `held` while its footprint
   /// still takes in work, else the one taking in the most work cells within Chebyshev `radius` of
   /// `around` per step of flight; kNoCell when no work is left there. `cell` is set to a work
   /// cell it takes in (the UAV's claim), or −1.
   grid::Cell inspection_viewpoint(int k, grid::Cell pos, grid::Cell around, int radius,
                                   grid::Cell held, int& cell, const sim::PlannerView& view);
-  /// follow-clusters' work: cell (x, y) is unobserved, has an inspected 4-neighbour, and UAV k
-  /// may look at it from z = 1 (reachable, not claimed by another UAV).
+  /// Work beside an inspected cell: cell (x, y) is unobserved, has an inspected 4-neighbour, and
+  /// UAV k may look at it from z = 1 (reachable, not claimed by another UAV).
   bool cluster_edge(int k, int x, int y, const sim::PlannerView& view) const;
-  /// follow-clusters: the nearest unobserved cell with an inspected 4-neighbour within Chebyshev
-  /// radius `radius` of `around`, seen from z = 1 by UAV k; −1 if none.
-  int nearest_cluster_edge(int k, grid::Cell pos, grid::Cell around, int radius,
-                           const sim::PlannerView& view) const;
   /// Nearest unknown hull cell (M = 0) not claimed by another UAV; −1 if none.
   int nearest_unknown(int k, grid::Cell pos, const sim::PlannerView& view) const;
   bool claimed_by_other(int k, int cell) const;
-  /// Whether UAV k may inspect detected cell i: in its region when help is off, seen from z = 1
-  /// by some position it can reach, not claimed by another UAV, not left_to_low_sweep.
+  /// Whether UAV k may inspect detected cell i: seen from z = 1 by some position it can reach,
+  /// not claimed by another UAV, not left_to_low_sweep.
   bool may_inspect(int k, int i) const;
-  /// leave-to-low-sweep: after a re-split, whether detected cell i is in another UAV's share of
+  /// After a re-split, whether detected cell i is in another UAV's share of
   /// the dense columns while that UAV is still sweeping them at z = 1.
   bool left_to_low_sweep(int k, int i) const;
   /// low-sweep-above: marks the columns of the corrosion zones (one zone when the statistics are
   /// unknown) whose cells the sweep expects corroded more often than low-sweep-above.
   void find_dense_columns(const PlannerContext& context);
-  /// band-partition: the pieces of one boustrophedon over the hull's bands, of equal expected
+  /// The band partition: the pieces of one boustrophedon over the hull's bands, of equal expected
   /// work (the request's weights, dense columns at z = 1), and band_start_ for their sweeps;
   /// null when a piece is not 4-connected.
-  /// balance-flights: the band partition's cuts moved a few rows at a time while that makes the
+  /// The band partition's cuts moved a few rows at a time while that makes the
   /// latest planned end earlier (or keeps it and spreads the ends less).
   /// `cuts` are `pieces`' (rows.balanced_cuts()).
   partition::Partition balance_flights(const BandPieces& rows, std::vector<std::size_t> cuts,
@@ -252,7 +173,7 @@ class SweepInspectPlanner final : public Planner {
   bool prior_distrusted() const {
     if (prior_dropped_) return true;
     const int seen = prior_true_ + prior_false_;
-    return options_.prior_trust > 0 && seen >= options_.prior_check_cells &&
+    return options_.prior_trust > 0 && seen >= kPriorCheckCells &&
            prior_true_ < options_.prior_trust * seen;
   }
   /// The strips of UAV k's region flown from `from` (its cells in owner_): over its cells in dense
@@ -268,33 +189,33 @@ class SweepInspectPlanner final : public Planner {
   std::vector<grid::Cell> strips_from(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                                       bool approach = true);
   /// One boustrophedon over the cells where `owner` is k (bands of s2, or of s1 when Uav::low)
-  /// flown from `from`, from the nearer end (nearer-sweep-end); led by an edge approach
-  /// (approach-edge) unless `approach` is false.
+  /// flown from `from`, from the nearer end; led by an edge approach unless `approach` is false.
   std::vector<grid::Cell> boustrophedon_from(const grid::Grid<std::int16_t>& owner, int k,
                                              grid::Cell from, bool approach);
-  /// two-block-sweep: after a failure's re-split, `waypoints` (UAV k's sweep of its cells in
+  /// After a failure's re-split, `waypoints` (UAV k's sweep of its cells in
   /// `owner` from `from`) become two blocks of columns where that is a shorter flight, if the
   /// sweep is at z = 1 (Uav::low).
   void low_blocks(const grid::Grid<std::int16_t>& owner, int k, grid::Cell from,
                   std::vector<grid::Cell>& waypoints);
-  /// At a failure (take-over-sweep): every cell not yet observed is split anew among the working
+  /// At a failure: every cell not yet observed is split anew among the working
   /// UAVs in column slabs, left to right in the order of their positions, so that their predicted
   /// ends — the prior's cells left to visit, the flight to the slab, the slab — are as early as
   /// can be; each then sweeps its slab's strips from where it is.
   void resplit(const sim::PlannerView& view);
-  /// share-prior: UAV k at `pos`, its prior tour done, takes part of the longest prior tour left;
+  /// UAV k at `pos`, its prior tour done, takes part of the longest prior tour left;
   /// true if it took cells.
   bool take_prior_share(int k, grid::Cell pos);
-  /// Splits `cells` between UAV a at pa and UAV b at pb: a takes the first t of them (the order is
-  /// left in `cells`), t making the later of the two estimated tours end earliest (`*later`).
-  std::size_t split_tours(int a, grid::Cell pa, int b, grid::Cell pb, std::vector<int>& cells,
-                          int* later);
-  /// share-prior at the start and after a failure's prior cells were handed over: neighbours (by
+  /// Splits `cells` between UAV a at pa and UAV b at pb (PriorTourSplitter::split, with the
+  /// cells each may reach at z = 1): a takes the first `first` of them (the order is left in
+  /// `cells`).
+  PriorTourSplitter::Split split_tours(int a, grid::Cell pa, int b, grid::Cell pb,
+                                       std::vector<int>& cells);
+  /// At the start and after a failure's prior cells were handed over: neighbours (by
   /// x of `at`, working UAVs only when `view` is given) re-split their prior cells so that their
   /// tours from `at` end together (kBalancePasses passes over the neighbour pairs).
   void balance_prior_tours(std::span<const grid::Cell> at, const sim::PlannerView* view = nullptr);
   static constexpr int kBalancePasses = 3;
-  /// plan-prior-tour: the next cell of UAV k's planned z = 1 tour over its prior cells `cells`
+  /// The next cell of UAV k's planned z = 1 tour over its prior cells `cells`
   /// that is still to be inspected; the tour is planned from `from` when it has none left or was
   /// planned short (over at most kReplannedTourCells cells).
   int next_of_tour(int k, grid::Cell from, std::span<const int> cells,
@@ -309,19 +230,14 @@ class SweepInspectPlanner final : public Planner {
     uavs_[static_cast<std::size_t>(k)].tour_next = 0;
     uavs_[static_cast<std::size_t>(k)].repaired = false;
   }
-  /// Estimated steps of a nearest-first z = 1 tour from `from` over `cells` (also with
-  /// plan-prior-tour: the planned tour's own length, found by local search, cost 45 times the
-  /// planner time in share-prior's bisections and balanced the tours no better on the tuning
-  /// seeds).
-  int tour_steps(grid::Cell from, std::span<const int> cells);
-  /// share-sweep: UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
+  /// UAV j (state u), its sweep done, takes the tail of the remaining sweep of the
   /// working UAV of its flight part that would end last, if that ends the two at least s2 steps
   /// sooner; true if it took one.
   bool take_sweep_tail(int j, const sim::UavState& u, const sim::PlannerView& view);
-  /// Hands the prior cells of failed UAVs to the working UAV nearest to each (take-over-prior).
+  /// Hands the prior cells of failed UAVs to the working UAV nearest to each.
   /// True when some cells were handed over.
   bool hand_over_prior(const sim::PlannerView& view);
-  /// skip-seen-bands: drops the follower's waypoints of UAV k's band legs ahead of `pos` whose
+  /// Drops the follower's waypoints of UAV k's band legs ahead of `pos` whose
   /// footprints would see no unobserved cell.
   void skip_seen_bands(Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Work left at cell i for a sweep at z = 1 (`low`) or z = 2: sweep_work, or a detection a
@@ -331,11 +247,9 @@ class SweepInspectPlanner final : public Planner {
   /// `low`: with the s1 footprint, or a detected cell to inspect).
   bool leg_sees_unobserved(grid::Cell a, grid::Cell b, bool low,
                            const sim::PlannerView& view) const;
-  /// replan-rejoin: UAV k, its inspection done at `pos`, plans its sweep from `pos` when that is
+  /// UAV k, its inspection done at `pos`, plans its sweep from `pos` when that is
   /// shorter than flying back to Uav::resume and on; true (and Uav::resume = pos) if it did.
   bool replan_after_inspection(int k, grid::Cell pos, const sim::PlannerView& view);
-  /// Where to rejoin the sweep after an inspection ending at `pos` (resume_ahead).
-  grid::Cell rejoin_point(int k, const Uav& p, grid::Cell pos, const sim::PlannerView& view) const;
   /// Nearest position to `pos` whose footprint of half-width h holds `c` (its clamp into the
   /// footprint square); with no-fly zones, when that is not flyable by UAV k, the viewpoint of c
   /// in UAV k's service (kNoCell when its part of the flight space has none).
@@ -346,16 +260,31 @@ class SweepInspectPlanner final : public Planner {
   /// The move from `pos` one step along UAV k's service's shortest flight to `to`.
   sim::Action step(int k, grid::Cell pos, grid::Cell to) const;
 
+  /// The prior is judged (prior-trust) once this many of its cells have been seen.
+  static constexpr int kPriorCheckCells = 10;
+  /// In the band partition, the inspections expected at a cell the sweep detects (its weight's
+  /// excess over 1) count this many times, a prior cell's toured first kPriorTourWeight times:
+  /// the tours are re-split among neighbours after the partition (balance_prior_tours), so a
+  /// piece that the partition shrank for its whole tour would end its sweep early.
+  static constexpr double kInspectionWeight = 2.0;
+  static constexpr double kPriorTourWeight = 0.25;
+  /// Dense columns spanning at most this many bands of s1 (among other cells of a region) are
+  /// swept at z = 2 with the rest: each z = 1 band is a whole pass of the hull's height.
+  static constexpr int kLowSweepMinBands = 2;
+  /// Passes of the flight balancing over the band partition's cuts.
+  static constexpr int kBalanceRounds = 10;
+
   SweepInspectOptions options_;
   std::shared_ptr<const partition::Partition> partition_;
-  /// band-partition: per column, the first column of its band (empty: each region's own bands).
+  /// The band partition's grid: per column, the first column of its band (empty: each region's own
+  /// bands).
   std::vector<int> band_start_;
   std::vector<Uav> uavs_;
   std::vector<int> pending_;  // detected (seen at z = 2), not yet inspected cells, flat indices
   std::vector<int> hull_cells_;
   std::vector<std::vector<int>> prior_;  // per UAV: the prior's cells of its region still M = 2
   // Whose strips each cell is in: the partition until a failure re-splits the cells not yet
-  // observed among the working UAVs (take-over-sweep; -1: nobody's).
+  // observed among the working UAVs (-1: nobody's).
   grid::Grid<std::int16_t> owner_;
   std::vector<char> handed_over_;  // per UAV: its failure was handled
   bool resplit_ = false;           // owner_ is a failure's re-split
@@ -365,34 +294,21 @@ class SweepInspectPlanner final : public Planner {
   std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
   grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
   SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
-  std::vector<int> tour_left_;           // scratch of tour_steps
+  PriorTourSplitter tours_;              // the prior tours' estimates and splits
   std::vector<grid::Cell> tour_points_;  // scratch of next_of_tour
   std::vector<int> split_cells_;
-  std::vector<int> tail_walk_;  // scratch of take_sweep_tail: walk lengths along a sweep
+  std::vector<int> tail_walk_;  // scratch of split_sweep_tail: walk lengths along a sweep
   // Scratch of inspection_viewpoint: work cells per position of the window around the inspection,
   // and their 2D prefix sums (one more row and column).
   std::vector<int> view_work_;
   std::vector<int> view_work_sums_;
-  /// take_sweep_tail's split of a sweep: the donor stops at `at` on leg `leg` (the leg into its
-  /// remaining waypoint `leg`); the taker flies from `at`, or from that waypoint when the leg runs
-  /// between two bands (`skip_leg`), to the end, or the other way round (`backward`).
-  struct TailSplit {
-    double end = 0.0;  // the later of the two estimated ends
-    int leg = -1;
-    grid::Cell at{-1, -1};
-    bool skip_leg = false;
-    bool backward = false;
-  };
   std::vector<double> split_load_;                         // per UAV, in cells
   std::vector<std::pair<int, grid::Cell>> split_helpers_;  // (UAV, where its work ends)
   /// The planning estimates of the split: a sweep sees about this fraction of s2 new cells per
-  /// step (its inspections included; measured on the tuning seeds), a visit of a prior cell
+  /// step (its inspections included), a visit of a prior cell
   /// costs about this many steps.
   static constexpr double kSweepRate = 0.6;
   static constexpr double kPriorVisitSteps = 1.5;
-  /// share-sweep's estimate of a sweep's steps per step of its waypoints' walk (inspections,
-  /// turns); a flight to the tail costs one step per step.
-  static constexpr double kTailWalkCost = 1.2;
   grid::DistanceService own_distances_;
   grid::DistanceService* distances_ = nullptr;
   FlightDistances flights_;
@@ -404,7 +320,7 @@ class SweepInspectPlanner final : public Planner {
   mutable grid::Grid<int> from_here_;
   int width_ = 0;
   grid::Cell hull_cell(int index) const { return {index % width_, index / width_}; }
-  bool prior_dropped_ = false;  // trust-statistics: the prior is not worth a tour
+  bool prior_dropped_ = false;  // the statistics say the prior is not worth a tour
   int prior_true_ = 0;          // prior cells found corroded so far (fleet-wide)
   int prior_false_ = 0;         // prior cells found clean so far
   int h1_ = 2;

@@ -8,7 +8,11 @@
 //    of one UAV) or z = 1 moves (s1 cells each).
 //  * reach: a cell is observed only from a position whose footprint holds it, and a UAV needs at
 //    least the Manhattan distance to get there (+ u_z to descend for a corroded cell).
+// With a battery, the rate argument also pays for the sorties the work forces (sortie_t_m).
 
+#include <span>
+
+#include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/mission_params.hpp"
@@ -22,9 +26,17 @@ struct LowerBound {
   int rate_t_m = 0;
   int reach_t_c = 0;  ///< the reach argument alone
   int reach_t_m = 0;
+  /// What endurance adds to rate_t_m (docs/model.md, "Batteries and sorties"): the fleet needs
+  /// ceil(work / (E − legs)) sorties, and each after a UAV's first pays the flight from its site
+  /// to the hull and back (ground legs included) and a swap. 0 with unlimited flight.
+  int sortie_t_m = 0;
 };
 
-/// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded).
+/// Bounds for the mission of `params` on `hull` with ground truth `truth` (1 = corroded), its UAVs
+/// starting at `starts` (world::start_cells of the mission, computed once by its caller).
+LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
+                       const world::MissionParams& params, std::span<const grid::Cell> starts);
+/// The same on world::start_cells(params, hull).
 LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t>& truth,
                        const world::MissionParams& params);
 

@@ -6,6 +6,13 @@
 
 namespace hullinspect::sim {
 
+/// One take-off to the next landing (docs/model.md, "Batteries and sorties").
+struct SortieRecord {
+  int takeoff = 0;   ///< t at which the step that takes off starts
+  int landing = -1;  ///< t at which the UAV has landed; −1 not landed
+  int site = 0;      ///< index of the launch site
+};
+
 struct UavCounters {
   int moves = 0;
   int hovers = 0;
@@ -17,6 +24,12 @@ struct UavCounters {
   int launch_site = -1;   ///< index of the UAV's launch site; −1 without launch sites
   int steps_away = 0;     ///< steps between its site and the hull (ground, take-off, out, home)
   int landed_at = -1;     ///< t at which it had landed at its site at the end; −1 not landed
+  int flight_steps = 0;   ///< steps airborne (or taking off or landing) while working
+  int swaps = 0;          ///< batteries swapped at a launch site
+  bool battery_crash = false;  ///< failed because it was airborne with an empty battery
+  /// The least battery left at any t while airborne, in steps; −1 with unlimited flight.
+  int min_battery = -1;
+  std::vector<SortieRecord> sorties;  ///< every take-off (none without launch sites)
 };
 
 /// Counters that planners report (zeros where a planner has no such thing).
@@ -62,11 +75,17 @@ struct MissionResult {
   /// The smallest max(|Δx|, |Δy|) between two UAVs at any t (0 for an exchange of cells); empty
   /// when the mission has no separation D (nothing is measured) or a single UAV.
   std::optional<int> min_separation;
+  /// UAVs that failed because they were airborne with an empty battery (counted in failed_uavs).
+  int battery_crashes = 0;
   PlannerStats planner;
 
   double c_percent(int t) const;  ///< c(t), 100 when there is no corrosion
   double m_percent(int t) const;  ///< m(t)
   UavCounters totals() const;
+  /// Take-offs of the whole fleet (0 without launch sites: the UAVs start in the air).
+  int sorties() const;
+  /// The least battery any UAV had left while airborne, in steps; empty with unlimited flight.
+  std::optional<int> min_battery() const;
 };
 
 }  // namespace hullinspect::sim

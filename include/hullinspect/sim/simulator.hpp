@@ -11,6 +11,7 @@
 #include "hullinspect/sim/mission_result.hpp"
 #include "hullinspect/sim/planner_view.hpp"
 #include "hullinspect/sim/types.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
 #include "hullinspect/world/launch_sites.hpp"
@@ -21,7 +22,11 @@ namespace hullinspect::sim {
 
 class Simulator {
  public:
-  /// Places the UAVs on their start cells at start_z and senses (t = 0). `params` must be valid.
+  /// Places the UAVs on `starts` (world::start_cells of the mission, computed once by its caller)
+  /// at start_z and senses (t = 0). `params` must be valid.
+  Simulator(const world::HullMask& hull, const world::Instance& instance,
+            const world::MissionParams& params, std::span<const grid::Cell> starts);
+  /// The same on world::start_cells(params, hull).
   Simulator(const world::HullMask& hull, const world::Instance& instance,
             const world::MissionParams& params);
 
@@ -37,6 +42,14 @@ class Simulator {
   /// `failed` in the view from t+1 on. Call before the step; the latest call for a UAV wins.
   void fail_uav_at(int uav, int from_time);
 
+  /// The sortie layer (sim/sortie_layer.hpp) sends UAV `uav` home before the step at t: it climbs
+  /// to plane 2, flies to its launch site, lands, swaps its battery, takes off and flies back to
+  /// its position and plane (the one it was changing to, if it was changing), away meanwhile.
+  /// Throws LogicError without launch sites, or for a UAV that failed or is already away.
+  void return_for_swap(int uav);
+  /// The UAVs' batteries in steps (not limited in the paper's model).
+  const world::BatterySteps& battery() const { return battery_; }
+
   int time() const { return time_; }
   /// Every counted cell known: the hull cells that can reach their final state (docs/model.md).
   bool complete() const { return known_ == hull_cells_; }
@@ -51,6 +64,8 @@ class Simulator {
   int failed_uavs() const { return failed_; }
   const world::MissionParams& params() const { return params_; }
   const world::HullMask& hull() const { return hull_; }
+  /// The start cell of each UAV.
+  std::span<const grid::Cell> starts() const { return starts_; }
   int plane_change_steps() const { return uz_; }
   /// Steps of each neighbour flight per plane (empty: every flight one step).
   const grid::FlightSteps& flight_steps() const { return flights_; }
@@ -85,11 +100,16 @@ class Simulator {
   // Launch sites (docs/model.md): the positions a UAV flies while away, one per step.
   void advance_away(std::size_t k);
   void start_homing();
+  /// Appends to away_path_[k] the flight home from the UAV's state: climb, fly, land, transfer;
+  /// the last entry is on the ground. Returns the site's cell.
+  grid::Cell append_flight_home(std::size_t k);
+  void use_battery(std::size_t k, bool was_airborne);
   void check_separation();
 
   const world::HullMask& hull_;
   const grid::Grid<std::int8_t>& truth_;
   world::MissionParams params_;
+  std::vector<grid::Cell> starts_;
   world::Reachability reach_;
   int uz_ = 1;
   grid::FlightSteps flights_;
@@ -112,10 +132,24 @@ class Simulator {
   int failed_ = 0;
   MissionResult result_;  // series and counters, filled as the mission runs
   world::LaunchLegs legs_;
-  std::vector<std::vector<grid::Cell>> away_path_;  // per UAV: its position at each step away
-  std::vector<std::size_t> away_next_;              // per UAV: the next entry of away_path_
-  std::vector<int> climbed_at_;  // per UAV flying home: steps left when it is back on plane 2
-  bool homing_ = false;          // the hull is complete and some working UAV has not landed yet
+  // One step of a UAV away from the hull: where it is, on which plane, and whether airborne, at
+  // the step's end; kSwapped marks the step that ends a battery swap.
+  static constexpr std::uint8_t kAirborne = 1;
+  static constexpr std::uint8_t kSwapped = 2;
+  struct AwayStep {
+    grid::Cell pos;
+    std::int8_t z = 2;
+    std::uint8_t flags = kAirborne;
+  };
+  std::vector<std::vector<AwayStep>> away_path_;  // per UAV: its state at each step away
+  std::vector<std::size_t> away_next_;            // per UAV: the next entry of away_path_
+  // Per UAV: it is on the ground while its next entry of away_path_ lies in [landed_end_,
+  // out_begin_] (landed, swapping); from out_begin_ on it flies out (at the start of the mission,
+  // or after a swap).
+  std::vector<std::size_t> landed_end_;
+  std::vector<std::size_t> out_begin_;
+  world::BatterySteps battery_;
+  bool homing_ = false;  // the hull is complete and some working UAV has not landed yet
 };
 
 }  // namespace hullinspect::sim

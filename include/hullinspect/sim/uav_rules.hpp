@@ -22,7 +22,10 @@ std::optional<std::string> state_violation(const UavState& state, int plane_chan
 /// down and arrives on the other plane when the count reaches 0; a UAV still flying to a distant
 /// neighbour stays put and counts its flight down; otherwise it hovers, moves one cell on its
 /// plane (with flight_left one less than that flight's steps in `flights`), or starts a plane
-/// change. nullopt when allowed, else the broken rule.
+/// change. Batteries: a step airborne at its start or end uses one step of battery, one on the
+/// ground none (a swap refills it); only a UAV away at its launch site takes off or lands, on the
+/// ground it does not move, and airborne with an empty battery it fails in the next step. nullopt
+/// when allowed, else the broken rule.
 std::optional<std::string> step_violation(const UavState& before, const UavState& after,
                                           int plane_change_steps,
                                           const grid::FlightSteps& flights = {});

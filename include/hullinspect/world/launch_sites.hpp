@@ -2,6 +2,7 @@
 // Launch sites (docs/model.md, "Launch sites"): where the UAVs take off and land, which site each
 // UAV uses, and the steps of its flight out to its start cell and home again.
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -13,8 +14,12 @@
 
 namespace hullinspect::world {
 
-/// Whole steps that `seconds` of mission time take (a step lasts one second), rounded up.
-int seconds_to_steps(double seconds);
+/// The one rule for a launch site on a width × height grid, the mission's and the exports': throws
+/// ParameterError naming "launch" when `c` is outside the grid, a no-fly position, or a hull cell
+/// off the grid's edge. The predicates are asked about cells on the grid only.
+void check_launch_site(grid::Cell c, int width, int height,
+                       const std::function<bool(grid::Cell)>& is_hull,
+                       const std::function<bool(grid::Cell)>& is_no_fly);
 
 /// Throws ParameterError naming "launch", "launch-transfer" or "takeoff-time": a site outside the
 /// grid, on a no-fly position or on a hull cell inside the grid (a site is a non-hull cell or a
