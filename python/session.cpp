@@ -8,6 +8,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/result_json.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::python {
 
@@ -63,7 +64,8 @@ Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionS
   }
   reach_ = world::compute_reachability(*hull_, spec_.params.no_fly.get(), spec_.params.s1,
                                        spec_.params.s2, starts_);
-  distances_ = world::make_distance_service(reach_);
+  // On an unrolled hull the planner weighs neighbour flights as a simulated mission does.
+  distances_ = world::make_distance_service(reach_, world::neighbour_flights(*hull_, spec_.params));
   planners::PlannerContext context{*hull_,      spec_.params, instance_.prior, starts_,
                                    partitions_, &distances_,  &reach_};
   context.corrosion = planners::prior_statistics(spec_);

@@ -15,8 +15,14 @@ DistanceService::DistanceService(Grid<std::uint8_t> allowed, int cached_fields)
   slot_of_.assign(static_cast<std::size_t>(allowed_.size()), -1);
 }
 
+DistanceService::DistanceService(Grid<std::uint8_t> allowed, EdgeSteps steps, int cached_fields)
+    : DistanceService(std::move(allowed), cached_fields) {
+  steps_ = std::move(steps);
+  longest_flight_ = steps_.longest();
+}
+
 int DistanceService::distance(Cell a, Cell b) {
-  if (!has_no_fly()) return manhattan(a, b);
+  if (!searched()) return manhattan(a, b);
   return cached_field(allowed_.index(b))[a];
 }
 
@@ -47,7 +53,7 @@ const Grid<int>& DistanceService::cached_field(int source) {
   Grid<int>& out = slot.field;
   if (out.width() != width() || out.height() != height()) out = Grid<int>(width(), height());
   ++searches_;
-  if (!has_no_fly()) {
+  if (!searched()) {
     const Cell s = allowed_.cell(source);
     for (int y = 0; y < height(); ++y) {
       for (int x = 0; x < width(); ++x) out(x, y) = manhattan(s, Cell{x, y});
@@ -58,7 +64,11 @@ const Grid<int>& DistanceService::cached_field(int source) {
   scratch_.queue.resize(static_cast<std::size_t>(allowed_.size()));
   out[source] = 0;
   scratch_.queue[0] = source;
-  search(out, 1);
+  if (has_long_flights()) {
+    search_weighted(out, 1);
+  } else {
+    search(out, 1);
+  }
   return out;
 }
 
@@ -87,13 +97,48 @@ void DistanceService::search(Grid<int>& out, std::size_t seeds) {
   }
 }
 
+void DistanceService::search_weighted(Grid<int>& out, std::size_t seeds) {
+  const int w = width();
+  const int h = height();
+  // Every flight takes 1 … longest steps, so the distances waiting to be settled span fewer than
+  // longest + 1 values: one bucket per value modulo that.
+  const int span = longest_flight_ + 1;
+  buckets_.resize(static_cast<std::size_t>(span));
+  for (auto& b : buckets_) b.clear();
+  std::size_t pending = seeds;
+  for (std::size_t s = 0; s < seeds; ++s) buckets_[0].push_back(scratch_.queue[s]);
+  for (int d = 0; pending > 0; ++d) {
+    auto& bucket = buckets_[static_cast<std::size_t>(d % span)];
+    // Flights of at least one step push into other buckets, so this one only shrinks here.
+    for (std::size_t b = 0; b < bucket.size(); ++b) {
+      const int i = bucket[b];
+      --pending;
+      if (out[i] != d) continue;  // settled earlier at a shorter distance
+      // A cell that is not allowed can end a path but never lies inside one.
+      if (allowed_[i] == 0 && d != 0) continue;
+      const Cell here = allowed_.cell(i);
+      for (int n = 0; n < 4; ++n) {
+        const Cell next{here.x + kNeighbourDx[n], here.y + kNeighbourDy[n]};
+        if (next.x < 0 || next.y < 0 || next.x >= w || next.y >= h) continue;
+        const int j = allowed_.index(next);
+        const int reached = d + steps_.between(here, next);
+        if (out[j] <= reached) continue;
+        out[j] = reached;
+        buckets_[static_cast<std::size_t>(reached % span)].push_back(j);
+        ++pending;
+      }
+    }
+    bucket.clear();
+  }
+}
+
 Cell DistanceService::next_step(Cell from, Cell to) {
   if (from == to) return from;
   Cell preferred[6];
   int count = 0;
   if (to.x != from.x) preferred[count++] = {from.x + (to.x > from.x ? 1 : -1), from.y};
   if (to.y != from.y) preferred[count++] = {from.x, from.y + (to.y > from.y ? 1 : -1)};
-  if (!has_no_fly()) return preferred[0];
+  if (!searched()) return preferred[0];
   for (int d = 0; d < 4; ++d)
     preferred[count++] = {from.x + kNeighbourDx[d], from.y + kNeighbourDy[d]};
   const Grid<int>& f = cached_field(allowed_.index(to));
@@ -101,7 +146,7 @@ Cell DistanceService::next_step(Cell from, Cell to) {
   if (here >= kUnreachable) return from;
   for (int i = 0; i < count; ++i) {
     const Cell n = preferred[i];
-    if (allowed(n) && f[n] == here - 1) return n;
+    if (allowed(n) && f[n] == here - steps_.between(from, n)) return n;
   }
   return from;
 }
@@ -118,7 +163,7 @@ bool DistanceService::append_path(Cell from, Cell to, std::vector<Cell>& out) {
 }
 
 void DistanceService::distances_from(const Grid<std::uint8_t>& sources, Grid<int>& out) {
-  if (!has_no_fly()) {
+  if (!searched()) {
     manhattan_distance_transform(sources, out);
     return;
   }
@@ -131,7 +176,11 @@ void DistanceService::distances_from(const Grid<std::uint8_t>& sources, Grid<int
     out[i] = 0;
     scratch_.queue[seeds++] = i;
   }
-  search(out, seeds);
+  if (has_long_flights()) {
+    search_weighted(out, seeds);
+  } else {
+    search(out, seeds);
+  }
 }
 
 Cell DistanceService::viewpoint(Cell c, int half) {

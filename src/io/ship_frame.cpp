@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/world/ship_frame_bounds.hpp"
 
 namespace hullinspect::io {
@@ -21,9 +22,7 @@ ShipFrame::ShipFrame(ShipFrameSpec spec)
 }
 
 double ShipFrame::standoff_m(int z) const {
-  const int s = z == 1 ? spec_.s1 : spec_.s2;
-  const double half = spec_.theta_deg * std::numbers::pi / 360.0;
-  return s * spec_.cell_m / (2.0 * std::tan(half));
+  return grid::standoff_m(z == 1 ? spec_.s1 : spec_.s2, spec_.cell_m, spec_.theta_deg);
 }
 
 double ShipFrame::depth_m(grid::Cell cell) const {

@@ -14,6 +14,7 @@
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/files/bounded_read.hpp"
 #include "hullinspect/files/json_document.hpp"
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/sim/uav_rules.hpp"
 #include "hullinspect/world/ship_frame_bounds.hpp"
 
@@ -191,8 +192,10 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
 // The model's motion rules (sim/uav_rules.hpp) over every UAV of every frame, and no UAV on a
 // no-fly position ('#' in `no_fly`, already checked against the grid). Frames are checked.
+// A trace does not record a UAV's flight to a distant neighbour (docs/model.md "Neighbour
+// flights"): after a move of k steps in `flights`, the UAV is checked to stay put for k − 1 frames.
 void check_motion(const TraceChecker& check, const json& frames, int plane_change_steps,
-                  const json* no_fly, bool away_unrecorded) {
+                  const json* no_fly, bool away_unrecorded, const grid::FlightSteps& flights) {
   const auto state = [](const json& u, std::size_t k) {
     sim::UavState s;
     s.pos = {u[kUavFields * k].get<int>(), u[kUavFields * k + 1].get<int>()};
@@ -202,11 +205,12 @@ void check_motion(const TraceChecker& check, const json& frames, int plane_chang
     return s;
   };
   const std::size_t uavs = frames[0]["u"].size() / kUavFields;
+  std::vector<int> flight_left(uavs, 0);  // per UAV, after the previous frame
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& u = frames[i]["u"];
     for (std::size_t k = 0; k < uavs; ++k) {
       const auto where = fmt::format("frames[{}].u", i);
-      const sim::UavState now = state(u, k);
+      sim::UavState now = state(u, k);
       if (auto broken = sim::state_violation(now, plane_change_steps)) {
         check.fail(where, fmt::format("UAV {} {}", k, *broken));
       }
@@ -223,11 +227,41 @@ void check_motion(const TraceChecker& check, const json& frames, int plane_chang
       // A trace of a mission with launch sites does not record when a UAV is away at its site
       // (docs/trace-format.md): such a step is checked as the simulator flies it.
       if (away_unrecorded) before.away_left = 1;
-      if (auto broken = sim::step_violation(before, now, plane_change_steps)) {
+      before.flight_left = flight_left[k];
+      if (now.failed || before.flight_left > 0) {
+        now.flight_left = before.flight_left - (now.failed ? 0 : 1);
+      } else if (!away_unrecorded && grid::manhattan(before.pos, now.pos) == 1) {
+        now.flight_left = flights.between(before.pos, now.pos, before.z) - 1;
+      }
+      flight_left[k] = now.flight_left;
+      if (auto broken = sim::step_violation(before, now, plane_change_steps, flights)) {
         check.fail(where, fmt::format("UAV {} {} (from frame {})", k, *broken, i - 1));
       }
     }
   }
+}
+
+// The neighbour flights of a trace of an unrolled hull, from its checked `ship_frame`, grid, camera
+// and footprint by the simulator's own function over the same numbers; empty for any other hull.
+grid::FlightSteps trace_flights(const json& trace, int width, int height) {
+  const auto frame = trace.find("ship_frame");
+  if (frame == trace.end() || (*frame)["side"] != "both") return {};
+  grid::StandoffPoints points;
+  points.point = grid::Grid<std::array<double, 3>>(width, height);
+  points.normal = grid::Grid<std::array<double, 3>>(width, height);
+  const json& surface = (*frame)["surface"];
+  const json& normal = (*frame)["normal"];
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const json& p = surface[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
+      const json& n = normal[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
+      points.point(x, y) = {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
+      points.normal(x, y) = {n[0].get<double>(), n[1].get<double>(), n[2].get<double>()};
+    }
+  }
+  const double theta = trace.contains("camera") ? trace["camera"]["theta_deg"].get<double>() : 90.0;
+  return grid::flight_steps(points, trace["grid"]["cell_size_m"].get<double>(), theta,
+                            trace["footprint"][0].get<int>(), trace["footprint"][1].get<int>());
 }
 
 // The optional `ship_frame` of a hull imported from a mesh: origin [X0, Z0], side_plane_y, side,
@@ -367,7 +401,8 @@ void validate_trace(const json& trace, const std::string& source) {
   const bool away_unrecorded = trace.contains("parameters") && trace["parameters"].is_object() &&
                                trace["parameters"].contains("launch");
   check_motion(check, frames, plane_change_steps,
-               trace.contains("no_fly") ? &trace["no_fly"] : nullptr, away_unrecorded);
+               trace.contains("no_fly") ? &trace["no_fly"] : nullptr, away_unrecorded,
+               trace_flights(trace, width, height));
 
   const auto last = static_cast<std::int64_t>(frames.size()) - 1;
   const auto& series = check.object(check.field(trace, "", "series"), "series");

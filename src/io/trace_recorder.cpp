@@ -40,20 +40,21 @@ double rounded(double v, double scale) {
 // from, and its normal, replace the depth.
 json ship_frame(const world::HullGeometry& g) {
   const bool unrolled = g.unrolled();
-  const world::StandoffSurface standoff = world::standoff_surface(g);  // empty for one side
-  json placement = json::array();                                      // depth or surface rows
+  // Unrolled: rounded as the simulator's neighbour flights read them; empty for one side.
+  const grid::StandoffPoints standoff = world::standoff_points(g);
+  json placement = json::array();  // depth or surface rows
   json normal = json::array();
   for (int y = 0; y < g.height(); ++y) {
     json p = json::array();
     json n = json::array();
     for (int x = 0; x < g.width(); ++x) {
       if (unrolled) {
-        const world::Point3 s = standoff.point(x, y);
-        p.push_back({rounded(s.x, 1e4), rounded(s.y, 1e4), rounded(s.z, 1e4)});
-      } else {
-        p.push_back(rounded(g.depth(x, y), 1e4));
+        p.push_back(standoff.point(x, y));
+        n.push_back(standoff.normal(x, y));
+        continue;
       }
-      const world::Normal v = unrolled ? standoff.normal(x, y) : g.normal(x, y);
+      p.push_back(rounded(g.depth(x, y), 1e4));
+      const world::Normal v = g.normal(x, y);
       n.push_back({rounded(v.x, 1e6), rounded(v.y, 1e6), rounded(v.z, 1e6)});
     }
     placement.push_back(std::move(p));

@@ -131,7 +131,11 @@ Partition DarpPartitioner::partition(const PartitionRequest& request) const {
 
   detail::DarpWorkspace ws(hull, starts, weighted ? &request.weights : nullptr, out.desired_weight,
                            options_, request.seed);
-  if (request.allowed.size() > 0) ws.use_allowed_distances(request.allowed, starts);
+  // Through the flyable positions with no-fly zones, else through the hull cells as the BFS.
+  if (request.allowed.size() > 0 || !request.flights.empty()) {
+    ws.use_allowed_distances(request.allowed.size() > 0 ? request.allowed : hull.mask(), starts,
+                             request.flights);
+  }
   // Goal: every region connected and within `tolerance` cells of its desired weight. The tolerance
   // starts at 1 cell (0 when the shares divide exactly); after `limit` iterations it grows by one
   // and the limit halves, up to max_discrepancy. Total iterations ≤ 2 · iteration_limit +

@@ -525,8 +525,9 @@ void DarpWorkspace::export_assignment(Which which, grid::Grid<std::int16_t>& own
 }
 
 void DarpWorkspace::use_allowed_distances(const grid::Grid<std::uint8_t>& allowed,
-                                          std::span<const int> start_index) {
-  grid::DistanceService distances(allowed, /*cached_fields=*/1);
+                                          std::span<const int> start_index,
+                                          const grid::EdgeSteps& flights) {
+  grid::DistanceService distances(allowed, flights, /*cached_fields=*/1);
   const auto cells = static_cast<std::size_t>(cell_count_);
   for (std::size_t r = 0; r < start_index.size(); ++r) {
     const grid::Grid<int>& field = distances.field(allowed.cell(start_index[r]));

@@ -39,11 +39,12 @@ class DarpWorkspace {
                 const grid::Grid<double>* weights, std::span<const double> desired,
                 const DarpOptions& options, std::uint64_t seed);
 
-  /// No-fly zones (docs/model.md): re-initialises the evaluation matrices from the distance
-  /// service's shortest flights over `allowed` positions from each start instead of the BFS
-  /// through hull cells; a cell no flight reaches gets the largest finite distance + 1.
+  /// No-fly zones and neighbour flights (docs/model.md): re-initialises the evaluation matrices
+  /// from the distance service's shortest flights over `allowed` positions, each neighbour flight
+  /// taking its steps in `flights`, from each start instead of the BFS through hull cells; a cell
+  /// no flight reaches gets the largest finite distance + 1.
   void use_allowed_distances(const grid::Grid<std::uint8_t>& allowed,
-                             std::span<const int> start_index);
+                             std::span<const int> start_index, const grid::EdgeSteps& flights);
 
   /// Every hull cell to the UAV of lowest evaluation (ties: lowest UAV id); start cells stay with
   /// their UAV. Updates the region sizes and weights and the same-owner runs of every row.

@@ -175,6 +175,7 @@ Partition partition_per_flight_component(const PartitionRequest& request,
         if (!request.shares.empty()) sub.shares.push_back(shares[static_cast<std::size_t>(k)]);
       }
       sub.allowed = component_positions(request.allowed, parts, sub.starts[0]);
+      sub.flights = request.flights;
       Partition part = partition_one(sub);
       for (int i : cells) give(i, uavs[static_cast<std::size_t>(part.owner[i])]);
       for (std::size_t j = 0; j < uavs.size(); ++j) {

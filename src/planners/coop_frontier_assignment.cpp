@@ -65,7 +65,7 @@ FrontierAssigner::Pick FrontierAssigner::best_for(std::span<const grid::Cell> fr
   grid::DistanceService* distances =
       robot_distances_.empty() ? distances_ : robot_distances_[static_cast<std::size_t>(robot)];
   const grid::Grid<int>* field =
-      distances != nullptr && distances->has_no_fly() ? &distances->field(at) : nullptr;
+      distances != nullptr && distances->searched() ? &distances->field(at) : nullptr;
   Pick best;
   for (std::size_t j = 0; j < frontiers.size(); ++j) {
     // With the flight space in parts, only frontiers the robot's own part can see.

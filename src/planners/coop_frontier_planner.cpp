@@ -96,7 +96,7 @@ bool CoopFrontierPlanner::sees(int uav, int index, int half) {
 
 const grid::Grid<int>* CoopFrontierPlanner::field_from(int uav, grid::Cell pos) {
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(uav)];
-  return distances.has_no_fly() ? &distances.field(pos) : nullptr;
+  return distances.searched() ? &distances.field(pos) : nullptr;
 }
 
 void CoopFrontierPlanner::absorb_readings(const sim::PlannerView& view) {

@@ -31,7 +31,9 @@ void LawnmowerPlanner::start(const PlannerContext& context) {
     auto& follower = followers_[static_cast<std::size_t>(k)];
     const grid::Cell from = context.starts[static_cast<std::size_t>(k)];
     grid::DistanceService& distances = flights_.of(k);
-    follower.set_distances(&distances);
+    // Lanes are flown straight, through any long neighbour flight (a shorter way around it would
+    // leave the lane's cells unseen); only routes around no-fly zones follow the service.
+    follower.set_distances(distances.has_no_fly() ? &distances : nullptr);
     if (!distances.has_no_fly() || context.reach == nullptr) {
       follower.assign(sweep(partition_->owner, k, context.params.s1, from));
       continue;

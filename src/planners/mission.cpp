@@ -39,6 +39,9 @@ void add_no_fly(partition::PartitionRequest& request, const PlannerContext& cont
     request.allowed = context.reach->flyable;
     request.seen_from = context.reach->seen_from;
   }
+  if (context.distances != nullptr && context.distances->has_long_flights()) {
+    request.flights = context.distances->flight_table();
+  }
 }
 
 grid::DistanceService& distances_of(const PlannerContext& context,
@@ -74,7 +77,7 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   }
 
   DirectPartitionSource direct;
-  grid::DistanceService distances = world::make_distance_service(sim.reachability());
+  grid::DistanceService distances = world::make_distance_service(sim.reachability(), sim.flight_steps());
   PlannerContext context{hull,
                          params,
                          instance.prior,

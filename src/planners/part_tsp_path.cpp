@@ -40,6 +40,11 @@ void SegmentPath::advance(grid::Cell pos) {
 sim::Action SegmentPath::next_action(grid::Cell pos) const {
   if (finished()) return sim::Action::kHover;
   if (distances_ == nullptr) return sim::step_towards(pos, waypoints_[next_]);
+  // Along a segment (towards its exit, an odd waypoint) straight, through any long neighbour
+  // flight: a shorter way around it would leave the segment's cells unseen.
+  if (distances_->has_long_flights() && next_ % 2 == 1) {
+    return sim::step_towards(pos, waypoints_[next_]);
+  }
   return sim::step_towards(pos, distances_->next_step(pos, waypoints_[next_]));
 }
 

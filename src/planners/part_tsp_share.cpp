@@ -133,7 +133,7 @@ int plan_length(grid::Cell pos, std::span<const grid::Cell> waypoints) {
 }
 
 void flight_field(grid::DistanceService& distances, grid::Cell from, grid::Grid<int>& out) {
-  if (distances.has_no_fly()) {
+  if (distances.searched()) {
     out = distances.field(from);  // same size: the copy reuses out's storage
     return;
   }

@@ -43,6 +43,12 @@ std::string request_key(std::string_view partitioner, const OptionMap& options,
     key += "|seen_from";
     for (int v : r.seen_from.values()) key += fmt::format("|{}", v);
   }
+  if (!r.flights.empty()) {
+    key += "|flights|";
+    for (auto v : r.flights.east.values()) key += fmt::format("{},", v);
+    key += "|";
+    for (auto v : r.flights.north.values()) key += fmt::format("{},", v);
+  }
   return key;
 }
 

@@ -76,9 +76,10 @@ int SweepInspectPlanner::nearest_unknown(int k, grid::Cell pos,
   int best = -1;
   int best_d = std::numeric_limits<int>::max();
   grid::DistanceService& distances = *uav_distances_[static_cast<std::size_t>(k)];
-  // Flight distances are symmetric (4-neighbour, unit steps), so one search from here gives every
-  // candidate's; copied, because claimed_by_other's searches may reuse the service's cache slot.
-  const bool searched = distances.has_no_fly();
+  // Flight distances are symmetric (4-neighbour, each flight as long both ways), so one search from
+  // here gives every candidate's; copied, because claimed_by_other's searches may reuse the
+  // service's cache slot.
+  const bool searched = distances.searched();
   if (searched) from_here_ = distances.field(pos);
   for (int i : hull_cells_) {
     if (!unobserved(view, i)) continue;

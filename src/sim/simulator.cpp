@@ -7,6 +7,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::sim {
 
@@ -20,7 +21,8 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
       truth_(instance.truth),
       params_(params),
       starts_(starts.begin(), starts.end()),
-      uz_(params.plane_change_steps()) {
+      uz_(params.plane_change_steps()),
+      flights_(world::neighbour_flights(hull, params)) {
   const int n = params.uavs;
   if (starts.size() != static_cast<std::size_t>(n)) {
     throw LogicError(fmt::format("{} start cells for {}", starts.size(), plural(n, "UAV")));
@@ -149,6 +151,13 @@ void Simulator::step(std::span<const Action> actions) {
       continue;
     }
     if (!u.airborne) continue;  // landed at its site for good
+    if (u.flight_left > 0) {
+      // Still flying to the neighbour it moved to: a step on its plane without sensing.
+      --u.flight_left;
+      ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
+      use_battery(k, was_airborne);
+      continue;
+    }
     if (u.in_transit()) {
       ++count.steps_transit;
       if (--u.transit_left == 0) u.z = 3 - u.z;
@@ -181,11 +190,13 @@ void Simulator::step(std::span<const Action> actions) {
                           "position ({}, {}) at t = {}",
                           k, u.pos.x, u.pos.y, to_string(a), next.x, next.y, time_));
         }
+        u.flight_left = flights_.between(u.pos, next, u.z) - 1;
         u.pos = next;
         ++count.moves;
       }
     }
-    if (!u.in_transit()) ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
+    // A UAV is away only before the actions (handled above), so this is "not changing plane".
+    if (u.transit_left == 0) ++(u.z == 1 ? count.steps_z1 : count.steps_z2);
     use_battery(k, was_airborne);
   }
   ++time_;
@@ -271,6 +282,7 @@ grid::Cell Simulator::append_flight_home(std::size_t k) {
   path.resize(begin + static_cast<std::size_t>(total), AwayStep{site});
   if (path.size() > begin) path.back().flags = 0;
   u.transit_left = 0;
+  u.flight_left = 0;
   return site;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "hullinspect/core/plural.hpp"
 #include "hullinspect/grid/cell.hpp"
 
 namespace hullinspect::sim {
@@ -53,11 +54,13 @@ std::optional<std::string> battery_violation(const UavState& before, const UavSt
 }  // namespace
 
 std::optional<std::string> step_violation(const UavState& before, const UavState& after,
-                                          int plane_change_steps) {
+                                          int plane_change_steps,
+                                          const grid::FlightSteps& flights) {
   if (auto broken = battery_violation(before, after)) return broken;
   const bool same_place = before.pos == after.pos;
-  const bool unchanged =
-      same_place && before.z == after.z && before.transit_left == after.transit_left;
+  const bool unchanged = same_place && before.z == after.z &&
+                         before.transit_left == after.transit_left &&
+                         before.flight_left == after.flight_left;
   if (before.failed && !after.failed) return std::string("came back after it failed");
   if (after.failed) {
     if (!unchanged) return std::string("moved or changed plane while failed");
@@ -69,6 +72,19 @@ std::optional<std::string> step_violation(const UavState& before, const UavState
   if (before.away_left > 0 || after.away_left > 0) {
     if (moved > 1) return fmt::format("moved {} cells in one step", moved);
     return std::nullopt;
+  }
+  if (before.flight_left > 0) {
+    if (moved != 0 || after.z != before.z || after.transit_left != 0) {
+      return fmt::format("moved or changed plane with {} flight steps left", before.flight_left);
+    }
+    if (after.flight_left != before.flight_left - 1) {
+      return fmt::format("went from {} flight steps left to {}", before.flight_left,
+                         after.flight_left);
+    }
+    return std::nullopt;
+  }
+  if (after.flight_left > 0 && moved != 1) {
+    return fmt::format("has {} flight steps left without moving", after.flight_left);
   }
   if (before.in_transit()) {
     if (moved != 0) return std::string("moved while changing plane");
@@ -83,6 +99,14 @@ std::optional<std::string> step_violation(const UavState& before, const UavState
   if (moved == 1) {
     if (after.z != before.z || after.transit_left != 0) {
       return std::string("moved and changed plane in one step");
+    }
+    const int steps = flights.between(before.pos, after.pos, before.z);
+    if (after.flight_left != steps - 1) {
+      return fmt::format(
+          "moved from ({}, {}) to ({}, {}), a flight of {} on plane {}, with {} "
+          "flight steps left",
+          before.pos.x, before.pos.y, after.pos.x, after.pos.y, plural(steps, "step"), before.z,
+          after.flight_left);
     }
     return std::nullopt;
   }

@@ -24,7 +24,7 @@ void EndCosts::assign(const SegmentTsp& problem) {
   }
   at[static_cast<std::size_t>(2 * g_)] = problem.start;
   for (int a = 0; a < stride_; ++a) {
-    if (problem.distances != nullptr && problem.distances->has_no_fly()) {
+    if (problem.distances != nullptr && problem.distances->searched()) {
       // One field per row: distances are symmetric, and the service caches fields per source.
       const grid::Grid<int>& field = problem.distances->field(at[static_cast<std::size_t>(a)]);
       for (int b = 0; b < stride_; ++b) {

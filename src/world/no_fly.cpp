@@ -159,7 +159,9 @@ Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly,
   return r;
 }
 
-grid::DistanceService make_distance_service(const Reachability& reach) {
+grid::DistanceService make_distance_service(const Reachability& reach,
+                                            const grid::FlightSteps& flights) {
+  if (!flights.empty()) return grid::DistanceService(reach.flyable, flights.longer_plane());
   if (!reach.any_no_fly)
     return grid::DistanceService(reach.flyable.width(), reach.flyable.height());
   return grid::DistanceService(reach.flyable);

@@ -1,5 +1,6 @@
 #include "hullinspect/world/standoff_surface.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 
@@ -43,6 +44,39 @@ StandoffSurface standoff_surface(const HullGeometry& g) {
     }
   }
   return out;
+}
+
+}  // namespace hullinspect::world
+
+namespace hullinspect::world {
+
+namespace {
+// Divided, not multiplied, by the scale: 0.09 prints as 0.09, not 0.09000000000000001.
+double rounded(double v, double scale) {
+  return std::round(v * scale) / scale;
+}
+}  // namespace
+
+grid::StandoffPoints standoff_points(const HullGeometry& g) {
+  grid::StandoffPoints out;
+  const StandoffSurface s = standoff_surface(g);
+  if (s.point.size() == 0) return out;
+  out.point = grid::Grid<std::array<double, 3>>(s.point.width(), s.point.height());
+  out.normal = grid::Grid<std::array<double, 3>>(s.point.width(), s.point.height());
+  for (int i = 0; i < s.point.size(); ++i) {
+    const Point3 p = s.point[i];
+    const Normal n = s.normal[i];
+    out.point[i] = {rounded(p.x, 1e4), rounded(p.y, 1e4), rounded(p.z, 1e4)};
+    out.normal[i] = {rounded(n.x, 1e6), rounded(n.y, 1e6), rounded(n.z, 1e6)};
+  }
+  return out;
+}
+
+grid::FlightSteps neighbour_flights(const HullMask& hull, const MissionParams& params) {
+  const HullGeometry* g = hull.geometry();
+  if (g == nullptr || !g->unrolled()) return {};
+  return grid::flight_steps(standoff_points(*g), params.cell_size_m, params.theta_deg, params.s1,
+                            params.s2);
 }
 
 }  // namespace hullinspect::world

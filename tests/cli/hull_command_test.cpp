@@ -75,6 +75,26 @@ TEST(HullImport, WritesAnUnrolledHullThatRunAccepts) {
   fs::remove_all(dir);
 }
 
+// With the transom the grid closes at a seam that no flight links: the import says so.
+TEST(HullImport, SaysTheTransomSeamIsNotLinked) {
+  const auto dir = make_temp_dir("hull-import-transom");
+  const std::string stl = wigley_stl(WigleyHull{}).string();
+  const auto both = run_cli({"hull", "import", stl, "--sides", "both", "--out", dir + "/both"});
+  ASSERT_EQ(both.status, 0) << both.err;
+  EXPECT_EQ(both.out.find("seam"), std::string::npos) << both.out;
+  const auto r = run_cli(
+      {"hull", "import", stl, "--sides", "both", "--include", "transom", "--out", dir + "/closed"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto json = nlohmann::json::parse(std::ifstream(dir + "/closed.json"));
+  const int last = json["width"].get<int>() - 1;
+  EXPECT_NE(r.out.find("  seam: columns 0 and " + std::to_string(last) +
+                       " meet at the transom and are not linked: flights between them go around "
+                       "the bow\n"),
+            std::string::npos)
+      << r.out;
+  fs::remove_all(dir);
+}
+
 struct BadImport {
   std::vector<std::string> args;
   std::string message;  // stderr after "hullinspect: "

@@ -4,6 +4,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -16,26 +19,33 @@
 #include "hullinspect/planners/mission.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/instance.hpp"
+#include "hullinspect/world/mesh_hull.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
+#include "support/mesh_fixtures.hpp"
 
 namespace hullinspect::io {
 namespace {
 
 using nlohmann::json;
 
+// A lawnmower mission on `hull`, recorded.
+json record_lawnmower(const world::HullMask& hull, const world::MissionParams& params) {
+  const auto instance =
+      world::generate_instance(hull, world::CorrosionParams::homogeneous(hull.width(), 0.01, 5), 5);
+  auto planner = planners::make_planner("lawnmower");
+  TraceRecorder recorder(instance, json{{"algorithm", "lawnmower"}});
+  planners::MissionOptions options;
+  options.observers.push_back(&recorder);
+  const auto result = planners::run_mission(hull, instance, params, *planner, options);
+  return recorder.finish(result);
+}
+
 // A lawnmower mission of 4 UAVs on the default hull, recorded.
 const json& recorded_trace() {
   static const json trace = [] {
-    const auto& hull = world::default_hull();
     world::MissionParams params;
     params.uavs = 4;
-    const auto instance = world::generate_instance(
-        hull, world::CorrosionParams::homogeneous(hull.width(), 0.01, 5), 5);
-    auto planner = planners::make_planner("lawnmower");
-    TraceRecorder recorder(instance, json{{"algorithm", "lawnmower"}});
-    planners::MissionOptions options;
-    options.observers.push_back(&recorder);
-    const auto result = planners::run_mission(hull, instance, params, *planner, options);
-    return recorder.finish(result);
+    return record_lawnmower(world::default_hull(), params);
   }();
   return trace;
 }
@@ -301,6 +311,60 @@ TEST(TraceReader, ChecksTheSurfaceOfAnUnrolledHull) {
               t["ship_frame"]["surface"][4][5] = {1.0, 2.0, 1e9};
             }),
             "mission.json: ship_frame.surface[4][5]: expected metres in [-100000, 100000]");
+}
+
+// A lawnmower mission of 3 UAVs on the unrolled Wigley hull, recorded: its neighbour flights
+// around the stem take several steps (docs/model.md "Neighbour flights").
+world::HullMask unrolled_wigley() {
+  world::MeshImportOptions o;
+  o.side = world::HullSide::both;
+  o.cell_size = 1.0;
+  return world::import_mesh_file(testing::wigley_stl(testing::WigleyHull{}), o).hull;
+}
+
+world::MissionParams unrolled_params() {
+  world::MissionParams params;
+  params.uavs = 3;
+  params.cell_size_m = 1.0;
+  return params;
+}
+
+const json& unrolled_trace() {
+  static const json trace = record_lawnmower(unrolled_wigley(), unrolled_params());
+  return trace;
+}
+
+TEST(TraceReader, AUavStaysPutWhileItFliesToADistantNeighbour) {
+  json trace = unrolled_trace();
+  EXPECT_NO_THROW(validate_trace(trace, "mission.json"));
+  // The first move of a flight longer than one step.
+  const grid::FlightSteps flights = world::neighbour_flights(unrolled_wigley(), unrolled_params());
+  auto& frames = trace["frames"];
+  const auto x = [&](std::size_t i, std::size_t k) { return frames[i]["u"][5 * k].get<int>(); };
+  const auto y = [&](std::size_t i, std::size_t k) { return frames[i]["u"][5 * k + 1].get<int>(); };
+  const std::size_t uavs = frames[0]["u"].size() / 5;
+  std::size_t at = 0, uav = 0;
+  for (std::size_t i = 1; i + 1 < frames.size() && at == 0; ++i) {
+    for (std::size_t k = 0; k < uavs && at == 0; ++k) {
+      const bool moved = std::abs(x(i, k) - x(i - 1, k)) + std::abs(y(i, k) - y(i - 1, k)) == 1;
+      const int z = frames[i - 1]["u"][5 * k + 2].get<int>();
+      if (moved && flights.between({x(i - 1, k), y(i - 1, k)}, {x(i, k), y(i, k)}, z) > 1) {
+        at = i;
+        uav = k;
+      }
+    }
+  }
+  ASSERT_GT(at, 0u) << "no long flight in the mission: the test proves nothing";
+  // Moving on one frame early (back where it came from) breaks the flight.
+  frames[at + 1]["u"][5 * uav] = x(at - 1, uav);
+  frames[at + 1]["u"][5 * uav + 1] = y(at - 1, uav);
+  try {
+    validate_trace(trace, "mission.json");
+    ADD_FAILURE() << "accepted a UAV that moved mid-flight";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr(fmt::format(
+                              "frames[{}].u: UAV {} moved or changed plane with", at + 1, uav)));
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
 #include "hullinspect/world/scenario.hpp"
 #include "support/mesh_fixtures.hpp"
@@ -47,6 +48,41 @@ TEST(MeshHullMissions, EveryPlannerCompletesOnAWigleyHull) {
   world::UserMaps maps;
   maps.truth = truth;
   run_every_planner(hull, 3, 7, maps);
+}
+
+// Counts the steps some UAV spent flying to a distant neighbour.
+struct LongFlights final : MissionObserver {
+  long long steps = 0;
+  void on_start(const sim::Simulator&, const Planner&) override {}
+  void on_step(const sim::Simulator& sim, const Planner&) override {
+    for (const sim::UavState& u : sim.uavs()) steps += u.flight_left > 0 ? 1 : 0;
+  }
+};
+
+TEST(MeshHullMissions, EveryRegisteredPlannerFliesTheUnrolledHullsRealFlights) {
+  world::MeshImportOptions o;
+  o.side = world::HullSide::both;
+  o.cell_size = 1.0;
+  const world::HullMask hull =
+      world::import_mesh_file(testing::wigley_stl(testing::WigleyHull{}), o).hull;
+  for (const auto& info : planner_registry()) {
+    SCOPED_TRACE(info.name);
+    MissionSpec spec;
+    spec.algorithm = info.name;
+    spec.params.uavs = 3;
+    spec.params.cell_size_m = hull.geometry()->cell_size;
+    spec.seed = 5;
+    spec.corrosion = world::scenario("imperfect").corrosion(hull.width());
+    testing::MissionChecker checker;
+    LongFlights flights;
+    MissionOptions options;
+    options.observers = {&checker, &flights};
+    const auto r = run_mission(spec, hull, options);
+    EXPECT_TRUE(r.complete);
+    EXPECT_TRUE(checker.ok());
+    // Around the bow the UAVs cannot avoid flights longer than one step.
+    EXPECT_GT(flights.steps, 0);
+  }
 }
 
 TEST(MeshHullMissions, EveryPlannerCompletesOnTheDtc) {

@@ -85,7 +85,8 @@ void MissionChecker::on_step(const sim::Simulator& sim, const planners::Planner&
   for (std::size_t k = 0; k < uavs.size(); ++k) {
     const auto& before = last_uavs_[k];
     const auto& after = uavs[k];
-    if (auto broken = sim::step_violation(before, after, sim.plane_change_steps())) {
+    if (auto broken =
+            sim::step_violation(before, after, sim.plane_change_steps(), sim.flight_steps())) {
       fail(fmt::format("t={} UAV {} {}", t, k, *broken));
     }
     if (auto broken = sim::state_violation(after, sim.plane_change_steps())) {

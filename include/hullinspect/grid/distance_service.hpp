@@ -1,12 +1,17 @@
 #pragma once
 // The one distance service every planner uses (docs/model.md, "No-fly zones"): shortest
 // 4-connected path lengths over the positions a UAV may occupy. Built once per mission from the
-// allowed-position mask. Without no-fly positions every answer is the Manhattan one, computed in
-// O(1) without any search, so results are identical to a world without the service.
+// allowed-position mask. Without no-fly positions or long neighbour flights every answer is the
+// Manhattan one, computed in O(1) without any search, so results are identical to a world without
+// the service.
 //
 // Distances between *cells* (targets such as a corroded cell behind a mooring line) follow one
 // rule: a path's interior must be allowed, its two end cells need not be. For two allowed
 // positions this is exactly the shortest flight.
+//
+// Neighbour flights (grid/flight_steps.hpp): on a hull where some neighbours are several steps
+// apart, a path's length is the sum of its flights' steps, searched by Dijkstra over those small
+// integer weights. Without such a table nothing changes.
 //
 // Not thread-safe: one service per mission (the fields are cached per source).
 
@@ -15,6 +20,7 @@
 #include <vector>
 
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/grid/grid.hpp"
 
 namespace hullinspect::grid {
@@ -32,18 +38,30 @@ class DistanceService {
   DistanceService(int width, int height);
   /// `allowed[i] != 0`: a UAV may be at cell i.
   explicit DistanceService(Grid<std::uint8_t> allowed, int cached_fields = kDefaultCachedFields);
+  /// As above, with neighbour flights of `steps` steps (an empty table: every flight one step).
+  DistanceService(Grid<std::uint8_t> allowed, EdgeSteps steps,
+                  int cached_fields = kDefaultCachedFields);
 
   int width() const { return allowed_.width(); }
   int height() const { return allowed_.height(); }
   /// True when some position is not allowed (distances then come from searches).
   bool has_no_fly() const { return no_fly_count_ > 0; }
   int no_fly_count() const { return no_fly_count_; }
+  /// True when some neighbour flight takes more than one step.
+  bool has_long_flights() const { return !steps_.empty(); }
+  /// True when distances are not the Manhattan ones (no-fly positions or long flights), so that
+  /// they come from searches (field()) rather than grid::manhattan().
+  bool searched() const { return has_no_fly() || has_long_flights(); }
+  /// The steps of every neighbour flight (empty: one step each).
+  const EdgeSteps& flight_table() const { return steps_; }
+  /// Steps of the flight from `a` to its 4-neighbour `b`.
+  int flight(Cell a, Cell b) const { return steps_.between(a, b); }
   bool allowed(Cell c) const { return allowed_.contains(c) && allowed_[c] != 0; }
   bool allowed(int index) const { return allowed_[index] != 0; }
   /// 1 where a UAV may be.
   const Grid<std::uint8_t>& allowed_mask() const { return allowed_; }
 
-  /// Shortest path length from a to b (interior allowed); Manhattan without no-fly positions;
+  /// Shortest path length from a to b (interior allowed), in steps; Manhattan when not searched();
   /// kUnreachable when no such path exists.
   int distance(Cell a, Cell b);
 
@@ -85,6 +103,8 @@ class DistanceService {
   /// Breadth-first search from the seeds in `scratch_.queue[0, seeds)` (already 0 in `out`):
   /// expands allowed cells and the seeds, gives every other cell its distance as a path end.
   void search(Grid<int>& out, std::size_t seeds);
+  /// The same search with neighbour flights' steps as weights (Dial's bucket queue).
+  void search_weighted(Grid<int>& out, std::size_t seeds);
 
   Grid<std::uint8_t> allowed_;
   int no_fly_count_ = 0;
@@ -93,6 +113,9 @@ class DistanceService {
   long long clock_ = 0;
   long long searches_ = 0;
   BfsScratch scratch_;
+  EdgeSteps steps_;
+  int longest_flight_ = 1;
+  std::vector<std::vector<int>> buckets_;  // search_weighted's queue: distance mod (longest + 1)
 };
 
 /// Exact Manhattan (4-neighbour, obstacle-free) distance from every cell to the nearest cell with

@@ -10,6 +10,7 @@
 
 #include "hullinspect/core/options.hpp"
 #include "hullinspect/core/registry.hpp"
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/world/hull.hpp"
 
@@ -30,6 +31,9 @@ struct PartitionRequest {
   /// (world::Reachability::seen_from). When the starts lie in several flight components, the
   /// partition is made per component (partition/flight_split.hpp). Empty = one flight space.
   grid::Grid<int> seen_from;
+  /// Unrolled hulls only: the steps of each neighbour flight (grid/flight_steps.hpp), which DARP's
+  /// initial distances then add up. Empty = every flight one step.
+  grid::EdgeSteps flights;
 };
 
 struct Partition {

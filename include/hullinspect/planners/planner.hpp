@@ -62,8 +62,8 @@ struct PlannerContext {
 };
 
 /// Adds the mission's no-fly zones to a partition request (DARP's initial distances then follow
-/// the shortest allowed flights, and each flight component's cells go to its own UAVs);
-/// nothing without no-fly zones.
+/// the shortest allowed flights, and each flight component's cells go to its own UAVs), and the
+/// distance service's neighbour flights on an unrolled hull; nothing without either.
 void add_no_fly(partition::PartitionRequest& request, const PlannerContext& context);
 
 /// The context's distance service, or `fallback` (reset to an obstacle-free one of the hull's

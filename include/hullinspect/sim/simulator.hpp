@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/sim/mission_result.hpp"
 #include "hullinspect/sim/planner_view.hpp"
@@ -29,7 +30,9 @@ class Simulator {
   Simulator(const world::HullMask& hull, const world::Instance& instance,
             const world::MissionParams& params);
 
-  /// Applies one action per UAV (ignored for UAVs in transit or failed), senses, advances t.
+  /// Applies one action per UAV (ignored for UAVs in transit or failed), senses, advances t. A move
+  /// to a neighbour k steps away (flight_steps()) arrives at once and keeps the UAV in transit for
+  /// k − 1 more steps.
   /// Throws LogicError if an action would leave the grid or enter a no-fly position (a planner
   /// error), the mission is already finished, or, with strict_separation, two UAVs conflict.
   void step(std::span<const Action> actions);
@@ -64,6 +67,8 @@ class Simulator {
   /// The start cell of each UAV.
   std::span<const grid::Cell> starts() const { return starts_; }
   int plane_change_steps() const { return uz_; }
+  /// Steps of each neighbour flight per plane (empty: every flight one step).
+  const grid::FlightSteps& flight_steps() const { return flights_; }
   /// Flyable positions and the hull cells that can be inspected / detected (computed at t = 0).
   const world::Reachability& reachability() const { return reach_; }
   /// True when (x, y) is a no-fly position of the mission.
@@ -107,6 +112,7 @@ class Simulator {
   std::vector<grid::Cell> starts_;
   world::Reachability reach_;
   int uz_ = 1;
+  grid::FlightSteps flights_;
   int time_ = 0;
 
   grid::Grid<std::int8_t> map_;

@@ -49,13 +49,18 @@ struct UavState {
   /// on the ground, taking off, flying out to its start cell, or flying home and landing after the
   /// hull is complete. Like a plane change, the UAV cannot act and senses nothing meanwhile.
   int away_left = 0;
+  /// Steps left of a neighbour flight longer than one step (docs/model.md "Neighbour flights"):
+  /// the UAV is already at its new position and, like a plane change, cannot act and senses
+  /// nothing until the flight's steps are flown.
+  int flight_left = 0;
   /// False while on the ground at a launch site: before the first take-off, swapping a battery,
   /// and after the last landing. Always true without launch sites (the paper's model).
   bool airborne = true;
   /// Steps of flight left on the battery (docs/model.md, "Batteries and sorties"); −1 unlimited.
   int battery_left = -1;
-  /// True while the UAV cannot act: changing plane, or away at its launch site.
-  bool in_transit() const { return transit_left > 0 || away_left > 0; }
+  /// True while the UAV cannot act: changing plane, flying to a distant neighbour, or away at its
+  /// launch site.
+  bool in_transit() const { return transit_left > 0 || away_left > 0 || flight_left > 0; }
 };
 
 /// Event bits of a reading.

@@ -61,8 +61,10 @@ inline constexpr std::uint8_t kReachZ1 = 2;
 Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly, int s1, int s2,
                                   std::span<const grid::Cell> starts);
 
-/// The distance service of a mission: over the flyable positions.
-grid::DistanceService make_distance_service(const Reachability& reach);
+/// The distance service of a mission: over the flyable positions, each neighbour flight taking the
+/// longer of its two planes' steps in `flights` (empty: one step each).
+grid::DistanceService make_distance_service(const Reachability& reach,
+                                            const grid::FlightSteps& flights = {});
 
 /// Flat indices of the hull cells with (reach & bit) == 0, in increasing order.
 std::vector<int> unreachable_cells(const HullMask& hull, const Reachability& reach,

@@ -6,8 +6,10 @@
 // (else of the nearest column that has one) raised or lowered to the row's height, with that
 // point's normal: the flight continues the surface's stand-off straight up, down or along.
 
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/world/hull_geometry.hpp"
+#include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::world {
 
@@ -19,5 +21,15 @@ struct StandoffSurface {
 /// The stand-off surface of every grid position of an unrolled geometry (g.unrolled()); empty
 /// grids for any other geometry.
 StandoffSurface standoff_surface(const HullGeometry& g);
+
+/// standoff_surface(g) in doubles, rounded as a trace's `ship_frame` records it (points to 0.1 mm,
+/// normals to 1e-6), so that a trace's reader computes the same neighbour flights as the
+/// simulator. Empty for a geometry that is not unrolled.
+grid::StandoffPoints standoff_points(const HullGeometry& g);
+
+/// The neighbour flights of a mission (docs/model.md "Neighbour flights"): on an unrolled hull from
+/// its stand-off points at the planes of `params` (s1, s2, θ, cell size); empty for any other hull
+/// and whenever every neighbour is one step away.
+grid::FlightSteps neighbour_flights(const HullMask& hull, const MissionParams& params);
 
 }  // namespace hullinspect::world

@@ -1,0 +1,146 @@
+// Neighbour flights (grid/flight_steps.hpp): how many steps a flight between stand-off positions
+// takes, and the distance service's shortest paths when some flights take several steps.
+#include "hullinspect/grid/flight_steps.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "hullinspect/grid/distance_service.hpp"
+
+namespace hullinspect::grid {
+namespace {
+
+TEST(FlightSteps, AFlightTakesItsLengthInCellsRoundedUpBeyondTheSlack) {
+  EXPECT_EQ(flight_steps_for(0.0), 1);
+  EXPECT_EQ(flight_steps_for(1.0), 1);
+  EXPECT_EQ(flight_steps_for(1.0 + kFlightSlackCells), 1);
+  EXPECT_EQ(flight_steps_for(1.1), 2);
+  EXPECT_EQ(flight_steps_for(3.5), 4);
+  EXPECT_EQ(flight_steps_for(1e9), kMaxFlightSteps);
+}
+
+// Three positions in a row on a right-angled corner: the surface turns by 90° between x = 1 and
+// x = 2, so the stand-off positions there lie ζ·√2 apart, farther on the outer plane.
+StandoffPoints corner() {
+  StandoffPoints p;
+  p.point = Grid<std::array<double, 3>>(3, 2);
+  p.normal = Grid<std::array<double, 3>>(3, 2);
+  for (int y = 0; y < 2; ++y) {
+    p.point(0, y) = {-1.0, 0.0, double(y)};
+    p.point(1, y) = {0.0, 0.0, double(y)};
+    p.point(2, y) = {0.0, 0.0, double(y)};  // the corner's other face starts at the same edge
+    p.normal(0, y) = {0.0, -1.0, 0.0};
+    p.normal(1, y) = {0.0, -1.0, 0.0};
+    p.normal(2, y) = {1.0, 0.0, 0.0};
+  }
+  return p;
+}
+
+TEST(FlightSteps, AroundACornerTheOuterPlaneFliesFarther) {
+  // θ = 90°: ζ = s·cell / 2, so ζ1 = 2.5 and ζ2 = 3.5 cells of 1 m.
+  const FlightSteps f = flight_steps(corner(), 1.0, 90.0, 5, 7);
+  ASSERT_FALSE(f.empty());
+  EXPECT_EQ(f.between({0, 0}, {1, 0}, 1), 1);
+  EXPECT_EQ(f.between({1, 0}, {2, 0}, 1), static_cast<int>(std::ceil(2.5 * std::sqrt(2.0))));
+  EXPECT_EQ(f.between({2, 0}, {1, 0}, 2), static_cast<int>(std::ceil(3.5 * std::sqrt(2.0))));
+  EXPECT_EQ(f.between({1, 0}, {1, 1}, 2), 1);  // straight up the face
+  EXPECT_EQ(f.longer_plane().between({1, 1}, {2, 1}), 5);
+  // A flat surface: every flight one step, so the table is empty and nothing pays for it.
+  StandoffPoints flat = corner();
+  flat.point(2, 0) = {1.0, 0.0, 0.0};
+  flat.point(2, 1) = {1.0, 0.0, 1.0};
+  flat.normal(2, 0) = flat.normal(2, 1) = {0.0, -1.0, 0.0};
+  EXPECT_TRUE(flight_steps(flat, 1.0, 90.0, 5, 7).empty());
+}
+
+// A tiny deterministic generator for test grids.
+struct Lcg {
+  std::uint64_t state;
+  int below(int n) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
+  }
+};
+
+// Reference: relax d[n] = min(d[n], d[c] + steps(c, n)) over the whole grid until nothing
+// changes; only allowed cells and the source pass a path on.
+Grid<int> relaxed(const Grid<std::uint8_t>& allowed, const EdgeSteps& steps, Cell source) {
+  Grid<int> d(allowed.width(), allowed.height(), kUnreachable);
+  d[source] = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int i = 0; i < d.size(); ++i) {
+      const Cell c = d.cell(i);
+      if (d[i] >= kUnreachable || (allowed[i] == 0 && c != source)) continue;
+      for (const Cell n :
+           {Cell{c.x + 1, c.y}, Cell{c.x - 1, c.y}, Cell{c.x, c.y + 1}, Cell{c.x, c.y - 1}}) {
+        if (!d.contains(n)) continue;
+        const int via = d[i] + steps.between(c, n);
+        if (via < d[n]) {
+          d[n] = via;
+          changed = true;
+        }
+      }
+    }
+  }
+  return d;
+}
+
+TEST(FlightSteps, TheDistanceServiceAddsUpTheFlightsOfItsShortestPaths) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    SCOPED_TRACE(seed);
+    Lcg rng{seed};
+    const int w = 9, h = 6;
+    Grid<std::uint8_t> allowed(w, h, 1);
+    EdgeSteps steps{Grid<std::uint8_t>(w, h, 1), Grid<std::uint8_t>(w, h, 1)};
+    for (int i = 0; i < allowed.size(); ++i) {
+      if (seed % 2 == 0 && rng.below(100) < 15) allowed[i] = 0;
+      if (rng.below(4) == 0) steps.east[i] = static_cast<std::uint8_t>(2 + rng.below(6));
+      if (rng.below(4) == 0) steps.north[i] = static_cast<std::uint8_t>(2 + rng.below(6));
+    }
+    DistanceService service(allowed, steps);
+    ASSERT_TRUE(service.searched());
+    for (int s = 0; s < allowed.size(); s += 7) {
+      const Cell source = allowed.cell(s);
+      const Grid<int> expected = relaxed(allowed, steps, source);
+      const Grid<int> field = service.field(source);
+      ASSERT_EQ(field, expected) << "from (" << source.x << ", " << source.y << ")";
+      // Following next_step from every allowed position flies exactly the distance.
+      for (int t = 0; t < allowed.size(); ++t) {
+        const Cell from = allowed.cell(t);
+        if (!service.allowed(from) || !service.allowed(source) || expected[t] >= kUnreachable)
+          continue;
+        std::vector<Cell> path;
+        ASSERT_TRUE(service.append_path(from, source, path));
+        int flown = 0;
+        Cell at = from;
+        for (const Cell next : path) {
+          flown += steps.between(at, next);
+          at = next;
+        }
+        EXPECT_EQ(flown, expected[t]);
+      }
+    }
+  }
+}
+
+TEST(FlightSteps, ALongFlightIsFlownAroundWhenThatIsShorter) {
+  // Two rows; in the lower one (1, 0) → (2, 0) takes 5 steps: the path climbs to the upper row.
+  EdgeSteps steps{Grid<std::uint8_t>(4, 2, 1), Grid<std::uint8_t>(4, 2, 1)};
+  steps.east(1, 0) = 5;
+  DistanceService service(Grid<std::uint8_t>(4, 2, 1), steps);
+  EXPECT_EQ(service.distance({0, 0}, {3, 0}), 5);  // up, three east, down
+  EXPECT_EQ(service.next_step({1, 0}, {2, 0}), (Cell{1, 1}));
+  EXPECT_EQ(service.distance({1, 0}, {2, 0}), 3);
+  // Without a table the service is the Manhattan one and searches nothing.
+  DistanceService plain(Grid<std::uint8_t>(4, 2, 1), EdgeSteps{});
+  EXPECT_FALSE(plain.searched());
+  EXPECT_EQ(plain.distance({0, 0}, {3, 0}), 3);
+  EXPECT_EQ(plain.searches(), 0);
+}
+
+}  // namespace
+}  // namespace hullinspect::grid
