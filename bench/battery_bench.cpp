@@ -8,8 +8,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include "mission_loop.hpp"
+
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/planners/partition_cache.hpp"
 #include "hullinspect/world/scenario.hpp"
 
 namespace {
@@ -26,19 +27,7 @@ void BM_MissionWithBattery(benchmark::State& state) {
   if (state.range(2) > 0) spec.params.endurance_s = static_cast<double>(state.range(2));
   spec.params.s2 = 7;
   spec.corrosion = world::scenario("perfect").corrosion(hull.width());
-  planners::PartitionCache partitions;
-  planners::MissionOptions options;
-  options.partitions = &partitions;
-  std::uint64_t seed = 1;
-  long long steps = 0;
-  for (auto _ : state) {
-    spec.seed = seed++ % 10 + 1;
-    const auto r = planners::run_mission(spec, hull, options);
-    steps += r.steps;
-    benchmark::DoNotOptimize(r.t_m);
-  }
-  state.counters["steps/mission"] =
-      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kAvgIterations);
+  const long long steps = bench::time_missions(state, spec, 10);
   state.counters["us/step"] = benchmark::Counter(
       static_cast<double>(steps) * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }

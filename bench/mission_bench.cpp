@@ -8,8 +8,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include "mission_loop.hpp"
+
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/planners/partition_cache.hpp"
 #include "hullinspect/world/scenario.hpp"
 
 namespace {
@@ -25,19 +26,7 @@ void run_missions(benchmark::State& state, const std::string& algorithm,
   spec.params.uavs = static_cast<int>(state.range(0));
   spec.params.s2 = 7;
   spec.corrosion = world::scenario(scenario).corrosion(hull.width());
-  planners::PartitionCache partitions;
-  planners::MissionOptions options;
-  options.partitions = &partitions;
-  std::uint64_t seed = 1;
-  long long steps = 0;
-  for (auto _ : state) {
-    spec.seed = seed++ % 50 + 1;
-    const auto r = planners::run_mission(spec, hull, options);
-    steps += r.steps;
-    benchmark::DoNotOptimize(r.t_m);
-  }
-  state.counters["steps/mission"] =
-      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kAvgIterations);
+  bench::time_missions(state, spec, 50);
   state.counters["missions/s"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }

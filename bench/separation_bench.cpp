@@ -7,8 +7,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include "mission_loop.hpp"
+
 #include "hullinspect/planners/mission_spec.hpp"
-#include "hullinspect/planners/partition_cache.hpp"
 #include "hullinspect/world/scenario.hpp"
 
 namespace {
@@ -24,19 +25,7 @@ void BM_MissionWithSeparation(benchmark::State& state) {
   spec.params.separation = static_cast<int>(state.range(2));
   spec.params.s2 = 7;
   spec.corrosion = world::scenario("perfect").corrosion(hull.width());
-  planners::PartitionCache partitions;
-  planners::MissionOptions options;
-  options.partitions = &partitions;
-  std::uint64_t seed = 1;
-  long long steps = 0;
-  for (auto _ : state) {
-    spec.seed = seed++ % 10 + 1;
-    const auto r = planners::run_mission(spec, hull, options);
-    steps += r.steps;
-    benchmark::DoNotOptimize(r.t_m);
-  }
-  state.counters["steps/mission"] =
-      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kAvgIterations);
+  bench::time_missions(state, spec, 10);
 }
 BENCHMARK(BM_MissionWithSeparation)
     ->ArgsProduct({{0, 1}, {8, 32}, {0, 1, 3}})
