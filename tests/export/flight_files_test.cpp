@@ -511,7 +511,8 @@ TEST(PreflightReport, SeparationIsTheSmallestGapOfTheTrace) {
     for (const auto& s : report["sorties"]) EXPECT_TRUE(s["battery_margin_s"].is_null());
     const auto md = io::read_file(dir + "/report/preflight.md");
     EXPECT_NE(md.find("## Separation"), std::string::npos);
-    EXPECT_NE(md.find("Battery margin: not computed"), std::string::npos);
+    EXPECT_NE(md.find("Battery margin: none (unlimited flight"), std::string::npos);
+    EXPECT_EQ(report["battery"]["limited"], false);
     fs::remove_all(dir);
   }
 }
