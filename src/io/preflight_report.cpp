@@ -198,6 +198,19 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
                       plan.no_fly.size(), fmt::join(dropped, ", ")));
     }
   }
+  // Heights the format means above mean sea level but which are ellipsoidal: no geoid model is
+  // installed (docs/export.md "Altitudes: which frame each file is in").
+  std::vector<std::string> sea_level;
+  for (const auto f : formats) {
+    if (f == ExportFormat::kQgc || f == ExportFormat::kWpl) sea_level.emplace_back(to_string(f));
+  }
+  if (!sea_level.empty()) {
+    warnings.push_back(fmt::format(
+        "{}: the planned home's altitude is its height above the WGS-84 ellipsoid, where the "
+        "format means mean sea level (no geoid model); the waypoints are heights above home, "
+        "which the vehicle takes at arming",
+        fmt::join(sea_level, ", ")));
+  }
   std::vector<std::string> separation_warnings;
   report["separation"] = preflight_separation(trace, plan, separation_warnings);
   for (auto& w : separation_warnings) warnings.push_back(std::move(w));
