@@ -23,15 +23,16 @@ namespace {
 
 using nlohmann::json;
 
-// Batteries of 600 s (swaps of 30 s) and two launch sites on the bottom edge of the default hull.
+// Batteries of 400 s (swaps of 30 s) and two launch sites 20 cells apart in the middle of the
+// default hull's bottom edge.
 planners::MissionSpec battery_mission(const std::string& algorithm, int uavs, int separation) {
   const auto& hull = world::default_hull();
   planners::MissionSpec spec;
   spec.algorithm = algorithm;
   spec.seed = 2;
   spec.params.uavs = uavs;
-  spec.params.launch_sites = {{hull.width() / 4, 0}, {3 * hull.width() / 4, 0}};
-  spec.params.endurance_s = 600;
+  spec.params.launch_sites = {{hull.width() / 2 - 10, 0}, {hull.width() / 2 + 10, 0}};
+  spec.params.endurance_s = 400;
   spec.params.swap_time_s = 30;
   spec.params.separation = separation;
   return spec;
@@ -126,7 +127,7 @@ TEST(TraceMissionRules, ABatteryBelowZeroWhileAirborne) {
   const auto i =
       first_frame(t, 1, 0, [&](std::size_t f) { return value(t, f, 0, kAirborne) == 1; });
   EXPECT_EQ(problem_after([&](json& d) { d["frames"][i]["u"][kBattery] = -1; }),
-            fmt::format("m.json: frames[{}].u[6]: -1 is outside [0, 600]", i));
+            fmt::format("m.json: frames[{}].u[6]: -1 is outside [0, 400]", i));
 }
 
 TEST(TraceMissionRules, AnEmptyBatteryThatFliesOn) {
@@ -192,14 +193,14 @@ TEST(TraceMissionRules, ASwapShorterThanTheSwapTime) {
   }
   --k;
   ASSERT_GT(i, 0U) << "no swap";
-  EXPECT_EQ(problem_after([&](json& d) { d["frames"][i - 1]["u"][kFields * k + kBattery] = 600; }),
+  EXPECT_EQ(problem_after([&](json& d) { d["frames"][i - 1]["u"][kFields * k + kBattery] = 400; }),
             fmt::format("m.json: frames[{}].u: UAV {} swapped its battery after 29 steps on the "
                         "ground, less than the swap time of 30 steps",
                         i - 1, k));
   // A new battery that is not full.
-  EXPECT_EQ(problem_after([&](json& d) { d["frames"][i]["u"][kFields * k + kBattery] = 599; }),
-            fmt::format("m.json: frames[{}].u: UAV {} swapped its battery to 599 steps, not the "
-                        "endurance 600",
+  EXPECT_EQ(problem_after([&](json& d) { d["frames"][i]["u"][kFields * k + kBattery] = 399; }),
+            fmt::format("m.json: frames[{}].u: UAV {} swapped its battery to 399 steps, not the "
+                        "endurance 400",
                         i, k));
 }
 
@@ -242,7 +243,7 @@ TEST(TraceMissionRules, TwoUavsCloserThanTheSeparation) {
 TEST(TraceMissionRules, ALandingBelowTheReserve) {
   // With a reserve above what UAV k had left at a landing, the landing breaks it.
   const json& t = lawnmower_trace();
-  int least = 600;
+  int least = 400;
   for (std::size_t f = 1; f < t["frames"].size(); ++f) {
     for (std::size_t k = 0; k < 2; ++k) {
       if (value(t, f - 1, k, kAirborne) == 1 && value(t, f, k, kAirborne) == 0)
