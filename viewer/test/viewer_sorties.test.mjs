@@ -180,3 +180,31 @@ test('a trace of the paper\'s model has neither the flight nor the battery colum
   assert.equal(await page.$$eval('.gauge', (g) => g.length), 0);
   await page.close();
 });
+
+test('the 3D view draws no UAV on the ground or away on the hull, nor its line of sight', async () => {
+  // The DTC hull (a mesh, so a 3D view), 8 UAVs from two sites on the quay, batteries of 1500 s.
+  const dtcTrace = path.join(OUT, 'dtc-sorties.json');
+  const dtcHtml = path.join(OUT, 'dtc-sorties.html');
+  cli(['run', '--hull', 'dtc', '-a', 'sweep-inspect', '-n', '8', '--seed', '1', '--launch', '186,0',
+       '--launch', '559,0', '--endurance', '1500', '--swap-time', '90', '--trace', dtcTrace]);
+  cli(['view', dtcTrace, '--3d', '--out', dtcHtml]);
+  const dtc = JSON.parse(fs.readFileSync(dtcTrace, 'utf8'));
+  const offHull = (t) => Array.from({length: 8}, (_, k) => {
+    const u = dtc.frames[t].u.slice(FIELDS * k, FIELDS * (k + 1));
+    return u[5] === 0 || u[7] > 0;
+  });
+  // At t = 0 every UAV is on the ground; later some work on the hull while others swap.
+  const mixed = dtc.frames.findIndex((f, t) => new Set(offHull(t)).size === 2);
+  assert.ok(mixed > 0, 'no time with UAVs both on and off the hull');
+  const {page} = await browser.open(dtcHtml);
+  for (const t of [0, mixed]) {
+    await seek(page, t);
+    const shown = await page.evaluate(() => window.hullViewer.view3d().uavs.map((u) => [u.mesh.visible, u.sight.visible]));
+    offHull(t).forEach((off, k) => {
+      assert.equal(shown[k][0], !off, `t = ${t}: UAV ${k} ${off ? 'off' : 'on'} the hull`);
+      if (off) assert.equal(shown[k][1], false, `t = ${t}: UAV ${k}'s line of sight drawn`);
+    });
+  }
+  await page.screenshot({path: path.join(OUT, 'dtc-sorties-3d.png')});
+  await page.close();
+});
