@@ -310,3 +310,41 @@ TEST(TraceMissionRules, TheLayoutFollowsTheVersion) {
 
 }  // namespace
 }  // namespace hullinspect::io
+
+namespace hullinspect::io {
+namespace {
+
+TEST(TraceMissionRules, OlderVersionsAreStillRead) {
+  // A version 2 trace of the same mission: five values per UAV, no launch or battery fields, the
+  // sites only among the parameters. It is read, its away steps checked loosely.
+  json old = lawnmower_trace();
+  old["version"] = 2;
+  old.erase("launch");
+  old.erase("battery");
+  old.erase("separation");
+  old["uav_fields"] = {"x", "y", "z", "transit_left", "active"};
+  old["parameters"]["launch"] = {{"sites", {{105, 0}, {125, 0}}}};
+  for (auto& f : old["frames"]) {
+    json u = json::array();
+    for (std::size_t j = 0; j < f["u"].size(); ++j) {
+      if (j % kFields < kPaperUavFields.size()) u.push_back(f["u"][j]);
+    }
+    f["u"] = std::move(u);
+  }
+  EXPECT_NO_THROW(validate_trace(old, "old.json"));
+  EXPECT_NO_THROW(check_trace_safety(old, "old.json"));
+  // A trace of the paper's model reads as version 1 and 2 too (version 1 may lack uav_fields).
+  planners::MissionSpec paper;
+  paper.params.uavs = 2;
+  json v1 = testing::recorded_trace(paper, world::default_hull());
+  EXPECT_EQ(v1["uav_fields"].size(), kPaperUavFields.size());
+  EXPECT_FALSE(v1.contains("launch") || v1.contains("battery") || v1.contains("separation"));
+  v1["version"] = 2;
+  EXPECT_NO_THROW(validate_trace(v1, "v2.json"));
+  v1["version"] = 1;
+  v1.erase("uav_fields");
+  EXPECT_NO_THROW(validate_trace(v1, "v1.json"));
+}
+
+}  // namespace
+}  // namespace hullinspect::io
