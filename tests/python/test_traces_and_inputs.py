@@ -66,6 +66,25 @@ class Traces(unittest.TestCase):
         self.assertEqual(kept.trace.data["frames"], self.trace.data["frames"])
         self.assertIsNone(hullinspect.run_mission(seed=3).trace)
 
+    def test_uavs_frame_of_a_mission_with_launch_sites(self):
+        # With launch sites each UAV's state also says whether it is airborne, its battery and
+        # its steps away from the hull; a UAV away is in transit (it cannot act).
+        path = os.path.join(self.tmp.name, "sorties.json")
+        done = cli("run", "-n", "2", "--seed", "2", "--launch", "105,0", "--launch", "125,0",
+                   "--endurance", "400", "--swap-time", "30", "--trace", path)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        uavs = hullinspect.read_trace(path).uavs
+        for column in ("airborne", "battery_left", "away_left"):
+            self.assertIn(column, uavs.columns)
+        self.assertEqual(uavs["airborne"].dtype, bool)
+        away = uavs["away_left"] > 0
+        self.assertTrue(away.any())
+        self.assertTrue(uavs.loc[away, "in_transit"].all())
+        on_hull = uavs.loc[~away]
+        self.assertTrue((on_hull["in_transit"] == (on_hull["transit_left"] > 0)).all())
+        self.assertTrue((~uavs["airborne"]).any())
+        self.assertTrue(uavs["battery_left"].between(0, 400).all())
+
     def test_uavs_frame_has_one_row_per_uav_and_step(self):
         uavs = self.trace.uavs
         steps = self.result.counters["steps"]
