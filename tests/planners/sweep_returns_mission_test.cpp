@@ -50,14 +50,14 @@ sim::MissionResult fly(CountingReturns& planner) {
   options.corrosion = prior_statistics(spec);
   const auto r = run_mission(hull, mission_instance(spec, hull), spec.params, planner, options);
   EXPECT_TRUE(checker.ok());
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.battery_crashes, 0);
   return r;
 }
 
 TEST(SweepReturnsMission, PlansItsOwnReturnsWithoutACrash) {
   CountingReturns planned(true);
   const auto r = fly(planned);
-  ASSERT_TRUE(r.complete);
-  EXPECT_EQ(r.battery_crashes, 0);
   EXPECT_GT(planned.sent_home, 0);
   int swaps = 0;
   for (const auto& u : r.uavs) {
@@ -70,9 +70,10 @@ TEST(SweepReturnsMission, PlansItsOwnReturnsWithoutACrash) {
 TEST(SweepReturnsMission, WithoutPlannedReturnsTheLayerAloneSendsUavsHome) {
   CountingReturns layer_only(false);
   const auto r = fly(layer_only);
-  ASSERT_TRUE(r.complete);
-  EXPECT_EQ(r.battery_crashes, 0);
   EXPECT_EQ(layer_only.sent_home, 0);
+  int swaps = 0;
+  for (const auto& u : r.uavs) swaps += u.swaps;
+  EXPECT_GT(swaps, 0);  // the layer sent them home
 }
 
 }  // namespace
