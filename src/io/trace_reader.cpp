@@ -230,7 +230,7 @@ void check_motion(const TraceChecker& check, const json& frames, int plane_chang
       before.flight_left = flight_left[k];
       if (now.failed || before.flight_left > 0) {
         now.flight_left = before.flight_left - (now.failed ? 0 : 1);
-      } else if (!away_unrecorded && grid::manhattan(before.pos, now.pos) == 1) {
+      } else if (!away_unrecorded && grid::adjacent(before.pos, now.pos, flights.plane[0])) {
         now.flight_left = flights.between(before.pos, now.pos, before.z) - 1;
       }
       flight_left[k] = now.flight_left;
@@ -259,6 +259,7 @@ grid::FlightSteps trace_flights(const json& trace, int width, int height) {
       points.normal(x, y) = {n[0].get<double>(), n[1].get<double>(), n[2].get<double>()};
     }
   }
+  points.seam = frame->value("seam", false);
   const double theta = trace.contains("camera") ? trace["camera"]["theta_deg"].get<double>() : 90.0;
   return grid::flight_steps(points, trace["grid"]["cell_size_m"].get<double>(), theta,
                             trace["footprint"][0].get<int>(), trace["footprint"][1].get<int>());
@@ -303,6 +304,14 @@ void check_ship_frame(const TraceChecker& check, const json& frame, int width, i
       for (std::size_t x = 0; x < row.size(); ++x) cell(row[x], fmt::format("{}[{}]", at, x));
     }
   };
+  if (const auto seam = frame.find("seam"); seam != frame.end()) {
+    if (!seam->is_boolean()) check.fail("ship_frame.seam", "expected true or false");
+    if (*seam == true && (side != "both" || width < 3)) {
+      check.fail("ship_frame.seam",
+                 "expected only on an unrolled hull (side both) of 3 or more "
+                 "columns");
+    }
+  }
   if (side == "both") {
     // An unrolled hull: per cell the surface point [X, Y, Z] a UAV there stands off from.
     grid_rows("surface", [&](const json& v, const std::string& at) {

@@ -2,6 +2,9 @@
 // generated maps and with the user's own truth, under the shared MissionChecker.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <vector>
+
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
@@ -83,6 +86,54 @@ TEST(MeshHullMissions, EveryRegisteredPlannerFliesTheUnrolledHullsRealFlights) {
     // Around the bow the UAVs cannot avoid flights longer than one step.
     EXPECT_GT(flights.steps, 0);
   }
+}
+
+// Counts the moves across the seam of a grid that closes on itself (a row's two ends).
+struct SeamCrossings final : MissionObserver {
+  std::vector<grid::Cell> last;
+  long long moves = 0;
+  void on_start(const sim::Simulator& sim, const Planner&) override {
+    for (const sim::UavState& u : sim.uavs()) last.push_back(u.pos);
+  }
+  void on_step(const sim::Simulator& sim, const Planner&) override {
+    const int w = sim.map().width();
+    for (std::size_t k = 0; k < last.size(); ++k) {
+      const grid::Cell now = sim.uavs()[k].pos;
+      if (now.y == last[k].y && std::abs(now.x - last[k].x) == w - 1) ++moves;
+      last[k] = now;
+    }
+  }
+};
+
+TEST(MeshHullMissions, EveryRegisteredPlannerCompletesOnAHullClosedAtItsSeam) {
+  world::MeshImportOptions o;
+  o.side = world::HullSide::both;
+  o.include_transom = true;  // the Wigley stern is a point: the grid closes there
+  o.cell_size = 1.0;
+  const world::HullMask hull =
+      world::import_mesh_file(testing::wigley_stl(testing::WigleyHull{}), o).hull;
+  ASSERT_TRUE(hull.geometry()->seam);
+  long long crossings = 0;
+  for (const auto& info : planner_registry()) {
+    SCOPED_TRACE(info.name);
+    MissionSpec spec;
+    spec.algorithm = info.name;
+    spec.params.uavs = 4;
+    spec.params.cell_size_m = hull.geometry()->cell_size;
+    spec.seed = 5;
+    spec.corrosion = world::scenario("imperfect").corrosion(hull.width());
+    testing::MissionChecker checker;
+    SeamCrossings seam;
+    MissionOptions options;
+    options.observers = {&checker, &seam};
+    const auto r = run_mission(spec, hull, options);
+    EXPECT_TRUE(r.complete);
+    EXPECT_TRUE(checker.ok());
+    EXPECT_EQ(r.hull_cells, hull.cell_count());
+    crossings += seam.moves;
+  }
+  // The planners that follow the distance service's paths take the short way across the stern.
+  EXPECT_GT(crossings, 0);
 }
 
 TEST(MeshHullMissions, EveryPlannerCompletesOnTheDtc) {
