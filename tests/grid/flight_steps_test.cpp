@@ -105,7 +105,7 @@ TEST(FlightSteps, TheDistanceServiceAddsUpTheFlightsOfItsShortestPaths) {
     Lcg rng{seed};
     const int w = 9, h = 6;
     Grid<std::uint8_t> allowed(w, h, 1);
-    EdgeSteps steps{Grid<std::uint8_t>(w, h, 1), Grid<std::uint8_t>(w, h, 1)};
+    EdgeSteps steps{Grid<std::uint8_t>(w, h, 1), Grid<std::uint8_t>(w, h, 1), {}};
     for (int i = 0; i < allowed.size(); ++i) {
       if (seed % 2 == 0 && rng.below(100) < 15) allowed[i] = 0;
       if (rng.below(4) == 0) steps.east[i] = static_cast<std::uint8_t>(2 + rng.below(6));
@@ -146,7 +146,7 @@ TEST(FlightSteps, TheDistanceServiceAddsUpTheFlightsOfItsShortestPaths) {
 
 TEST(FlightSteps, ALongFlightIsFlownAroundWhenThatIsShorter) {
   // Two rows; in the lower one (1, 0) → (2, 0) takes 5 steps: the path climbs to the upper row.
-  EdgeSteps steps{Grid<std::uint8_t>(4, 2, 1), Grid<std::uint8_t>(4, 2, 1)};
+  EdgeSteps steps{Grid<std::uint8_t>(4, 2, 1), Grid<std::uint8_t>(4, 2, 1), {}};
   steps.east(1, 0) = 5;
   DistanceService service(Grid<std::uint8_t>(4, 2, 1), steps);
   EXPECT_EQ(service.distance({0, 0}, {3, 0}), 5);  // up, three east, down
