@@ -34,6 +34,7 @@ grid::FlightSteps trace_flights(const json& trace, int width, int height) {
       points.normal(x, y) = {n[0].get<double>(), n[1].get<double>(), n[2].get<double>()};
     }
   }
+  points.seam = frame->value("seam", false);
   const double theta = trace.contains("camera") ? trace["camera"]["theta_deg"].get<double>() : 90.0;
   return grid::flight_steps(points, trace["grid"]["cell_size_m"].get<double>(), theta,
                             trace["footprint"][0].get<int>(), trace["footprint"][1].get<int>());
@@ -196,7 +197,7 @@ TraceCounts check_motion(const TraceChecker& check, const json& frames, const Tr
         const bool away = b.away_left > 0 || s.away_left > 0;
         if (s.failed || b.flight_left > 0) {
           s.flight_left = b.flight_left - (s.failed ? 0 : 1);
-        } else if (!away && grid::manhattan(b.pos, s.pos) == 1) {
+        } else if (!away && grid::adjacent(b.pos, s.pos, m.flights.plane[0])) {
           s.flight_left = m.flights.between(b.pos, s.pos, b.z) - 1;
         }
         if (auto broken = sim::step_violation(b, s, m.plane_change_steps, m.flights)) {

@@ -157,6 +157,14 @@ void check_ship_frame(const TraceChecker& check, const json& frame, int width, i
       for (std::size_t x = 0; x < row.size(); ++x) cell(row[x], fmt::format("{}[{}]", at, x));
     }
   };
+  if (const auto seam = frame.find("seam"); seam != frame.end()) {
+    if (!seam->is_boolean()) check.fail("ship_frame.seam", "expected true or false");
+    if (*seam == true && (side != "both" || width < 3)) {
+      check.fail("ship_frame.seam",
+                 "expected only on an unrolled hull (side both) of 3 or more "
+                 "columns");
+    }
+  }
   if (side == "both") {
     // An unrolled hull: per cell the surface point [X, Y, Z] a UAV there stands off from.
     grid_rows("surface", [&](const json& v, const std::string& at) {

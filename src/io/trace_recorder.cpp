@@ -65,6 +65,8 @@ json ship_frame(const world::HullGeometry& g) {
                 {"side", world::to_string(g.side)},
                 {"normal", std::move(normal)}};
   frame[unrolled ? "surface" : "depth"] = std::move(placement);
+  // A grid that closes on itself: its seam is a neighbour flight the trace checker replays.
+  if (g.seam) frame["seam"] = true;
   return frame;
 }
 

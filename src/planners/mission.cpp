@@ -99,7 +99,7 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   std::optional<sim::Deconfliction> deconfliction;
   if (params.separation > 0 && params.deconflict) {
     deconfliction.emplace(params.separation, params.uavs, hull.width(), hull.height(),
-                          params.no_fly.get());
+                          params.no_fly.get(), &sim.flight_steps().plane[0]);
   }
   std::optional<sim::SortieLayer> sorties;
   if (sim.battery().limited) sorties.emplace(sim);
