@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hullinspect/planners/open_tour.hpp"
+#include "open_tour_moves.hpp"
 
 namespace hullinspect::planners {
 
@@ -247,16 +248,7 @@ class NeighbourSearch {
     return {first, past};
   }
 
-  /// A move: reverse positions [i, j] (2-opt), or move the run at positions [i, j] to after
-  /// position q, reversed or not (Or-opt).
-  struct Move {
-    int gain = 0;
-    bool two_opt = true;
-    int i = 0;
-    int j = 0;
-    int q = 0;
-    bool reversed = false;
-  };
+  using Move = open_tour_detail::TourMove;
 
   void consider_reversal(Move& best, int i, int j) const {
     // Reversing [i, j] replaces the edges (i − 1, i) and (j, j + 1) by (i − 1, j) and (i, j + 1).
@@ -319,10 +311,6 @@ class NeighbourSearch {
     }
   }
 
-  void set_positions(int lo, int hi) {
-    for (int p = lo; p <= hi; ++p) pos_[node(p)] = p;
-  }
-
   void push(int a) {
     if (a == end_ || queued_[static_cast<std::size_t>(a)] != 0) return;
     queued_[static_cast<std::size_t>(a)] = 1;
@@ -331,25 +319,7 @@ class NeighbourSearch {
 
   /// Applies `move`, queueing the ends of every edge it changed.
   void apply(const Move& move) {
-    const auto it = order_.begin();
-    if (move.two_opt) {
-      for (const int p : {move.i - 1, move.i, move.j, move.j + 1}) push(at_position(p));
-      std::reverse(it + move.i, it + move.j + 1);
-      set_positions(move.i, move.j);
-      return;
-    }
-    for (const int p : {move.i - 1, move.i, move.j, move.j + 1, move.q, move.q + 1})
-      push(at_position(p));
-    const int len = move.j - move.i + 1;
-    if (move.q < move.i) {
-      std::rotate(it + move.q + 1, it + move.i, it + move.j + 1);
-      if (move.reversed) std::reverse(it + move.q + 1, it + move.q + 1 + len);
-      set_positions(move.q + 1, move.j);
-    } else {
-      std::rotate(it + move.i, it + move.j + 1, it + move.q + 1);
-      if (move.reversed) std::reverse(it + move.q + 1 - len, it + move.q + 1);
-      set_positions(move.i, move.q);
-    }
+    open_tour_detail::apply_tour_move(move, order_, pos_, [&](int p) { push(at_position(p)); });
   }
 
   /// Don't-look bits: a node is looked at again only when an edge at it changed. Every move

@@ -52,18 +52,44 @@ int SweepInspectPlanner::next_of_tour(int k, grid::Cell from, std::span<const in
       ++p.tour_next;
     if (p.tour_next < p.tour.size()) return p.tour[p.tour_next];
   }
-  tour_points_.clear();
-  // A short tour (or one forgotten) is planned anew from here: the rest may be ordered better
-  // from where it is.
-  for (const int i : cells) tour_points_.push_back(hull_cell(i));
   // The tour's end is free (not pulled towards the sweep after it): the sweep is planned from
   // wherever the tour ends.
-  plan_open_tour(from, tour_points_, {.reach = h1_});
+  const OpenTourCost cost{.reach = h1_};
+  if (!p.tour.empty() && repair_tour(p, cells.size(), view)) {
+    // A short tour is repaired where it changed (the UAV moved on, cells left it): the rest may
+    // be ordered better from where it is.
+    repair_open_tour(from, tour_points_, tour_touched_, cost);
+  } else {
+    tour_points_.clear();
+    for (const int i : cells) tour_points_.push_back(hull_cell(i));
+    plan_open_tour(from, tour_points_, cost);
+  }
   p.tour.clear();
   for (const grid::Cell c : tour_points_) p.tour.push_back(c.y * width_ + c.x);
   p.tour_next = 0;
   p.repaired = cells.size() > kReplannedTourCells;
   return p.tour.front();
+}
+
+bool SweepInspectPlanner::repair_tour(const Uav& p, std::size_t cells,
+                                      const sim::PlannerView& view) {
+  tour_points_.clear();
+  tour_touched_.assign({0, 1});  // the start moved: its edge changed
+  bool dropped = false;
+  for (const int i : p.tour) {
+    if (view.map[i] != sim::kCorrosionSeen) {
+      dropped = true;
+      continue;
+    }
+    if (dropped) {  // the nodes on either side of the gap (node i ≥ 1 is tour_points_[i − 1])
+      tour_touched_.push_back(tour_points_.size());
+      tour_touched_.push_back(tour_points_.size() + 1);
+      dropped = false;
+    }
+    tour_points_.push_back(hull_cell(i));
+  }
+  // Its cells are the prior cells left (any re-assignment forgot the tour); else plan anew.
+  return !tour_points_.empty() && tour_points_.size() == cells;
 }
 
 PriorTourSplitter::Split SweepInspectPlanner::split_tours(int a, grid::Cell pa, int b,

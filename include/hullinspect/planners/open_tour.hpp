@@ -42,4 +42,13 @@ void plan_open_tour_exhaustive(grid::Cell from, std::span<grid::Cell> points,
 void plan_open_tour_neighbours(grid::Cell from, std::span<grid::Cell> points,
                                const OpenTourCost& cost);
 
+/// Improves a tour `points` from `from` where it changed (its start moved, points left it): the
+/// exhaustive search's 2-opt and Or-opt moves, each the best that removes an edge at one node,
+/// looked for at the `touched` nodes (the ends of the edges that changed: 0 the start, i ≥ 1
+/// points[i − 1]) and then at the ends of
+/// every edge a move changed (don't-look bits), until no such move shortens it. O(m) per node
+/// looked at, so a tour kept short as it is flown costs far less than one planned anew.
+void repair_open_tour(grid::Cell from, std::span<grid::Cell> points,
+                      std::span<const std::size_t> touched, const OpenTourCost& cost);
+
 }  // namespace hullinspect::planners

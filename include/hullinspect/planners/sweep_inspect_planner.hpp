@@ -220,13 +220,18 @@ class SweepInspectPlanner final : public Planner {
   void balance_prior_tours(std::span<const grid::Cell> at, const sim::PlannerView* view = nullptr);
   static constexpr int kBalancePasses = 3;
   /// The next cell of UAV k's planned z = 1 tour over its prior cells `cells`
-  /// that is still to be inspected; the tour is planned from `from` when it has none left or was
-  /// planned short (over at most kReplannedTourCells cells).
+  /// that is still to be inspected; the tour is planned from `from` when it has none, and a tour
+  /// planned short (over at most kReplannedTourCells cells) is repaired from `from`
+  /// (repair_open_tour) where cells left it.
   int next_of_tour(int k, grid::Cell from, std::span<const int> cells,
                    const sim::PlannerView& view);
-  /// A tour planned over more cells is repaired as its cells are seen, not planned anew:
-  /// re-planning on every cell seen costs the cube of the tour's cells. Below it (every prior of
-  /// the default hull's missions) re-planning from where the UAV is orders the rest better.
+  /// Puts the cells of UAV p's short tour still to inspect, in its order, in tour_points_, and
+  /// the nodes next to those dropped (and the start) in tour_touched_; false when they are not
+  /// its `cells` prior cells left (plan the tour anew).
+  bool repair_tour(const Uav& p, std::size_t cells, const sim::PlannerView& view);
+  /// A tour planned over more cells only drops its cells as they are seen: even the repair's
+  /// linear work per change would grow with the square of the hull. Neither is planned anew on
+  /// every cell seen, which costs the cube of the tour's cells.
   static constexpr std::size_t kReplannedTourCells = 400;
   /// UAV k's prior cells were re-assigned: its next tour is planned anew.
   void forget_tour(int k) {
@@ -295,11 +300,12 @@ class SweepInspectPlanner final : public Planner {
   // Per cell: detected and not yet inspected at a failure's re-split, which gave it to the share
   // whose sweep is to pass abreast of it (its finder may be the failed UAV).
   grid::Grid<std::uint8_t> resplit_detection_;
-  std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
-  grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
-  SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
-  PriorTourSplitter tours_;              // the prior tours' estimates and splits
-  std::vector<grid::Cell> tour_points_;  // scratch of next_of_tour
+  std::vector<char> dense_column_;         // per column: swept at z = 1 (empty: none is)
+  grid::Grid<std::int16_t> part_owner_;    // owner_ restricted to one part of a UAV's cells
+  SweepScratch sweep_scratch_;             // scratch of approach_and_sweep
+  PriorTourSplitter tours_;                // the prior tours' estimates and splits
+  std::vector<grid::Cell> tour_points_;    // scratch of next_of_tour
+  std::vector<std::size_t> tour_touched_;  // scratch of next_of_tour: nodes where a tour changed
   std::vector<int> split_cells_;
   std::vector<grid::Cell> return_route_;  // scratch of returns(): a UAV's route ahead
   std::vector<int> tail_walk_;            // scratch of split_sweep_tail: walk lengths along a sweep
