@@ -34,6 +34,13 @@ int export_trace(const ExportCommandArgs& args) {
                            names.size() == 1 ? "" : "s", request->dir.string(),
                            fmt::join(names, ", "));
   for (const auto& note : written.notes) std::cout << "note: " << note << "\n";
+  // A trace records where each UAV was, not when it landed: its sorties cannot be cut here.
+  const auto parameters = trace.find("parameters");
+  if (parameters != trace.end() && parameters->is_object() && parameters->contains("battery")) {
+    std::cout << "note: the trace's mission has an endurance, but a trace does not record its "
+                 "sorties: each UAV's files hold all its sorties as one flight (plan --export or "
+                 "run --export write one file per sortie)\n";
+  }
   check_stdout();
   outputs.commit();
   return 0;

@@ -287,6 +287,13 @@ TEST_F(SortieFiles, ThePreflightReportListsTheFilesOfEverySortie) {
   EXPECT_NE(md.find("uav1_sortie2.plan"), std::string::npos) << md;
 }
 
+TEST_F(SortieFiles, ExportOfATraceSaysItCannotCutSorties) {
+  const auto r = run_cli({"export", dir_ + "/trace.json", "--out", dir_ + "/from-trace"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("a trace does not record its sorties"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir_ + "/from-trace/uav0.csv"));
+}
+
 TEST(SortieFilesUnlimited, WithoutAnEnduranceEachUavFliesOneFile) {
   const auto dir = make_temp_dir("sortie-files-unlimited");
   const auto r = run_cli({"plan", "-a", "lawnmower", "-n", "2", "--launch", "0,0", "--export",
