@@ -11,7 +11,6 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
-#include <sstream>
 
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/io/export.hpp"
@@ -19,6 +18,7 @@
 #include "hullinspect/io/geo_reference.hpp"
 #include "hullinspect/io/trace_reader.hpp"
 #include "support/cli_runner.hpp"
+#include "support/text_fields.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -34,20 +34,6 @@ struct Position {
   int x = 0, y = 0, z = 2;
   friend bool operator==(const Position&, const Position&) = default;
 };
-
-std::vector<std::string> split(const std::string& line, char sep) {
-  std::vector<std::string> out;
-  std::stringstream in(line);
-  for (std::string f; std::getline(in, f, sep);) out.push_back(f);
-  return out;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
-}
 
 void push_new(std::vector<Position>& path, Position p) {
   if (path.empty() || !(path.back() == p)) path.push_back(p);
