@@ -67,11 +67,12 @@ std::vector<Position> csv_path(const std::string& text) {
 
 // The positions the trace's UAV k passes between frames `begin` and `end` (on a plane only).
 std::vector<Position> trace_path(const nlohmann::json& trace, std::size_t k, int begin, int end) {
+  const auto states = io::trace_states(trace);
   std::vector<Position> path;
   for (int t = begin; t <= end; ++t) {
-    const auto& u = trace["frames"][static_cast<std::size_t>(t)]["u"];
-    if (u[5 * k + 3].get<int>() > 0) continue;  // between planes
-    push_new(path, {u[5 * k].get<int>(), u[5 * k + 1].get<int>(), u[5 * k + 2].get<int>()});
+    const auto& s = states.at(k).at(static_cast<std::size_t>(t));
+    if (s.in_transit) continue;  // between planes
+    push_new(path, {s.pos.x, s.pos.y, s.z});
   }
   return path;
 }
@@ -276,7 +277,8 @@ TEST_F(SortieFiles, ThePreflightReportListsTheFilesOfEverySortie) {
 TEST_F(SortieFiles, ExportOfATraceSaysItCannotCutSorties) {
   const auto r = run_cli({"export", dir_ + "/trace.json", "--out", dir_ + "/from-trace"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("a trace does not record its sorties"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the export of a trace does not cut it into sorties"), std::string::npos)
+      << r.out;
   EXPECT_TRUE(fs::exists(dir_ + "/from-trace/uav0.csv"));
 }
 
