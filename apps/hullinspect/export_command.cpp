@@ -25,7 +25,9 @@ int export_trace(const ExportCommandArgs& args) {
   declare_export_dir(outputs, *request);
   outputs.check();  // the directory, before reading the trace
   const auto trace = io::read_trace(args.trace_path);
-  const auto uavs = trace.at("frames").at(0).at("u").size() / 5;  // 5 fields per UAV (checked)
+  // The values per UAV in a frame: uav_fields names them (checked by read_trace).
+  const auto fields = trace.contains("uav_fields") ? trace["uav_fields"].size() : 5;
+  const auto uavs = trace.at("frames").at(0).at("u").size() / fields;
   declare_export_files(outputs, *request, static_cast<int>(uavs));
   outputs.check();
   const auto written = write_export(trace, args.trace_path, *request, outputs);
@@ -34,6 +36,15 @@ int export_trace(const ExportCommandArgs& args) {
                            names.size() == 1 ? "" : "s", request->dir.string(),
                            fmt::join(names, ", "));
   for (const auto& note : written.notes) std::cout << "note: " << note << "\n";
+  // The sorties are cut from the mission's result, which only plan and run have.
+  // The endurance is among the mission's parameters (and, in newer traces, its own field).
+  const auto parameters = trace.find("parameters");
+  if (trace.contains("battery") ||
+      (parameters != trace.end() && parameters->is_object() && parameters->contains("battery"))) {
+    std::cout << "note: the trace's mission has an endurance, but the export of a trace does not "
+                 "cut it into sorties: each UAV's files hold all its sorties as one flight (plan "
+                 "--export or run --export write one file per sortie)\n";
+  }
   check_stdout();
   outputs.commit();
   return 0;

@@ -13,6 +13,7 @@
 #include "hullinspect/files/bounded_read.hpp"
 #include "hullinspect/io/geo_survey.hpp"
 #include "hullinspect/planners/mission_input.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/ship_frame_bounds.hpp"
 
@@ -355,6 +356,17 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
   r.geo_file = a.geo_file;
   r.force = a.force;
   return r;
+}
+
+void take_mission_sorties(ExportRequest& request, const planners::MissionSpec& spec,
+                          const sim::MissionResult& result) {
+  if (!world::battery_steps(spec.params).limited) return;
+  auto& flown = request.settings.flown_sorties;
+  flown.clear();
+  for (const auto& u : result.uavs) {
+    auto& sorties = flown.emplace_back();
+    for (const auto& s : u.sorties) sorties.push_back({s.takeoff, s.landing, s.site});
+  }
 }
 
 void declare_export_dir(io::OutputSet& outputs, const ExportRequest& request) {

@@ -15,6 +15,8 @@
 #include "hullinspect/files/output_set.hpp"
 #include "hullinspect/io/export.hpp"
 #include "hullinspect/io/geo_survey.hpp"
+#include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/sim/mission_result.hpp"
 
 namespace hullinspect::cli {
 
@@ -72,6 +74,12 @@ struct ExportRequest {
   std::string geo_file;  ///< --geo FILE, an input of the command; empty without one
   bool force = false;    ///< write into a directory that already holds files
 };
+
+/// A battery-limited mission lands and takes off again: its export is cut into one sortie per
+/// take-off (io::ExportSettings::flown_sorties, from the result's sim::SortieRecord), each with its
+/// own files. With unlimited flight nothing changes: one sortie per UAV.
+void take_mission_sorties(ExportRequest& request, const planners::MissionSpec& spec,
+                          const sim::MissionResult& result);
 
 /// Checks the options (format, geo-reference) before anything runs; nullopt when no directory
 /// was given. Throws ParameterError / InputError with one line.

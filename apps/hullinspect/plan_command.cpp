@@ -78,7 +78,7 @@ int plan(const PlanArgs& args) {
   outputs.add_output(args.trace_path, "trace");
   ExportArgs output = args.output;
   take_mission_launch(output, args.mission.launch);
-  const auto export_request = resolve_export(output, "--export");
+  auto export_request = resolve_export(output, "--export");
   if (export_request) declare_export_dir(outputs, *export_request);
   const std::filesystem::path report_dir = args.report_dir;
   if (!args.report_dir.empty()) {
@@ -118,6 +118,7 @@ int plan(const PlanArgs& args) {
   const auto trace = recorder.finish(result);
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   ExportWritten written;
+  if (export_request) take_mission_sorties(*export_request, spec, result);
   if (export_request) written = write_export(trace, hull.source(), *export_request, outputs);
   if (!args.report_dir.empty()) {
     const auto plan_data = io::export_plan(trace, hull.source());

@@ -89,7 +89,7 @@ int run(const RunArgs& args) {
   outputs.add_output(args.html_path, "html");
   ExportArgs output = args.output;
   take_mission_launch(output, args.mission.launch);
-  const auto export_request = resolve_export(output, "--export");
+  auto export_request = resolve_export(output, "--export");
   if (export_request) declare_export_dir(outputs, *export_request);
   outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
@@ -112,6 +112,7 @@ int run(const RunArgs& args) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
     if (!args.html_path.empty()) outputs.write(args.html_path, io::viewer_html(trace));
+    if (export_request) take_mission_sorties(*export_request, spec, result);
     if (export_request) write_export(trace, hull.source(), *export_request, outputs);
   }
   if (args.json) {

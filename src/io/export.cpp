@@ -124,13 +124,14 @@ ExportPlan export_plan(const nlohmann::json& trace, const std::string& source) {
                   trace.at("grid").at("height").get<int>(),
                   {},
                   {},
+                  {},
                   {}};
   if (auto step = trace.find("step_seconds"); step != trace.end()) {
     plan.step_seconds = step->get<double>();
   }
-  const auto states = trace_states(trace);
+  plan.states = trace_states(trace);
   const auto same = [&plan](grid::Cell a, grid::Cell b) { return plan.frame.same_surface(a, b); };
-  for (const auto& uav : states) {
+  for (const auto& uav : plan.states) {
     std::vector<ExportWaypoint> waypoints;
     for (const auto& w : compress_trajectory(uav, same)) {
       waypoints.push_back({w, plan.frame.pose(w.cell, w.z)});
@@ -191,8 +192,11 @@ constexpr const char* kKmlPreview = "mission.kml";
 }  // namespace
 
 std::string mission_file_name(ExportFormat format, const MissionPart& part) {
-  if (part.parts == 1) return fmt::format("uav{}.{}", part.sortie->uav, extension(format));
-  return fmt::format("uav{}-part{}.{}", part.sortie->uav, part.part, extension(format));
+  const auto& s = *part.sortie;
+  const std::string stem =
+      s.flown ? fmt::format("uav{}_sortie{}", s.uav, s.number) : fmt::format("uav{}", s.uav);
+  if (part.parts == 1) return fmt::format("{}.{}", stem, extension(format));
+  return fmt::format("{}-part{}.{}", stem, part.part, extension(format));
 }
 
 std::vector<std::string> export_file_names(ExportFormat format, int uavs, bool geo_referenced) {
@@ -211,7 +215,7 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
                                                "LAT,LON,ALT and --heading DEG (or --geo FILE)",
                                                to_string(format)));
   }
-  auto sorties = plan_sorties(plan, settings.launch_sites);
+  auto sorties = plan_sorties(plan, settings.launch_sites, settings.flown_sorties);
   if (settings.simplify_m > 0) {
     for (auto& s : sorties) simplify_sortie(plan, s, settings.simplify_m);
   }

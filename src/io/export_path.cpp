@@ -25,7 +25,10 @@ std::string write_path_yaml(const ExportPlan& plan, const MissionPart& part) {
       "# nav_msgs/Path of UAV {}: stamps are seconds since {}; frame hull = ship frame\n"
       "header:\n  stamp: {}\n  frame_id: hull\nposes:\n",
       part.sortie->uav,
-      part.sortie->given_site ? "the plan's start (negative before it)" : "take-off", stamp(0));
+      part.sortie->flown        ? "the mission's start (its first take-off)"
+      : part.sortie->given_site ? "the plan's start (negative before it)"
+                                : "take-off",
+      stamp(0));
   for (const auto& w : part.waypoints) {
     const auto& p = w.pose;
     out += fmt::format(

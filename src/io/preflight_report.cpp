@@ -17,7 +17,7 @@ constexpr std::array<const char*, 8> kColours = {"#e41a1c", "#377eb8", "#4daf4a"
                                                  "#ff7f00", "#a65628", "#f781bf", "#999999"};
 
 std::vector<Sortie> exported_sorties(const ExportPlan& plan, const ExportSettings& settings) {
-  auto sorties = plan_sorties(plan, settings.launch_sites);
+  auto sorties = plan_sorties(plan, settings.launch_sites, settings.flown_sorties);
   if (settings.simplify_m > 0) {
     for (auto& s : sorties) simplify_sortie(plan, s, settings.simplify_m);
   }
@@ -83,11 +83,16 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
   for (const auto& s : sorties) {
     mark_seen(plan, s.waypoints, seen);
     json files = json::object();
+    json file_names = json::object();  // the sortie's files of each format, in flight order
     for (const auto f : formats) {
       if (f == ExportFormat::kKml) continue;
       const int cap = settings.max_waypoints > 0 ? settings.max_waypoints : default_waypoint_cap(f);
-      const auto parts = static_cast<int>(split_sortie(s, cap).size());
+      const auto split = split_sortie(s, cap);
+      const auto parts = static_cast<int>(split.size());
       files[std::string(to_string(f))] = parts;
+      json names = json::array();
+      for (const auto& part : split) names.push_back(mission_file_name(f, part));
+      file_names[std::string(to_string(f))] = std::move(names);
       if (parts > 1) {
         warnings.push_back(
             fmt::format("UAV {} sortie {}: {} waypoints exceed the {} cap of {}: "
@@ -111,24 +116,33 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
       row["flight_time_s"] = flight.time_s;
       row["battery_margin_s"] = nullptr;  // unlimited flight: no battery to run out
       row["files"] = files;
+      row["file_names"] = file_names;
       rows.push_back(row);
       continue;
     }
     const auto& planned = battery.sorties[uav];
-    if (planned.size() > 1) {
+    // The planned sorties this export sortie stands for: itself when the files were cut per
+    // sortie, else every sortie of the UAV (its files then hold them as one flight).
+    std::size_t first = 0;
+    std::size_t count = planned.size();
+    if (s.flown && static_cast<std::size_t>(s.number) <= planned.size()) {
+      first = static_cast<std::size_t>(s.number) - 1;
+      count = 1;
+    } else if (planned.size() > 1) {
       warnings.push_back(fmt::format(
           "UAV {} flies {} sorties but its mission files hold them as one flight: land and swap "
           "the battery where the table's sorties end",
           s.uav, planned.size()));
     }
-    for (std::size_t n = 0; n < planned.size(); ++n) {
+    for (std::size_t n = first; n < first + count; ++n) {
       const auto& p = planned[n];
       const double end_s = p.landing_s.value_or(battery.plan_end_s);
-      // The sortie's waypoints: those the UAV's files reach between its take-off and landing.
+      // The sortie's waypoints: those the UAV's files reach between its take-off and landing
+      // (all of a sortie's own files).
       std::vector<ExportWaypoint> flown;
       for (const auto& w : s.waypoints) {
         const double t = plan.seconds(w.grid.t);
-        if (t >= p.takeoff_s && t <= end_s) flown.push_back(w);
+        if (s.flown || (t >= p.takeoff_s && t <= end_s)) flown.push_back(w);
       }
       const double flight_s = end_s - p.takeoff_s;
       const double margin = battery.endurance_s - flight_s;
@@ -142,6 +156,7 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
       r["flight_time_s"] = flight_s;
       r["battery_margin_s"] = margin;
       r["files"] = files;
+      r["file_names"] = file_names;
       if (!p.landing_s) {
         warnings.push_back(
             fmt::format("UAV {} sortie {}: still airborne when the plan ends", s.uav, n + 1));
@@ -235,9 +250,9 @@ std::string preflight_markdown(const nlohmann::json& report) {
       "(s) | files |\n";
   md += "|---|---|---|---|---|---|---|---|\n";
   for (const auto& s : report["sorties"]) {
-    std::string files;
-    for (const auto& [format, parts] : s["files"].items()) {
-      files += fmt::format("{}{} {}", files.empty() ? "" : ", ", format, parts.get<int>());
+    std::vector<std::string> files;
+    for (const auto& [format, names] : s["file_names"].items()) {
+      for (const auto& name : names) files.push_back(name.get<std::string>());
     }
     md += fmt::format(
         "| {} | {} | {},{}{} | {} | {:.2f} | {:.1f} | {} | {} |\n", s["uav"].get<int>(),
@@ -247,7 +262,7 @@ std::string preflight_markdown(const nlohmann::json& report) {
         s["battery_margin_s"].is_null()
             ? std::string("—")
             : fmt::format("{:.1f}", s["battery_margin_s"].get<double>()),
-        files);
+        files.empty() ? std::string("—") : fmt::format("{}", fmt::join(files, ", ")));
   }
   const auto& c = report["cells"];
   md += fmt::format(

@@ -88,12 +88,60 @@ std::vector<ExportWaypoint> transit(const ExportPlan& plan, const std::vector<gr
   return out;
 }
 
+// The take-off and landing point below a site: its plane-2 position at the grid's bottom edge.
+ShipPose home_below(const ExportPlan& plan, grid::Cell site) {
+  const auto p = plan.frame.pose(site, 2);
+  return {p.x, p.y, plan.frame.spec().z0, p.yaw};
+}
+
+// UAV k's sorties of a battery-limited mission: each the trace's frames from its take-off to its
+// landing (or the last frame), compressed on its own, so that every file starts at the site and
+// ends there.
+std::vector<Sortie> cut_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites,
+                                std::size_t k, const std::vector<FlownSortie>& flown) {
+  const auto& states = plan.states[k];
+  const auto same = [&plan](grid::Cell a, grid::Cell b) { return plan.frame.same_surface(a, b); };
+  std::vector<Sortie> out;
+  for (std::size_t n = 0; n < flown.size(); ++n) {
+    const auto& f = flown[n];
+    if (f.site < 0 || static_cast<std::size_t>(f.site) >= sites.size()) {
+      throw ParameterError("launch", fmt::format("UAV {}'s sortie {} lands at launch site {}, but "
+                                                 "{} site{} given",
+                                                 k, n + 1, f.site, sites.size(),
+                                                 sites.size() == 1 ? " is" : "s are"));
+    }
+    const auto last = static_cast<int>(states.size()) - 1;
+    const int begin = std::clamp(f.takeoff, 0, last);
+    const int end = f.landing < 0 ? last : std::clamp(f.landing, begin, last);
+    Sortie s;
+    s.uav = static_cast<int>(k);
+    s.number = static_cast<int>(n) + 1;
+    s.site = sites[static_cast<std::size_t>(f.site)];
+    s.given_site = true;
+    s.flown = true;
+    const auto slice = std::span<const GridState>(states).subspan(
+        static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin + 1));
+    for (auto w : compress_trajectory(slice, same)) {
+      w.t += begin;  // the trace's clock
+      s.waypoints.push_back({w, plan.frame.pose(w.cell, w.z)});
+    }
+    s.home = home_below(plan, s.site);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
 }  // namespace
 
-std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites) {
+std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites,
+                                 const std::vector<std::vector<FlownSortie>>& flown_sorties) {
   for (const auto& s : sites) check_site(plan, s);
   std::vector<Sortie> sorties;
   for (std::size_t k = 0; k < plan.uavs.size(); ++k) {
+    if (k < flown_sorties.size() && !flown_sorties[k].empty()) {
+      for (auto& s : cut_sorties(plan, sites, k, flown_sorties[k])) sorties.push_back(std::move(s));
+      continue;
+    }
     const auto& flown = plan.uavs[k];
     Sortie s;
     s.uav = static_cast<int>(k);
@@ -142,8 +190,7 @@ std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid:
     } else {
       s.waypoints = flown;
     }
-    const auto site_pose = plan.frame.pose(s.site, 2);
-    s.home = {site_pose.x, site_pose.y, plan.frame.spec().z0, site_pose.yaw};
+    s.home = home_below(plan, s.site);
     sorties.push_back(std::move(s));
   }
   return sorties;

@@ -12,7 +12,6 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
-#include <sstream>
 
 #include "hullinspect/files/atomic_file.hpp"
 #include "hullinspect/io/export.hpp"
@@ -22,6 +21,7 @@
 #include "source_dir.hpp"
 #include "support/cli_runner.hpp"
 #include "support/mesh_fixtures.hpp"
+#include "support/text_fields.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -107,20 +107,6 @@ std::map<std::string, std::string> unzip(const std::string& path) {
   }
   zip_close(archive);
   return entries;
-}
-
-std::vector<std::string> split(const std::string& line, char sep) {
-  std::vector<std::string> out;
-  std::stringstream in(line);
-  for (std::string f; std::getline(in, f, sep);) out.push_back(f);
-  return out;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
 }
 
 TEST_F(FlightFiles, DjiKmzFollowsWpmlAndTheTrace) {

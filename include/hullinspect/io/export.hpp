@@ -52,6 +52,9 @@ struct ExportSettings {
   std::vector<grid::Cell> launch_sites;  ///< empty: each UAV takes off below its start position
   int max_waypoints = 0;                 ///< 0: each format's default cap
   double simplify_m = 0;                 ///< 0: no simplification (io/simplify.hpp)
+  /// Per UAV, the sorties of a battery-limited mission (empty: one sortie per UAV). Each becomes
+  /// its own mission files, `uav<k>_sortie<s>.<ext>` (plan_sorties).
+  std::vector<std::vector<FlownSortie>> flown_sorties;
 };
 
 /// The default waypoint cap of a format (0 = none): Litchi 99 (its mission limit), DJI 200 (a
@@ -65,6 +68,7 @@ struct ExportPlan {
   int width = 0;  ///< the grid
   int height = 0;
   std::vector<std::vector<ExportWaypoint>> uavs;  ///< per UAV, the trace's waypoints
+  std::vector<std::vector<GridState>> states;     ///< per UAV, its state in every frame
   std::vector<grid::Cell> no_fly;
   std::vector<std::string> hull_rows;  ///< the trace's truth rows ('.' = not hull)
   double step_seconds = 1.0;           ///< the trace's step in seconds (docs/model.md)
@@ -83,7 +87,9 @@ struct ExportFile {
 };
 
 /// The file of one mission part: `uav<k>.<ext>`, or `uav<k>-part<p>.<ext>` when a sortie was
-/// split. Extensions: csv, plan (qgc), waypoints (wpl), path.yaml, litchi.csv, kmz.
+/// split; a sortie cut from a battery-limited mission is `uav<k>_sortie<s>.<ext>`, split
+/// `uav<k>_sortie<s>-part<p>.<ext>` (s and p from 1). Extensions: csv, plan (qgc), waypoints
+/// (wpl), path.yaml, litchi.csv, kmz.
 std::string mission_file_name(ExportFormat format, const MissionPart& part);
 
 /// The names of the files written for `uavs` UAVs when no sortie is split (known before any

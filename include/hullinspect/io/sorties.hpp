@@ -23,12 +23,23 @@ struct ExportWaypoint {
   ShipPose pose;
 };
 
+/// One take-off to the next landing of the mission the trace records (sim::SortieRecord): the
+/// trace's frames [takeoff, landing] are its flight; landing −1 = still airborne at the end.
+struct FlownSortie {
+  int takeoff = 0;
+  int landing = -1;
+  int site = 0;  ///< index of the launch site
+};
+
 /// One take-off to the next landing of one UAV.
 struct Sortie {
   int uav = 0;
   int number = 1;           ///< the UAV's sortie, from 1
   grid::Cell site;          ///< the launch site (grid position)
   bool given_site = false;  ///< false: no --launch, the site is the UAV's start position
+  /// True when cut from the mission's sorties (a battery-limited mission): its files are named
+  /// per sortie and its waypoints are the trace's flight from take-off to landing.
+  bool flown = false;
   ShipPose home;  ///< take-off and landing point: below the site, at the grid's bottom edge
   std::vector<ExportWaypoint> waypoints;  ///< from the site's plane-2 position back to it
   int transit_in = 0;   ///< waypoints[0, transit_in) fly from the site to the plan's start
@@ -43,7 +54,12 @@ struct Sortie {
 /// UAV's start position when `sites` is empty. Throws ParameterError("launch") for a site outside
 /// the grid, on a no-fly position, or on a hull cell that is not on the grid's edge, and when no
 /// allowed path joins a site to a UAV's start.
-std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites);
+/// A UAV with sorties in `flown` (per UAV; a battery-limited mission lands and takes off again)
+/// flies one sortie each instead: the trace's frames from its take-off to its landing at
+/// `sites[site]`, compressed as the trace's waypoints (times stay the trace's). Throws
+/// ParameterError("launch") when such a sortie names a site `sites` does not have.
+std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites,
+                                 const std::vector<std::vector<FlownSortie>>& flown = {});
 
 /// The index of the site nearest `start` (the rule of plan_sorties).
 std::size_t nearest_site(grid::Cell start, const std::vector<grid::Cell>& sites);

@@ -1,0 +1,297 @@
+// The flight files of a battery-limited mission (docs/export.md "Sorties, launch sites and
+// waypoint caps"): one set of files per UAV and sortie, each a flight from its launch site back to
+// it, together the path the planned mission flies; split by a waypoint cap into parts that resume
+// where the last one ended; listed per sortie by the pre-flight report.
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+
+#include "hullinspect/files/atomic_file.hpp"
+#include "hullinspect/io/export.hpp"
+#include "hullinspect/io/export_readers.hpp"
+#include "hullinspect/io/geo_reference.hpp"
+#include "hullinspect/io/trace_reader.hpp"
+#include "support/cli_runner.hpp"
+#include "support/text_fields.hpp"
+
+namespace hullinspect::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const io::GeoPoint kOrigin{53.5461, 9.9665, 3.0};
+constexpr double kHeading = 117;
+const grid::Cell kSite{0, 0};
+
+// A grid position on a plane.
+struct Position {
+  int x = 0, y = 0, z = 2;
+  friend bool operator==(const Position&, const Position&) = default;
+};
+
+void push_new(std::vector<Position>& path, Position p) {
+  if (path.empty() || !(path.back() == p)) path.push_back(p);
+}
+
+// The positions a csv file's flight passes, in order: every cell of every leg (a leg is one
+// straight line of moves, a plane change stays on its cell).
+std::vector<Position> csv_path(const std::string& text) {
+  const auto rows = lines_of(text);
+  const auto header = split(rows.at(0), ',');
+  const auto column = [&header](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const auto cx = column("cell_x"), cy = column("cell_y"), plane = column("plane");
+  std::vector<Position> path;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto f = split(rows[i], ',');
+    const Position to{std::stoi(f.at(cx)), std::stoi(f.at(cy)), std::stoi(f.at(plane))};
+    if (!path.empty() && path.back().z == to.z) {
+      Position at = path.back();
+      while (at.x != to.x || at.y != to.y) {
+        at.x += (to.x > at.x) - (to.x < at.x);
+        at.y += (to.y > at.y) - (to.y < at.y);
+        push_new(path, at);
+      }
+    }
+    push_new(path, to);
+  }
+  return path;
+}
+
+// The positions the trace's UAV k passes between frames `begin` and `end` (on a plane only).
+std::vector<Position> trace_path(const nlohmann::json& trace, std::size_t k, int begin, int end) {
+  const auto states = io::trace_states(trace);
+  std::vector<Position> path;
+  for (int t = begin; t <= end; ++t) {
+    const auto& s = states.at(k).at(static_cast<std::size_t>(t));
+    if (s.in_transit) continue;  // between planes
+    push_new(path, {s.pos.x, s.pos.y, s.z});
+  }
+  return path;
+}
+
+// The battery-limited mission of every test: two UAVs from one launch site, each flying several
+// sorties.
+class SortieFiles : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = make_temp_dir("sortie-files");
+    const auto r = run_cli({"plan",
+                            "-a",
+                            "lawnmower",
+                            "-n",
+                            "2",
+                            "--launch",
+                            "0,0",
+                            "--endurance",
+                            "700",
+                            "--json",
+                            "--trace",
+                            dir_ + "/trace.json",
+                            "--export",
+                            dir_ + "/files",
+                            "--format",
+                            "all",
+                            "--origin",
+                            "53.5461,9.9665,3",
+                            "--heading",
+                            "117",
+                            "--max-waypoints",
+                            "1000",
+                            "--report",
+                            dir_ + "/report"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    result_ = nlohmann::json::parse(r.out);
+    trace_ = io::read_trace(dir_ + "/trace.json");
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  static std::string file(const std::string& name) {
+    return io::read_file(dir_ + "/files/" + name);
+  }
+  static const nlohmann::json& sorties(std::size_t k) { return result_["launch"][k]["sorties"]; }
+  // The take-off and landing point below the launch site.
+  static io::GeoPoint home() {
+    const auto plan = io::export_plan(trace_);
+    const auto p = plan.frame.pose(kSite, 2);
+    return io::GeoReference(kOrigin, kHeading).to_wgs84(p.x, p.y, plan.frame.spec().z0);
+  }
+
+  static std::string dir_;
+  static nlohmann::json result_;
+  static nlohmann::json trace_;
+};
+std::string SortieFiles::dir_;
+nlohmann::json SortieFiles::result_;
+nlohmann::json SortieFiles::trace_;
+
+TEST_F(SortieFiles, EverySortieHasItsOwnFileInEveryFormat) {
+  int total = 0;
+  for (std::size_t k = 0; k < 2; ++k) {
+    ASSERT_GT(sorties(k).size(), 1u) << "the battery makes every UAV land and take off again";
+    for (std::size_t n = 1; n <= sorties(k).size(); ++n, ++total) {
+      for (const char* ext : {"csv", "plan", "waypoints", "path.yaml", "litchi.csv", "kmz"}) {
+        EXPECT_TRUE(fs::exists(fmt::format("{}/files/uav{}_sortie{}.{}", dir_, k, n, ext)))
+            << k << " " << n << " " << ext;
+      }
+    }
+    EXPECT_FALSE(fs::exists(fmt::format("{}/files/uav{}.csv", dir_, k)));
+    EXPECT_FALSE(
+        fs::exists(fmt::format("{}/files/uav{}_sortie{}.csv", dir_, k, sorties(k).size() + 1)));
+  }
+  EXPECT_EQ(total, result_["sorties"].get<int>());
+  // The kml preview: one line per UAV and sortie.
+  pugi::xml_document kml;
+  ASSERT_TRUE(kml.load_string(file("mission.kml").c_str()));
+  int lines = 0;
+  for (const auto& node : kml.select_nodes("//Placemark[LineString]")) {
+    const std::string name = node.node().child_value("name");
+    EXPECT_EQ(name.find("UAV "), 0u) << name;
+    ++lines;
+  }
+  EXPECT_EQ(lines, total);
+}
+
+TEST_F(SortieFiles, TheSortiesTogetherFlyThePlannedPath) {
+  for (std::size_t k = 0; k < 2; ++k) {
+    int previous_landing = -1;
+    for (std::size_t n = 0; n < sorties(k).size(); ++n) {
+      const int takeoff = sorties(k)[n]["takeoff"].get<int>();
+      ASSERT_FALSE(sorties(k)[n]["landing"].is_null());
+      const int landing = sorties(k)[n]["landing"].get<int>();
+      const auto flown = csv_path(file(fmt::format("uav{}_sortie{}.csv", k, n + 1)));
+      EXPECT_EQ(flown, trace_path(trace_, k, takeoff, landing)) << "UAV " << k << " sortie " << n;
+      ASSERT_FALSE(flown.empty());
+      EXPECT_EQ(flown.front(), (Position{kSite.x, kSite.y, 2})) << k << " " << n;
+      EXPECT_EQ(flown.back(), (Position{kSite.x, kSite.y, 2})) << k << " " << n;
+      // Between two sorties the UAV is on the ground at its site: no flight is left out.
+      if (previous_landing >= 0) {
+        EXPECT_EQ(trace_path(trace_, k, previous_landing, takeoff),
+                  (std::vector<Position>{{kSite.x, kSite.y, 2}}));
+      }
+      previous_landing = landing;
+    }
+  }
+}
+
+TEST_F(SortieFiles, EveryMissionTakesOffAndLandsAtItsSite) {
+  const auto h = home();
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (std::size_t n = 1; n <= sorties(k).size(); ++n) {
+      const auto stem = fmt::format("uav{}_sortie{}", k, n);
+      for (const auto& read : {io::read_qgc_plan(file(stem + ".plan"), stem),
+                               io::read_wpl(file(stem + ".waypoints"), stem)}) {
+        ASSERT_GE(read.items.size(), 3u) << stem;
+        EXPECT_NEAR(read.home.lat, h.lat, 1e-8) << stem;
+        EXPECT_NEAR(read.home.lon, h.lon, 1e-8) << stem;
+        const auto nav = [](const io::ReadItem& i) { return i.command == 16 || i.command >= 20; };
+        const auto first = std::find_if(read.items.begin(), read.items.end(), nav);
+        EXPECT_EQ(first->command, 22) << stem;             // NAV_TAKEOFF
+        EXPECT_EQ(read.items.back().command, 21) << stem;  // NAV_LAND (--finish land)
+        const auto& last = read.waypoints.back().geo;      // the last waypoint is above the site
+        EXPECT_NEAR(last.lat, h.lat, 1e-8) << stem;
+        EXPECT_NEAR(last.lon, h.lon, 1e-8) << stem;
+      }
+      // Litchi has no take-off item: its first and last waypoints are above the site.
+      const auto litchi = lines_of(file(stem + ".litchi.csv"));
+      ASSERT_GE(litchi.size(), 3u) << stem;
+      for (const auto& row : {litchi[1], litchi.back()}) {
+        const auto f = split(row, ',');
+        EXPECT_NEAR(std::stod(f.at(0)), h.lat, 1e-8) << stem << ": " << row;
+        EXPECT_NEAR(std::stod(f.at(1)), h.lon, 1e-8) << stem << ": " << row;
+      }
+    }
+  }
+}
+
+TEST_F(SortieFiles, ACapSplitsASortieIntoPartsThatResume) {
+  const std::string out = dir_ + "/capped";
+  const auto r = run_cli({"plan", "-a", "lawnmower", "-n", "2", "--launch", "0,0", "--endurance",
+                          "700", "--export", out, "--format", "csv", "--max-waypoints", "5",
+                          "--origin", "53.5461,9.9665,3", "--heading", "117"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (std::size_t n = 1; n <= sorties(k).size(); ++n) {
+      const auto whole = lines_of(file(fmt::format("uav{}_sortie{}.csv", k, n)));
+      ASSERT_GT(whole.size(), 6u) << "a sortie longer than the cap";
+      // The parts, each but the first starting with the last waypoint of the one before.
+      std::vector<std::string> joined;
+      int parts = 0;
+      for (int p = 1;; ++p, ++parts) {
+        const auto path = fmt::format("{}/uav{}_sortie{}-part{}.csv", out, k, n, p);
+        if (!fs::exists(path)) break;
+        const auto rows = lines_of(io::read_file(path));
+        EXPECT_LE(rows.size(), 6u) << path;  // header + at most 5 waypoints
+        const auto body = [](const std::string& row) {
+          return row.substr(row.find(','));  // without the index column
+        };
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+          if (p > 1 && i == 1) {
+            EXPECT_EQ(body(rows[i]), body(joined.back())) << path;
+            continue;
+          }
+          joined.push_back(rows[i]);
+        }
+      }
+      EXPECT_GT(parts, 1) << k << " " << n;
+      ASSERT_EQ(joined.size() + 1, whole.size()) << k << " " << n;
+      for (std::size_t i = 0; i < joined.size(); ++i) {
+        EXPECT_EQ(joined[i].substr(joined[i].find(',')),
+                  whole[i + 1].substr(whole[i + 1].find(',')));
+      }
+    }
+  }
+  EXPECT_FALSE(fs::exists(out + "/uav0_sortie1.csv"));
+}
+
+TEST_F(SortieFiles, ThePreflightReportListsTheFilesOfEverySortie) {
+  const auto report = nlohmann::json::parse(io::read_file(dir_ + "/report/preflight.json"));
+  std::size_t row = 0;
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (std::size_t n = 1; n <= sorties(k).size(); ++n, ++row) {
+      const auto& s = report["sorties"].at(row);
+      EXPECT_EQ(s["uav"], k);
+      EXPECT_EQ(s["sortie"], n);
+      EXPECT_EQ(s["file_names"]["qgc"],
+                nlohmann::json::array({fmt::format("uav{}_sortie{}.plan", k, n)}));
+      EXPECT_EQ(s["file_names"]["csv"],
+                nlohmann::json::array({fmt::format("uav{}_sortie{}.csv", k, n)}));
+      EXPECT_EQ(s["waypoints"].get<std::size_t>() + 1,
+                lines_of(file(fmt::format("uav{}_sortie{}.csv", k, n))).size());
+    }
+  }
+  EXPECT_EQ(row, report["sorties"].size());
+  const auto warnings = report["warnings"].dump();
+  EXPECT_EQ(warnings.find("as one flight"), std::string::npos) << warnings;
+  const auto md = io::read_file(dir_ + "/report/preflight.md");
+  EXPECT_NE(md.find("uav1_sortie2.plan"), std::string::npos) << md;
+}
+
+TEST_F(SortieFiles, ExportOfATraceSaysItCannotCutSorties) {
+  const auto r = run_cli({"export", dir_ + "/trace.json", "--out", dir_ + "/from-trace"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("the export of a trace does not cut it into sorties"), std::string::npos)
+      << r.out;
+  EXPECT_TRUE(fs::exists(dir_ + "/from-trace/uav0.csv"));
+}
+
+TEST(SortieFilesUnlimited, WithoutAnEnduranceEachUavFliesOneFile) {
+  const auto dir = make_temp_dir("sortie-files-unlimited");
+  const auto r = run_cli({"plan", "-a", "lawnmower", "-n", "2", "--launch", "0,0", "--export",
+                          dir + "/files", "--format", "csv"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/files/uav0.csv"));
+  EXPECT_TRUE(fs::exists(dir + "/files/uav1.csv"));
+  EXPECT_FALSE(fs::exists(dir + "/files/uav0_sortie1.csv"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace hullinspect::testing
