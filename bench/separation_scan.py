@@ -19,7 +19,9 @@ import sys
 
 def planners(cli):
     out = subprocess.run([cli, "list", "planners"], capture_output=True, text=True, check=True)
-    return [line.split()[0] for line in out.stdout.splitlines() if line and not line[0].isspace()]
+    # "  name: description" at two spaces; options are indented further.
+    return [line.strip().split(":")[0].split()[0] for line in out.stdout.splitlines()
+            if line.startswith("  ") and not line.startswith("   ")]
 
 
 def config(d, algorithms, instances):

@@ -228,8 +228,26 @@ void Deconfliction::adjust(const Simulator& sim, std::span<Action> actions) {
         decide_working(k, actions);
         break;
     }
-    if (lead_[uk] > 0) --lead_[uk];
+    if (lead_[uk] > 0) end_of_lead_step(k);
   }
+}
+
+// A lead runs out after `lead_steps_` steps with no other airborne UAV within 2D (the leader has
+// got past), at once when its planner wants it to stay where it is (it is not passing anyone), and
+// in any case after 4 · `lead_steps_` steps.
+void Deconfliction::end_of_lead_step(int k) {
+  const auto uk = static_cast<std::size_t>(k);
+  const bool staying = kind_[uk] == Kind::kWorking && desire_[uk] == uavs_[uk].pos;
+  if (staying || step_ - lead_since_[uk] >= 4LL * lead_steps_) {
+    lead_[uk] = 0;
+    return;
+  }
+  for (std::size_t j = 0; j < uavs_.size(); ++j) {
+    if (j != uk && uavs_[j].airborne && grid::chebyshev(uavs_[j].pos, uavs_[uk].pos) <= 2 * d_) {
+      return;  // still passing
+    }
+  }
+  --lead_[uk];
 }
 
 // A UAV away at its site follows its leg when the next step is allowed. Otherwise it holds (on

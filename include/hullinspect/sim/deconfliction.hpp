@@ -49,6 +49,7 @@ class Deconfliction {
   void settle(int k, grid::Cell c, bool airborne);
   void decide_away(int k);
   void decide_working(int k, std::span<Action> actions);
+  void end_of_lead_step(int k);
 
   int d_;
   int width_;
@@ -67,8 +68,9 @@ class Deconfliction {
   std::vector<int> rank_;               // position in this step's order (lower goes first)
   std::vector<int> order_;
   std::vector<int> waited_;  // consecutive steps held back
-  // Precedence: a UAV held back for `patience_` steps leads for `lead_steps_` steps, the older
-  // lead first, so that it passes before the UAV it waited for can take precedence in turn.
+  // Precedence: a UAV held back for `patience_` steps leads, the older lead first, until it has
+  // been clear of the others for `lead_steps_` steps (end_of_lead_step), so that it passes before
+  // the UAV it waited for can take precedence in turn.
   int lead_steps_;
   std::vector<int> lead_;             // steps of precedence left
   std::vector<long long> lead_since_;  // the step its precedence began
