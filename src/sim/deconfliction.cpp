@@ -61,9 +61,9 @@ bool Deconfliction::allowed(int k, grid::Cell c, bool airborne, int* blocker) co
     bool clash = false;
     if (settled_[j] != 0) {
       if (next_air_[j] == 0) continue;
-      clash = grid::chebyshev(c, next_[j]) < d_ ||
-              (me.airborne && uavs_[j].airborne && c != me.pos && c == uavs_[j].pos &&
-               next_[j] == me.pos);
+      clash =
+          grid::chebyshev(c, next_[j]) < d_ || (me.airborne && uavs_[j].airborne && c != me.pos &&
+                                                c == uavs_[j].pos && next_[j] == me.pos);
     } else {
       clash = uavs_[j].airborne && grid::chebyshev(c, uavs_[j].pos) < d_;
     }
@@ -277,8 +277,8 @@ void Deconfliction::decide_away(int k) {
   }
   // Flying home on plane 2 in the way of a UAV flying home ahead of it in the order (two legs
   // converging on one site): it side-steps as a working UAV does and flies home from there.
-  const bool cruising = u.airborne && m.airborne && m.leg == AwayMove::Leg::kHome && u.z == 2 &&
-                        m.pos != u.pos;
+  const bool cruising =
+      u.airborne && m.airborne && m.leg == AwayMove::Leg::kHome && u.z == 2 && m.pos != u.pos;
   if (cruising && in_way(k, blocker)) {
     const Action a = evade(k, blocker);
     if (a != Action::kHover) {

@@ -81,11 +81,11 @@ std::vector<Case> cases() {
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& param) {
-  std::string name = param.param.algorithm + "_" + std::to_string(param.param.uavs) + "uavs_D" +
-                     std::to_string(param.param.separation) + "_" +
-                     (param.param.endurance > 0
-                          ? std::to_string(static_cast<int>(param.param.endurance)) + "s"
-                          : std::string("unlimited"));
+  std::string name =
+      param.param.algorithm + "_" + std::to_string(param.param.uavs) + "uavs_D" +
+      std::to_string(param.param.separation) + "_" +
+      (param.param.endurance > 0 ? std::to_string(static_cast<int>(param.param.endurance)) + "s"
+                                 : std::string("unlimited"));
   std::replace(name.begin(), name.end(), '-', '_');
   return name;
 }

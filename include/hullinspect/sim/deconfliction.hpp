@@ -58,24 +58,24 @@ class Deconfliction {
   int patience_;  // steps a UAV waits before it takes precedence
 
   std::span<const UavState> uavs_;
-  std::vector<AwayMove> away_;          // per UAV away at its site: its next step
+  std::vector<AwayMove> away_;  // per UAV away at its site: its next step
   std::vector<Kind> kind_;
-  std::vector<grid::Cell> desire_;      // the cell the planner's action (or the leg) leads to
+  std::vector<grid::Cell> desire_;        // the cell the planner's action (or the leg) leads to
   std::vector<std::uint8_t> desire_air_;  // 1: airborne there
-  std::vector<grid::Cell> next_;        // the cell decided for the step (valid once settled)
-  std::vector<std::uint8_t> next_air_;  // 1: airborne there
-  std::vector<std::uint8_t> settled_;   // 1: next_ is decided
-  std::vector<int> rank_;               // position in this step's order (lower goes first)
+  std::vector<grid::Cell> next_;          // the cell decided for the step (valid once settled)
+  std::vector<std::uint8_t> next_air_;    // 1: airborne there
+  std::vector<std::uint8_t> settled_;     // 1: next_ is decided
+  std::vector<int> rank_;                 // position in this step's order (lower goes first)
   std::vector<int> order_;
   std::vector<int> waited_;  // consecutive steps held back
   // Precedence: a UAV held back for `patience_` steps leads, the older lead first, until it has
   // been clear of the others for `lead_steps_` steps (end_of_lead_step), so that it passes before
   // the UAV it waited for can take precedence in turn.
   int lead_steps_;
-  std::vector<int> lead_;             // steps of precedence left
+  std::vector<int> lead_;              // steps of precedence left
   std::vector<long long> lead_since_;  // the step its precedence began
   long long step_ = 0;
-  std::vector<int> side_;    // the sticky side (+1/−1) of a side-step, 0 none
+  std::vector<int> side_;  // the sticky side (+1/−1) of a side-step, 0 none
   std::vector<std::uint8_t> orders_;
   long long held_ = 0;
   long long side_steps_ = 0;
