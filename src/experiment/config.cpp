@@ -8,9 +8,9 @@
 
 #include "config_battery.hpp"
 #include "config_launch.hpp"
+#include "config_speed.hpp"
 #include "config_no_fly.hpp"
 #include "config_scenarios.hpp"
-#include "config_speed.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/files/atomic_file.hpp"
@@ -383,8 +383,8 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
                 "sweeps",        "s1",          "s2",        "theta",         "uavs",
                 "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
                 "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly",      "launch",    "separation",    "speed",
-                "climb-speed",   "battery"});
+                "frame-spacing", "no-fly",      "launch",        "separation",    "speed",
+                "climb-speed", "battery"});
   for (const char* key :
        {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
     remember_line(c, root, key);

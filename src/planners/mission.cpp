@@ -77,8 +77,7 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   }
 
   DirectPartitionSource direct;
-  grid::DistanceService distances =
-      world::make_distance_service(sim.reachability(), sim.flight_steps());
+  grid::DistanceService distances = world::make_distance_service(sim.reachability(), sim.flight_steps());
   PlannerContext context{hull,
                          params,
                          instance.prior,
