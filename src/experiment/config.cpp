@@ -231,13 +231,10 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
     c.hull = rectangle(width, height);
   } else {
     try {
-      if (c.hull_spec == "default" || c.hull_spec == "builtin:default") {
-        c.hull = std::make_shared<const world::HullMask>(world::default_hull());
-      } else {
-        std::filesystem::path path(c.hull_spec);
-        if (path.is_relative()) path = base_dir / path;
-        c.hull = std::make_shared<const world::HullMask>(world::load_hull(path));
-      }
+      // The names the CLI's --hull takes (default, dtc) are names, not files beside the config.
+      std::filesystem::path path(c.hull_spec);
+      if (!world::is_hull_name(c.hull_spec) && path.is_relative()) path = base_dir / path;
+      c.hull = std::make_shared<const world::HullMask>(world::load_hull(path));
     } catch (const InputError& e) {
       f.fail_at(hull_line, "hull", e.what());
     }

@@ -249,8 +249,11 @@ TraceCounts check_motion(const TraceChecker& check, const json& frames, const Tr
       }
     }
     if (m.separation > 0 && m.uavs > 1) {
+      // Only airborne UAVs count, as in the simulator: UAVs on the ground at a site have landed.
       for (std::size_t a = 0; a < m.uavs; ++a) {
+        if (!now[a].airborne) continue;
         for (std::size_t b = a + 1; b < m.uavs; ++b) {
+          if (!now[b].airborne) continue;
           const grid::Cell pa = now[a].pos;
           const grid::Cell pb = now[b].pos;
           // Two UAVs that exchange cells pass through each other (separation 0 for the step).
@@ -298,8 +301,13 @@ void check_counts(const TraceChecker& check, const json& result, const TraceMiss
     agree("separation_conflicts", counts.separation_conflicts,
           fmt::format("{} conflicting pair-steps", counts.separation_conflicts) +
               (counts.first_conflict.empty() ? "" : " (the first " + counts.first_conflict + ")"));
-    agree("min_separation", *counts.min_separation,
-          fmt::format("a smallest separation of {}", *counts.min_separation));
+    if (counts.min_separation) {
+      agree("min_separation", *counts.min_separation,
+            fmt::format("a smallest separation of {}", *counts.min_separation));
+    } else if (result.contains("min_separation")) {
+      // No two UAVs were ever airborne together, so there is no separation to report.
+      check.fail("result.min_separation", "present, but no two UAVs are airborne together");
+    }
   }
 }
 

@@ -116,8 +116,12 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
     t0 = Clock::now();
     planner.decide(sim.view(), actions);
     planner_seconds += seconds_since(t0);
-    if (deconfliction) deconfliction->adjust(sim.uavs(), actions);
-    sim.step(actions);
+    if (deconfliction) {
+      deconfliction->adjust(sim, actions);
+      sim.step(actions, deconfliction->away_orders());
+    } else {
+      sim.step(actions);
+    }
     for (auto* o : options.observers) o->on_step(sim, planner);
     // A planner whose working UAVs have nothing left to do will only hover: when the hull is not
     // complete (e.g. a failed UAV's region under Part-TSP), the mission cannot complete.

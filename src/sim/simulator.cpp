@@ -121,6 +121,10 @@ void Simulator::fail_uav_at(int uav, int from_time) {
 }
 
 void Simulator::step(std::span<const Action> actions) {
+  step(actions, {});
+}
+
+void Simulator::step(std::span<const Action> actions, std::span<const std::uint8_t> away_orders) {
   if (finished())
     throw LogicError(fmt::format("step() called on a finished mission (t = {})", time_));
   if (actions.size() != uavs_.size()) {
@@ -146,7 +150,15 @@ void Simulator::step(std::span<const Action> actions) {
     if (u.failed) continue;
     const bool was_airborne = u.airborne;
     if (u.away_left > 0) {
-      advance_away(k);
+      const std::uint8_t order = k < away_orders.size() ? away_orders[k] : kGo;
+      if (order == kHold) {
+        // Waiting on the ground, or hovering where it is: the leg resumes next step.
+        ++count.steps_away;
+      } else {
+        if (order == kTurnBack) turn_back(k);
+        if (order >= kDetour) detour(k, moved(u.pos, static_cast<Action>(order - kDetour)));
+        advance_away(k);
+      }
       use_battery(k, was_airborne);
       continue;
     }
@@ -206,14 +218,19 @@ void Simulator::step(std::span<const Action> actions) {
 }
 
 // Every pair once per step: n(n − 1)/2 comparisons, nothing allocated; nothing at all when D = 0.
-// Every UAV is airborne and a failed one still occupies its cell, so every pair counts.
+// Only airborne UAVs count (a failed one still occupies its cell): a UAV on the ground at its
+// launch site has landed, and several may stand on one site.
 void Simulator::check_separation() {
   const int d = params_.separation;
   if (d <= 0 || uavs_.size() < 2) return;
   int smallest = result_.min_separation.value_or(std::numeric_limits<int>::max());
+  bool measured = false;
   for (std::size_t a = 0; a < uavs_.size(); ++a) {
+    if (!uavs_[a].airborne) continue;
     const grid::Cell pa = uavs_[a].pos;
     for (std::size_t b = a + 1; b < uavs_.size(); ++b) {
+      if (!uavs_[b].airborne) continue;
+      measured = true;
       const grid::Cell pb = uavs_[b].pos;
       int gap = grid::chebyshev(pa, pb);
       // Two UAVs that exchange cells pass through each other: separation 0 for that step.
@@ -230,7 +247,7 @@ void Simulator::check_separation() {
       }
     }
   }
-  result_.min_separation = smallest;
+  if (measured) result_.min_separation = smallest;
 }
 
 // A step flown (or taken off or landed in) uses one step of battery; the step that ends a swap
@@ -322,6 +339,71 @@ void Simulator::return_for_swap(int uav) {
   u.away_left = static_cast<int>(path.size());
 }
 
+std::vector<Simulator::AwayStep> Simulator::flight_back(std::size_t k) const {
+  // From the cell before the one it is on back along the cells it has flown since its take-off,
+  // and down at the site.
+  const auto& path = away_path_[k];
+  const std::size_t b = out_begin_[k];
+  std::vector<AwayStep> home;
+  for (std::size_t i = away_next_[k]; i-- > b + 1;) home.push_back(AwayStep{path[i - 1].pos});
+  home.push_back(AwayStep{path[b].pos, 2, 0});
+  return home;
+}
+
+void Simulator::turn_back(std::size_t k) {
+  auto& path = away_path_[k];
+  std::vector<AwayStep> legs = flight_back(k);
+  // Then the same take-off and flight out again.
+  const auto out = path.begin() + static_cast<std::ptrdiff_t>(out_begin_[k]);
+  landed_end_[k] = out_begin_[k] = legs.size();
+  legs.insert(legs.end(), out, path.end());
+  path = std::move(legs);
+  away_next_[k] = 0;
+  uavs_[k].away_left = static_cast<int>(path.size());
+}
+
+void Simulator::detour(std::size_t k, grid::Cell c) {
+  auto& path = away_path_[k];
+  const std::vector<AwayStep> after(path.begin() + static_cast<std::ptrdiff_t>(landed_end_[k]),
+                                    path.end());
+  const std::size_t ground = out_begin_[k] - landed_end_[k];
+  UavState& u = uavs_[k];
+  const grid::Cell here = u.pos;
+  path.assign(1, AwayStep{c});
+  u.pos = c;
+  append_flight_home(k);
+  u.pos = here;  // advance_away moves it
+  landed_end_[k] = path.size();
+  out_begin_[k] = landed_end_[k] + ground;
+  path.insert(path.end(), after.begin(), after.end());
+  away_next_[k] = 0;
+  u.away_left = static_cast<int>(path.size());
+}
+
+void Simulator::next_away_moves(std::span<AwayMove> out) const {
+  for (std::size_t k = 0; k < uavs_.size() && k < out.size(); ++k) {
+    const UavState& u = uavs_[k];
+    if (u.failed || u.away_left == 0) continue;
+    const auto& path = away_path_[k];
+    const std::size_t next = away_next_[k];
+    const AwayStep& s = path[next];
+    AwayMove& m = out[k];
+    m.pos = s.pos;
+    m.airborne = (s.flags & kAirborne) != 0;
+    m.leg = next < landed_end_[k]  ? AwayMove::Leg::kHome
+            : next < out_begin_[k] ? AwayMove::Leg::kGround
+                                   : AwayMove::Leg::kOut;
+    m.site = legs_.site_of[k];
+    m.back = s.pos;
+    m.back_airborne = m.airborne;
+    if (m.leg == AwayMove::Leg::kOut && u.airborne) {
+      const std::size_t b = out_begin_[k];
+      m.back = next >= b + 2 ? path[next - 2].pos : path[b].pos;
+      m.back_airborne = next >= b + 2;
+    }
+  }
+}
+
 void Simulator::start_homing() {
   homing_ = true;
   for (std::size_t k = 0; k < uavs_.size(); ++k) {
@@ -336,11 +418,7 @@ void Simulator::start_homing() {
       path.resize(next);  // on the ground: it stays
     } else if (u.away_left > 0) {
       // On its way out: it turns back along the positions it has flown, to the ground.
-      const std::size_t b = out_begin_[k];
-      std::vector<AwayStep> home;
-      for (std::size_t i = next; i-- > b + 1;) home.push_back(AwayStep{path[i - 1].pos});
-      home.push_back(AwayStep{path[b].pos, 2, 0});
-      path = std::move(home);
+      path = flight_back(k);
       away_next_[k] = 0;
     } else {
       path.clear();

@@ -260,10 +260,18 @@ const HullMask& default_hull() {
   return hull;
 }
 
+bool is_hull_name(std::string_view spec) {
+  return spec == "default" || spec == "builtin:default" || is_named_mesh_hull(spec);
+}
+
 HullMask load_hull(const std::filesystem::path& path) {
-  if (path == "default" || path == "builtin:default") return default_hull();
   const std::string name = path.string();
+  if (name == "default" || name == "builtin:default") return default_hull();
   if (is_named_mesh_hull(name) || is_mesh_path(path)) return load_any_hull(path);
+  // A word without an extension that names no file was most likely meant as a hull name.
+  if (std::error_code ec; path.extension().empty() && !std::filesystem::exists(path, ec)) {
+    throw InputError(name, 0, "no such hull file, and not a hull name (default, dtc)");
+  }
   const std::string bytes = io::read_file(path, kMaxHullFileBytes, "the hull file");
   if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '0' && bytes[1] <= '9') {
     return parse_pgm_mask(bytes, name);

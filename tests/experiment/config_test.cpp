@@ -18,6 +18,8 @@
 #include "hullinspect/experiment/plan.hpp"
 #include "hullinspect/experiment/presets.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "hullinspect/world/hull.hpp"
+#include "support/mesh_fixtures.hpp"
 
 namespace hullinspect::experiment {
 namespace {
@@ -442,6 +444,32 @@ TEST(ExperimentConfigLaunch, SitesAndTimesReachEveryMissionAndTheRunIds) {
   const auto back = config_from_json(config_json(sites.config()), "manifest.json");
   EXPECT_EQ(config_json(back), config_json(sites.config()));
   EXPECT_EQ(back.launch_sites, sites.config().launch_sites);
+}
+
+}  // namespace
+}  // namespace hullinspect::experiment
+
+namespace hullinspect::experiment {
+namespace {
+
+// `hull:` takes the names the CLI's --hull takes, never as files beside the config.
+TEST(ExperimentConfigHull, NamesAreTheCliHullNames) {
+  const auto c = parse("hull: default\n");
+  EXPECT_EQ(c.hull->source(), world::default_hull().source());
+  EXPECT_EQ(c.hull_cells, world::default_hull().cell_count());
+  std::string why;
+  if (!testing::installed_dtc(why)) GTEST_SKIP() << "the DTC is not installed (" << why << ")";
+  const auto dtc = parse("hull: dtc\n");
+  const world::HullMask cli = world::load_hull("dtc");
+  EXPECT_EQ(dtc.hull->source(), "dtc");
+  EXPECT_EQ(dtc.hull_width, cli.width());
+  EXPECT_EQ(dtc.hull_height, cli.height());
+  EXPECT_EQ(dtc.hull_cells, cli.cell_count());
+}
+
+TEST(ExperimentConfigHull, AnUnknownNameIsRefusedAsSuch) {
+  EXPECT_EQ(error_of("hull: dtx\n"),
+            "bad.yaml:1: hull: /cfg/dtx: no such hull file, and not a hull name (default, dtc)");
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ TEST(Deconfliction, HeadOnUavsPassWithoutConflict) {
     for (int t = 0; t < 100 && !arrived; ++t) {
       std::vector<Action> actions = {step_towards(sim.uavs()[0].pos, goal[0]),
                                      step_towards(sim.uavs()[1].pos, goal[1])};
-      layer.adjust(sim.uavs(), actions);
+      layer.adjust(sim, actions);
       sim.step(actions);
       arrived = sim.uavs()[0].pos == goal[0] && sim.uavs()[1].pos == goal[1];
     }

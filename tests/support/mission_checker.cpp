@@ -34,14 +34,16 @@ void MissionChecker::on_start(const sim::Simulator& sim, const planners::Planner
   }
 }
 
-// Pairwise, from the UAV states alone (the rule of docs/model.md, "Separation"), independently of
-// the simulator's own count, which must agree.
+// Pairwise, from the UAV states alone (the rule of docs/model.md, "Separation": airborne UAVs
+// only), independently of the simulator's own count, which must agree.
 void MissionChecker::check_separation(const sim::Simulator& sim) {
   const int d = sim.params().separation;
   if (d <= 0) return;
   const auto uavs = sim.uavs();
   for (std::size_t a = 0; a < uavs.size(); ++a) {
+    if (!uavs[a].airborne) continue;
     for (std::size_t b = a + 1; b < uavs.size(); ++b) {
+      if (!uavs[b].airborne) continue;
       const grid::Cell pa = uavs[a].pos;
       const grid::Cell pb = uavs[b].pos;
       const bool exchanged = pa != pb && pa == last_uavs_[b].pos && pb == last_uavs_[a].pos;
@@ -58,7 +60,7 @@ void MissionChecker::check_separation(const sim::Simulator& sim) {
     fail(fmt::format("t={} the simulator counts {} separation conflicts, the checker {}",
                      sim.time(), sim.separation_conflicts(), conflicts_));
   }
-  if (uavs.size() > 1 && sim.min_separation() != min_separation_) {
+  if (sim.min_separation().value_or(-1) != min_separation_) {
     fail(fmt::format("t={} the simulator's min_separation {} is not the checker's {}", sim.time(),
                      sim.min_separation().value_or(-1), min_separation_));
   }

@@ -37,6 +37,22 @@ class Simulator {
   /// Throws LogicError if an action would leave the grid or enter a no-fly position (a planner
   /// error), the mission is already finished, or, with strict_separation, two UAVs conflict.
   void step(std::span<const Action> actions);
+  /// The same, with a word per UAV from the deconfliction layer for the UAVs away at their launch
+  /// sites (ignored for the others): kGo flies the next step of the leg, kHold keeps the UAV as it
+  /// is for the step (waiting on the ground, or hovering), kTurnBack turns a UAV flying out back to
+  /// its site, where it lands and then takes off again for the same flight out, and
+  /// kDetour + a move (an Action) makes a UAV flying home on plane 2 take that move and fly home
+  /// from there. Empty: all kGo.
+  static constexpr std::uint8_t kGo = 0;
+  static constexpr std::uint8_t kHold = 1;
+  static constexpr std::uint8_t kTurnBack = 2;
+  static constexpr std::uint8_t kDetour = 8;
+  void step(std::span<const Action> actions, std::span<const std::uint8_t> away_orders);
+
+  /// What each UAV away at its launch site does in the next step when told kGo (and where
+  /// kTurnBack takes it); entries of the other UAVs are left as they are. `out` has one entry
+  /// per UAV.
+  void next_away_moves(std::span<AwayMove> out) const;
 
   /// UAV `uav` fails at the start of step `from_time` (t → t+1): from then on its actions are
   /// ignored, it stays put (a UAV in transit stays in transit) and senses nothing. The UAV reads
@@ -108,6 +124,10 @@ class Simulator {
   grid::Cell append_flight_home(std::size_t k);
   void use_battery(std::size_t k, bool was_airborne);
   void check_separation();
+  // The outbound UAV k flies back to its site, lands, and takes off again for the same flight.
+  void turn_back(std::size_t k);
+  // UAV k, flying home, moves to `c` and flies home from there; what followed its landing stays.
+  void detour(std::size_t k, grid::Cell c);
 
   const world::HullMask& hull_;
   const grid::Grid<std::int8_t>& truth_;
@@ -144,6 +164,9 @@ class Simulator {
     std::int8_t z = 2;
     std::uint8_t flags = kAirborne;
   };
+  /// The way back of UAV k flying out: the cells it has flown since its take-off, reversed, then
+  /// the landing at its site.
+  std::vector<AwayStep> flight_back(std::size_t k) const;
   std::vector<std::vector<AwayStep>> away_path_;  // per UAV: its state at each step away
   std::vector<std::size_t> away_next_;            // per UAV: the next entry of away_path_
   // Per UAV: it is on the ground while its next entry of away_path_ lies in [landed_end_,

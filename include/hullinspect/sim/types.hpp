@@ -71,6 +71,24 @@ struct UavState {
   bool in_transit() const { return transit_left > 0 || away_left > 0 || flight_left > 0; }
 };
 
+/// What a UAV away at its launch site (UavState::away_left > 0) does in the next step unless the
+/// deconfliction layer holds it (docs/model.md, "Take-offs and landings under separation").
+struct AwayMove {
+  enum class Leg : std::uint8_t {
+    kHome,    ///< flying home, descending or landing
+    kGround,  ///< on the ground swapping its battery
+    kOut,     ///< on the ground before its take-off, taking off, flying out or descending
+  };
+  grid::Cell pos;         ///< where the next step ends
+  bool airborne = false;  ///< whether it ends the next step airborne
+  Leg leg = Leg::kOut;
+  int site = 0;  ///< its launch site's index
+  /// Flying out: where turning back (Simulator::kTurnBack) ends the next step, and whether
+  /// airborne there.
+  grid::Cell back;
+  bool back_airborne = false;
+};
+
 /// Event bits of a reading.
 inline constexpr std::uint8_t kEventFirstSeen = 1;   ///< first observation of the cell by anyone
 inline constexpr std::uint8_t kEventDetection = 2;   ///< first sight of this corroded cell at z = 2

@@ -57,6 +57,9 @@ const HullMask& default_hull();
 /// hull_geometry.hpp). Throws InputError naming the file and line. Meshes and named mesh hulls
 /// ("dtc") are loaded by mesh::load_any_hull, which falls back to this.
 HullMask load_hull(const std::filesystem::path& path);
+/// Whether `spec` names a hull rather than a file ("default", "builtin:default" or a named mesh
+/// hull such as "dtc"): load_hull takes it as it is, never relative to a directory.
+bool is_hull_name(std::string_view spec);
 
 /// Parses a text mask: rows top (y = b-1) first, 'X' or '#' hull, '.' non-hull, lines starting
 /// with ';' are comments. `source` names the text in errors.
