@@ -31,8 +31,8 @@ TEST(ExperimentConfigSpeed, SpeedsReachEveryMissionTheManifestAndTheRunIds) {
   EXPECT_FALSE(config_json(paper.config()).contains("speed"));
   const auto back = config_from_json(config_json(fast.config()), "manifest.json");
   EXPECT_EQ(config_json(back), config_json(fast.config()));
-  EXPECT_EQ(back.speed, 2.0);
-  EXPECT_EQ(back.climb_speed, 0.25);
+  EXPECT_EQ(back.mission.speed, 2.0);
+  EXPECT_EQ(back.mission.climb_speed, 0.25);
 }
 
 TEST(ExperimentConfigSpeed, LaunchTimesMayReachTheTimeLimitInSeconds) {
