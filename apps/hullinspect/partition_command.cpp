@@ -306,7 +306,7 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
       "reported and written), 2 invalid input, 1 other failure.\n"
       "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
   add_declared_options(*cmd, args->declared, declarations_named({"uavs", "hull"}));
-  cmd->get_option("--uavs")->required();
+  cmd->get_option("--uavs")->required()->default_str("");  // no default: it must be given
   add_mesh_options(*cmd, args->declared);
   add_declared_options(*cmd, args->declared, declarations_named({"start"}));
   cmd->add_option("--seed", args->seed, "Partitioner seed")->capture_default_str();
