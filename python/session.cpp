@@ -29,7 +29,8 @@ std::uint8_t plane_bit(int plane) {
 Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionSpec spec,
                  grid::Grid<std::int8_t> prior, bool record_trace)
     : hull_(std::move(hull)), spec_(std::move(spec)) {
-  planners::validate(spec_, *hull_);
+  // The start cells, computed once by the validation: the planner and the simulator use them.
+  starts_ = planners::validate(spec_, *hull_);
   // A live session is fed by real UAVs already in the air; the simulated legs between launch
   // sites and the hull (docs/model.md §12) have no counterpart in it.
   if (!spec_.params.launch_sites.empty()) {
@@ -42,7 +43,6 @@ Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionS
   for (int i : hull_->cells()) instance_.truth[i] = 0;
   instance_.prior = std::move(prior);
   instance_.seed = spec_.seed;
-  starts_ = world::start_cells(spec_.params, *hull_);
 
   initial_map_ = grid::Grid<std::int8_t>(hull_->width(), hull_->height(), sim::kNotHull);
   for (int i : hull_->cells()) {
@@ -185,7 +185,7 @@ std::vector<sim::Action> Session::step(const std::vector<CellReading>& readings,
     instance_.truth(r.x, r.y) = static_cast<std::int8_t>(r.corroded ? 1 : 0);
   }
   if (!sim_) {
-    sim_.emplace(*hull_, instance_, spec_.params);
+    sim_.emplace(*hull_, instance_, spec_.params, starts_);
     if (recorder_) recorder_->on_start(*sim_, *planner_);
   } else {
     for (int k : failed) sim_->fail_uav_at(k, sim_->time());

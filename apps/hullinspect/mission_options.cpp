@@ -21,6 +21,17 @@ std::vector<const planners::MissionOptionDecl*> declarations_where(
 
 }  // namespace
 
+std::vector<const planners::MissionOptionDecl*> declarations_named(
+    std::initializer_list<std::string_view> keys) {
+  std::vector<const planners::MissionOptionDecl*> out;
+  for (const std::string_view key : keys) {
+    const planners::MissionOptionDecl* d = planners::find_mission_option(key);
+    if (d == nullptr) throw LogicError(fmt::format("no mission option '{}' is declared", key));
+    out.push_back(d);
+  }
+  return out;
+}
+
 void add_declared_options(CLI::App& cmd, MissionArgs& input,
                           const std::vector<const planners::MissionOptionDecl*>& decls) {
   for (const planners::MissionOptionDecl* d : decls) {

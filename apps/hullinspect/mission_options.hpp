@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <initializer_list>
+#include <string_view>
 #include <vector>
 
 #include "hullinspect/planners/mission_input.hpp"
@@ -24,6 +26,9 @@ using planners::parse_xy;
 /// (a refused value is the parse error "--KEY: problem").
 void add_declared_options(CLI::App& cmd, MissionArgs& input,
                           const std::vector<const planners::MissionOptionDecl*>& decls);
+/// The declarations of `keys` ("uavs", "start"), in that order.
+std::vector<const planners::MissionOptionDecl*> declarations_named(
+    std::initializer_list<std::string_view> keys);
 /// Every mission option, and the planners' options in the footer.
 void add_mission_options(CLI::App& cmd, MissionArgs& args);
 /// How a mesh given as the hull is imported (read into args.mesh).

@@ -29,18 +29,15 @@ constexpr std::string_view kRegionSymbols =
     "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
 
 struct PartitionArgs {
-  int uavs = 0;
-  std::string hull = "default";
-  std::vector<std::string> starts;
+  // The mission options this command shares (--uavs, --hull, --start, --s1, --s2, the mesh and
+  // no-fly options), read through their declarations.
+  MissionArgs declared;
   std::uint64_t seed = 0;
   std::string partitioner{partition::kDefaultPartitioner};
   std::vector<std::string> options;  // key=value
   bool json = false;
   bool no_fallback = false;  // the partitioner's own result, without the missions' fallback
   std::string out_path;
-  int s1 = world::MissionParams{}.s1;  // footprints: which flight component sees a hull cell
-  int s2 = world::MissionParams{}.s2;
-  MissionArgs declared;  // the mesh (how a mesh --hull is imported) and no-fly options
 };
 
 // Explicit starts that snap onto one hull cell: name the cells as the user gave them.
@@ -120,7 +117,7 @@ std::string region_mask(const world::HullMask& hull, const partition::Partition&
       p.fallback.empty()
           ? args.partitioner
           : fmt::format("{} (as a mission falls back from {})", p.fallback, args.partitioner),
-      plural(args.uavs, "UAV"), args.seed, hull.source(), hull.height() - 1);
+      plural(args.declared.uavs, "UAV"), args.seed, hull.source(), hull.height() - 1);
   for (int y = hull.height() - 1; y >= 0; --y) {
     for (int x = 0; x < hull.width(); ++x) {
       const int k = p.owner(x, y);
@@ -135,7 +132,7 @@ void print_summary(const PartitionArgs& args, const world::HullMask& hull,
                    const std::vector<grid::Cell>& starts, const partition::Partition& p,
                    const std::vector<bool>& connected, const FlightSpace& flight) {
   std::cout << fmt::format("{}: {} on {} ({}), seed {}\n", args.partitioner,
-                           plural(args.uavs, "UAV"), hull.source(),
+                           plural(args.declared.uavs, "UAV"), hull.source(),
                            plural(hull.cell_count(), "hull cell"), args.seed);
   if (!p.fallback.empty()) {
     std::cout << fmt::format("  partition produced by {} ({} did not converge; as in a mission)\n",
@@ -201,7 +198,7 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
                         {"produced_by", p.fallback.empty() ? args.partitioner : p.fallback},
                         {"hull", hull.source()},
                         {"hull_cells", hull.cell_count()},
-                        {"uavs", args.uavs},
+                        {"uavs", args.declared.uavs},
                         {"seed", args.seed},
                         {"iterations", p.iterations},
                         {"converged", p.converged},
@@ -219,27 +216,29 @@ nlohmann::json summary_json(const PartitionArgs& args, const world::HullMask& hu
 
 int run_partition(const PartitionArgs& args) {
   io::OutputSet outputs;
-  if (args.hull != "default") outputs.add_input(args.hull, "hull");
+  const MissionArgs& mission = args.declared;
+  if (mission.hull != "default") outputs.add_input(mission.hull, "hull");
   outputs.add_output(args.out_path, "out");
   outputs.check();
-  const world::HullMask hull = load_hull_argument(args.hull, args.declared.mesh);
+  const world::HullMask hull = load_mission_hull(mission);
   world::MissionParams params;
-  params.uavs = args.uavs;
-  params.s1 = args.s1;
-  params.s2 = args.s2;
-  for (const auto& s : args.starts) params.starts.push_back(parse_xy(s));
-  params.no_fly = build_no_fly(args.declared.no_fly, args.declared.no_fly_boxes, hull);
+  params.uavs = mission.uavs;
+  params.s1 = mission.s1;  // footprints: which flight component sees a hull cell
+  params.s2 = mission.s2;
+  for (const auto& s : mission.starts) params.starts.push_back(parse_xy(s));
+  params.no_fly = build_no_fly(mission.no_fly, mission.no_fly_boxes, hull);
+  std::vector<grid::Cell> starts;
   try {
-    world::validate(params, hull);
+    starts = world::validate(params, hull);
   } catch (const ParameterError& e) {
     // The library names the field "starts"; on this command line it is --start.
     if (e.name() != "starts") throw;
     throw ParameterError("start", e.problem());
   }
-  if (!args.out_path.empty() && args.uavs > static_cast<int>(kRegionSymbols.size())) {
+  if (!args.out_path.empty() && args.declared.uavs > static_cast<int>(kRegionSymbols.size())) {
     throw ParameterError("out",
                          fmt::format("a region mask has symbols for at most {} UAVs (got {})",
-                                     kRegionSymbols.size(), args.uavs));
+                                     kRegionSymbols.size(), args.declared.uavs));
   }
   std::unique_ptr<partition::Partitioner> partitioner;
   try {
@@ -251,7 +250,7 @@ int run_partition(const PartitionArgs& args) {
   }
   partition::PartitionRequest request;
   request.hull = &hull;
-  request.starts = world::start_cells(params, hull);
+  request.starts = std::move(starts);
   request.seed = args.seed;
   FlightSpace flight;
   if (params.no_fly) {
@@ -273,7 +272,7 @@ int run_partition(const PartitionArgs& args) {
                 [&](const partition::PartitionRequest& one) { return partitioner->partition(one); })
           : partition::partition_with_fallback(args.partitioner, parse_options(args.options),
                                                request);
-  const auto connected = connected_regions(hull, result, args.uavs, flight);
+  const auto connected = connected_regions(hull, result, args.declared.uavs, flight);
   if (!args.out_path.empty()) outputs.write(args.out_path, region_mask(hull, result, args));
   if (args.json) {
     std::cout << summary_json(args, hull, request.starts, result, connected, flight).dump() << "\n";
@@ -306,17 +305,10 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
       "Exit status: 0 converged, 3 not converged (the best connected partition found is still "
       "reported and written), 2 invalid input, 1 other failure.\n"
       "Example: hullinspect partition --uavs 4 --seed 7 --out regions.txt");
-  cmd->add_option("--uavs,-n", args->uavs, "Fleet size n (1 … number of hull cells)")->required();
-  cmd->add_option("--hull", args->hull,
-                  "Hull: 'default', 'dtc', a text mask, a PGM image, a hull JSON or a mesh "
-                  "(STL/OBJ/PLY, optionally .gz; see docs/hulls.md)")
-      ->type_name("FILE")
-      ->capture_default_str();
+  add_declared_options(*cmd, args->declared, declarations_named({"uavs", "hull"}));
+  cmd->get_option("--uavs")->required()->default_str("");  // no default: it must be given
   add_mesh_options(*cmd, args->declared);
-  cmd->add_option("--start", args->starts,
-                  "Start cell x,y of each UAV (repeat once per UAV; default: spread along the "
-                  "hull); cells off the hull are snapped to the nearest hull cell")
-      ->type_name("X,Y");
+  add_declared_options(*cmd, args->declared, declarations_named({"start"}));
   cmd->add_option("--seed", args->seed, "Partitioner seed")->capture_default_str();
   cmd->add_option("--partitioner", args->partitioner, "Partitioner: " + names)
       ->capture_default_str();
@@ -328,12 +320,8 @@ void add_partition_command(CLI::App& app, CommandAction& action) {
                 "Show the partitioner's own result, even when a mission would fall back to "
                 "transfer's partition");
   add_no_fly_options(*cmd, args->declared);
-  cmd->add_option("--s1", args->s1,
-                  "Footprint side at z = 1 (with no-fly zones: which hull cells can be inspected "
-                  "and from where)")
-      ->capture_default_str();
-  cmd->add_option("--s2", args->s2, "Footprint side at z = 2 (likewise, for detection)")
-      ->capture_default_str();
+  // With no-fly zones the footprints say which hull cells can be inspected and from where.
+  add_declared_options(*cmd, args->declared, declarations_named({"s1", "s2"}));
   cmd->add_flag("--json", args->json,
                 "Print one JSON object (partitioner, hull, hull_cells, uavs, seed, iterations, "
                 "converged, tolerance, seconds, regions, warnings)");

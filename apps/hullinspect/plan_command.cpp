@@ -92,7 +92,7 @@ int plan(const PlanArgs& args) {
   outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
-  planners::validate(spec, hull);
+  const auto starts = planners::validate(spec, hull);
   if (export_request) {  // its files are known now: one per UAV
     declare_export_files(outputs, *export_request, spec.params.uavs);
     outputs.check();
@@ -114,7 +114,7 @@ int plan(const PlanArgs& args) {
   options.observers.push_back(&recorder);
   planners::MissionSpec planned = spec;
   planned.failures = {};  // a plan is the flight without failures: none is known before take-off
-  const sim::MissionResult result = planners::run_mission(planned, hull, instance, options);
+  const sim::MissionResult result = planners::run_mission(planned, hull, instance, starts, options);
   const auto trace = recorder.finish(result);
   if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");
   ExportWritten written;

@@ -63,8 +63,9 @@ void print_summary(const planners::MissionSpec& spec, const sim::MissionResult& 
     std::cout << fmt::format(
         "  batteries: {} sorties, {} swaps, {} crashes, least left airborne {} s; lower bound "
         "T_c >= {} s, T_m >= {} s\n",
-        r.sorties(), total.swaps, r.battery_crashes, world::battery_seconds(spec.params, *r.min_battery()),
-        spec.params.seconds(r.bound_t_c), spec.params.seconds(r.bound_t_m));
+        r.sorties(), total.swaps, r.battery_crashes,
+        world::battery_seconds(spec.params, *r.min_battery()), spec.params.seconds(r.bound_t_c),
+        spec.params.seconds(r.bound_t_m));
   }
   if (r.min_separation) {
     std::cout << fmt::format("  separation {}: {} conflicts, smallest separation flown {}\n",
@@ -94,7 +95,7 @@ int run(const RunArgs& args) {
   outputs.check();
   const world::HullMask hull = load_mission_hull(args.mission);
   const planners::MissionSpec spec = build_spec(args.mission, hull);
-  planners::validate(spec, hull);
+  const auto starts = planners::validate(spec, hull);
   if (export_request) {  // its files are known now: one per UAV
     declare_export_files(outputs, *export_request, spec.params.uavs);
     outputs.check();
@@ -107,7 +108,7 @@ int run(const RunArgs& args) {
     recorder.emplace(instance, io::spec_json(spec, hull.source()));
     options.observers.push_back(&*recorder);
   }
-  const sim::MissionResult result = planners::run_mission(spec, hull, instance, options);
+  const sim::MissionResult result = planners::run_mission(spec, hull, instance, starts, options);
   if (tracing) {
     const auto trace = recorder->finish(result);
     if (!args.trace_path.empty()) outputs.write(args.trace_path, trace.dump() + "\n");

@@ -8,7 +8,7 @@
 
 #include "config_battery.hpp"
 #include "config_launch.hpp"
-#include "config_speed.hpp"
+#include "config_mission.hpp"
 #include "config_no_fly.hpp"
 #include "config_scenarios.hpp"
 #include "hullinspect/core/errors.hpp"
@@ -26,8 +26,6 @@ namespace {
 
 using detail::YamlFields;
 
-constexpr int kMaxSide = 8193;
-constexpr int kMaxUavs = 100000;
 constexpr int kMaxInstances = 1000000;
 constexpr int kMaxCurvePoints = 100000;
 
@@ -129,11 +127,8 @@ void read_user_maps(const YamlFields& f, const YAML::Node& root,
   }
   c.prior_defects_path = name("prior-defects");
   c.truth_defects_path = name("truth-defects");
-  if (root["frame-spacing"]) {
-    c.frame_spacing = f.as_number(root["frame-spacing"], "frame-spacing", 1e-3, 1e3);
-  }
-  world::FrameSpacing frames;
-  frames.frame_spacing_m = c.frame_spacing;
+  world::FrameSpacing frames;  // frame-spacing: read with the mission options
+  frames.frame_spacing_m = c.mission.frame_spacing;
   const auto defects = [&](const char* key, const char* mask_key, const std::string& file,
                            std::shared_ptr<const world::CorrosionMap>& map) {
     if (file.empty()) return;
@@ -262,12 +257,16 @@ void read_hull(const YamlFields& f, const YAML::Node& root, const std::filesyste
   c.hull_cells = c.hull->cell_count();
 }
 
-std::vector<int> int_list(const YamlFields& f, const YAML::Node& node, const std::string& key,
-                          int min, int max, ExperimentConfig& c) {
+/// An axis of the grid (`s2:`, `uavs:`): a value or a list of distinct values, each read through
+/// the mission option's declaration; their ranges are checked when the cells are validated.
+std::vector<int> axis(const YamlFields& f, const YAML::Node& node, const std::string& key,
+                      int planners::MissionInput::*field, ExperimentConfig& c) {
   std::vector<int> values;
   const auto items = f.as_list(node, key);
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const int v = f.as_int(items[i], key, min, max);
+    planners::MissionInput item;
+    detail::read_axis_item(f, items[i], key, item);
+    const int v = item.*field;
     if (std::find(values.begin(), values.end(), v) != values.end()) {
       f.fail(items[i], key, fmt::format("lists {} twice", v));
     }
@@ -354,8 +353,8 @@ std::vector<int> CurveGrid::times() const {
 world::MissionParams ExperimentConfig::timing() const {
   world::MissionParams p;
   p.cell_size_m = cell_size;
-  p.speed_m_s = speed;
-  p.climb_speed_m_s = climb_speed;
+  p.speed_m_s = mission.speed;
+  p.climb_speed_m_s = mission.climb_speed;
   return p;
 }
 
@@ -378,35 +377,29 @@ ExperimentConfig parse_config(std::string_view yaml, const std::string& source,
   c.source = source;
   c.name = std::filesystem::path(source).stem().string();
   if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  // The mission options among these keys are also declared (planners/mission_input.cpp): a key
+  // declared there and missing here is accepted after them.
   f.expect_map(root, "",
-               {"name",          "description", "hull",      "grid",          "scenarios",
-                "sweeps",        "s1",          "s2",        "theta",         "uavs",
-                "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
-                "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
-                "frame-spacing", "no-fly",      "launch",        "separation",    "speed",
-                "climb-speed", "battery"});
-  for (const char* key :
-       {"s1", "s2", "theta", "uavs", "start_z", "time_limit", "hull", "separation"}) {
-    remember_line(c, root, key);
-  }
+               detail::with_declared_keys(
+                   {"name",          "description", "hull",      "grid",          "scenarios",
+                    "sweeps",        "s1",          "s2",        "theta",         "uavs",
+                    "start_z",       "algorithms",  "instances", "first_seed",    "time_limit",
+                    "curve",         "prior",       "truth",     "prior-defects", "truth-defects",
+                    "frame-spacing", "no-fly",      "launch",    "separation",    "speed",
+                    "climb-speed",   "battery"},
+                   ""));
+  for (const char* key : {"s2", "uavs", "hull"}) remember_line(c, root, key);
   if (root["name"]) c.name = f.as_label(root["name"], "name");
   if (root["description"]) c.description = f.as_string(root["description"], "description");
+  detail::read_mission_keys(f, root, c);
   refuse_replaced_parameters(f, root);
   read_hull(f, root, base_dir, c);
   detail::read_no_fly(f, root, base_dir, c);
   read_user_maps(f, root, base_dir, c);
   c.scenarios = detail::parse_scenarios(f, root["scenarios"], root["sweeps"], c.hull->width());
   detail::read_scenario_no_fly(f, root["scenarios"], base_dir, c);
-  if (root["s1"]) c.s1 = f.as_int(root["s1"], "s1", 1, kMaxSide);
-  if (root["s2"]) c.s2 = int_list(f, root["s2"], "s2", 1, kMaxSide, c);
-  if (root["theta"]) c.theta = f.as_number(root["theta"], "theta", 0, 180);
-  if (root["uavs"]) c.uavs = int_list(f, root["uavs"], "uavs", 1, kMaxUavs, c);
-  if (root["start_z"]) c.start_z = f.as_int(root["start_z"], "start_z", 1, 2);
-  if (root["separation"]) {
-    c.separation = f.as_int(root["separation"], "separation", 0, kMaxSide);
-  }
-  if (root["time_limit"]) c.time_limit = f.as_int(root["time_limit"], "time_limit", 1, 1000000000);
-  detail::read_speed(f, root, c);
+  if (root["s2"]) c.s2 = axis(f, root["s2"], "s2", &planners::MissionInput::s2, c);
+  if (root["uavs"]) c.uavs = axis(f, root["uavs"], "uavs", &planners::MissionInput::uavs, c);
   detail::read_launch(f, root, c);
   detail::read_battery(f, root, c);
   if (root["algorithms"]) {
@@ -492,7 +485,7 @@ nlohmann::json config_json(const ExperimentConfig& c) {
   if (!c.truth_defects_path.empty()) j["truth_defects"] = c.truth_defects_path;
   if (!c.prior_hash.empty()) j["prior_hash"] = c.prior_hash;
   if (!c.truth_hash.empty()) j["truth_hash"] = c.truth_hash;
-  if (c.frame_spacing) j["frame_spacing"] = *c.frame_spacing;
+  if (c.mission.frame_spacing) j["frame_spacing"] = *c.mission.frame_spacing;
   json scenarios = json::array();
   for (const auto& s : c.scenarios) {
     json zones = json::array();
@@ -511,31 +504,32 @@ nlohmann::json config_json(const ExperimentConfig& c) {
     scenarios.push_back(std::move(scenario));
   }
   j["scenarios"] = scenarios;
-  j["s1"] = c.s1;
+  j["s1"] = c.mission.s1;
   j["s2"] = c.s2;
-  j["theta"] = c.theta;
+  j["theta"] = c.mission.theta;
   j["uavs"] = c.uavs;
-  j["start_z"] = c.start_z;
-  if (c.separation > 0) j["separation"] = c.separation;  // only when given: manifests unchanged
+  j["start_z"] = c.mission.start_z;
+  if (c.mission.separation > 0)
+    j["separation"] = c.mission.separation;  // only when given: manifests unchanged
   json algorithms = json::array();
   for (const auto& a : c.algorithms) {
     algorithms.push_back({{"label", a.label}, {"planner", a.planner}, {"options", a.options}});
   }
   j["algorithms"] = algorithms;
   j["seeds"] = c.seeds;
-  j["time_limit"] = c.time_limit;
+  j["time_limit"] = c.mission.time_limit;
   if (!c.launch_sites.empty()) {  // only then, so that every other manifest keeps its bytes
     json sites = json::array();
     for (const auto& s : c.launch_sites) sites.push_back({s.x, s.y});
-    j["launch"] = {{"sites", sites}, {"transfer", c.launch_transfer}};
-    if (c.takeoff_time) j["launch"]["takeoff_time"] = *c.takeoff_time;
+    j["launch"] = {{"sites", sites}, {"transfer", c.mission.launch_transfer}};
+    if (c.mission.takeoff_time) j["launch"]["takeoff_time"] = *c.mission.takeoff_time;
   }
-  if (c.endurance) {  // only then, so that every other manifest keeps its bytes
-    j["battery"] = {{"endurance", *c.endurance}, {"swap_time", c.swap_time}};
-    if (c.reserve) j["battery"]["reserve"] = *c.reserve;
+  if (c.mission.endurance) {  // only then, so that every other manifest keeps its bytes
+    j["battery"] = {{"endurance", *c.mission.endurance}, {"swap_time", c.mission.swap_time}};
+    if (c.mission.reserve) j["battery"]["reserve"] = *c.mission.reserve;
   }
-  if (c.speed) j["speed"] = *c.speed;  // only when given: manifests unchanged
-  if (c.climb_speed) j["climb_speed"] = *c.climb_speed;
+  if (c.mission.speed) j["speed"] = *c.mission.speed;  // only when given: manifests unchanged
+  if (c.mission.climb_speed) j["climb_speed"] = *c.mission.climb_speed;
   j["curve"] = {{"step", c.curve.step}, {"end", c.curve.end}};
   return j;
 }
@@ -562,7 +556,7 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       c.truth_defects_path = j.at("truth_defects").get<std::string>();
     if (j.contains("prior_hash")) c.prior_hash = j.at("prior_hash").get<std::string>();
     if (j.contains("truth_hash")) c.truth_hash = j.at("truth_hash").get<std::string>();
-    if (j.contains("frame_spacing")) c.frame_spacing = j.at("frame_spacing").get<double>();
+    if (j.contains("frame_spacing")) c.mission.frame_spacing = j.at("frame_spacing").get<double>();
     for (const auto& s : j.at("scenarios")) {
       ScenarioSpec spec;
       spec.name = s.at("name").get<std::string>();
@@ -584,33 +578,33 @@ ExperimentConfig config_from_json(const nlohmann::json& j, const std::string& so
       if (s.contains("no_fly")) spec.no_fly_spec = s.at("no_fly");
       c.scenarios.push_back(std::move(spec));
     }
-    c.s1 = j.at("s1").get<int>();
+    c.mission.s1 = j.at("s1").get<int>();
     c.s2 = j.at("s2").get<std::vector<int>>();
-    c.theta = j.at("theta").get<double>();
+    c.mission.theta = j.at("theta").get<double>();
     c.uavs = j.at("uavs").get<std::vector<int>>();
-    c.start_z = j.at("start_z").get<int>();
-    if (j.contains("separation")) c.separation = j.at("separation").get<int>();
+    c.mission.start_z = j.at("start_z").get<int>();
+    if (j.contains("separation")) c.mission.separation = j.at("separation").get<int>();
     for (const auto& a : j.at("algorithms")) {
       c.algorithms.push_back({a.at("label").get<std::string>(), a.at("planner").get<std::string>(),
                               a.at("options").get<OptionMap>(), 0});
     }
     c.seeds = j.at("seeds").get<std::vector<std::uint64_t>>();
-    c.time_limit = j.at("time_limit").get<int>();
+    c.mission.time_limit = j.at("time_limit").get<int>();
     if (j.contains("launch")) {
       const auto& l = j.at("launch");
       for (const auto& s : l.at("sites"))
         c.launch_sites.push_back({s.at(0).get<int>(), s.at(1).get<int>()});
-      c.launch_transfer = l.at("transfer").get<double>();
-      if (l.contains("takeoff_time")) c.takeoff_time = l.at("takeoff_time").get<double>();
+      c.mission.launch_transfer = l.at("transfer").get<double>();
+      if (l.contains("takeoff_time")) c.mission.takeoff_time = l.at("takeoff_time").get<double>();
     }
     if (j.contains("battery")) {
       const auto& b = j.at("battery");
-      c.endurance = b.at("endurance").get<double>();
-      c.swap_time = b.at("swap_time").get<double>();
-      if (b.contains("reserve")) c.reserve = b.at("reserve").get<double>();
+      c.mission.endurance = b.at("endurance").get<double>();
+      c.mission.swap_time = b.at("swap_time").get<double>();
+      if (b.contains("reserve")) c.mission.reserve = b.at("reserve").get<double>();
     }
-    if (j.contains("speed")) c.speed = j.at("speed").get<double>();
-    if (j.contains("climb_speed")) c.climb_speed = j.at("climb_speed").get<double>();
+    if (j.contains("speed")) c.mission.speed = j.at("speed").get<double>();
+    if (j.contains("climb_speed")) c.mission.climb_speed = j.at("climb_speed").get<double>();
     c.curve.step = j.at("curve").at("step").get<int>();
     c.curve.end = j.at("curve").at("end").get<int>();
     if (c.curve.step < 1) throw InputError(source, 0, "config.curve.step must be at least 1");

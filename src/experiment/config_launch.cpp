@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "config_mission.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/world/launch_sites.hpp"
 
@@ -11,13 +12,12 @@ void read_launch(const YamlFields& f, const YAML::Node& root, ExperimentConfig& 
   const YAML::Node node = root["launch"];
   if (!node) return;
   c.lines["launch"] = YamlFields::line(node);
-  f.expect_map(node, "launch", {"sites", "transfer", "takeoff-time"});
+  f.expect_map(node, "launch", with_declared_keys({"sites"}, "launch"));
   const YAML::Node sites = node["sites"];
   if (!sites || !sites.IsSequence() || sites.size() == 0) {
     f.fail(sites ? sites : node, "launch.sites", "expected a list of [x, y] cells");
   }
   world::MissionParams p;
-  p.time_limit = c.time_limit;
   p.no_fly = c.no_fly;
   for (std::size_t i = 0; i < sites.size(); ++i) {
     const std::string key = fmt::format("launch.sites[{}]", i);
@@ -31,14 +31,8 @@ void read_launch(const YamlFields& f, const YAML::Node& root, ExperimentConfig& 
     }
     c.launch_sites.push_back(p.launch_sites.front());
   }
-  // Times in seconds, up to the time limit in seconds (read_speed() came first).
-  const double limit_s = c.time_limit * c.timing().step_seconds();
-  if (node["transfer"]) {
-    c.launch_transfer = f.as_number(node["transfer"], "launch.transfer", 0, limit_s);
-  }
-  if (node["takeoff-time"]) {
-    c.takeoff_time = f.as_number(node["takeoff-time"], "launch.takeoff-time", 0, limit_s);
-  }
+  // The times (transfer, takeoff-time) are mission options, read with the others and checked
+  // against the time limit when the cells are validated.
 }
 
 }  // namespace hullinspect::experiment::detail

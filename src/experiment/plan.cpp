@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "config_mission.hpp"
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/experiment/hash.hpp"
 #include "hullinspect/planners/planner.hpp"
@@ -15,11 +16,11 @@ std::string launch_key(const ExperimentConfig& c) {
   if (c.launch_sites.empty()) return {};
   std::string key = "|launch=";
   for (const auto& s : c.launch_sites) key += fmt::format("{},{};", s.x, s.y);
-  key += fmt::format("transfer={}", c.launch_transfer);
-  if (c.takeoff_time) key += fmt::format(";takeoff={}", *c.takeoff_time);
-  if (c.endurance) {
-    key += fmt::format("|battery={};swap={}", *c.endurance, c.swap_time);
-    if (c.reserve) key += fmt::format(";reserve={}", *c.reserve);
+  key += fmt::format("transfer={}", c.mission.launch_transfer);
+  if (c.mission.takeoff_time) key += fmt::format(";takeoff={}", *c.mission.takeoff_time);
+  if (c.mission.endurance) {
+    key += fmt::format("|battery={};swap={}", *c.mission.endurance, c.mission.swap_time);
+    if (c.mission.reserve) key += fmt::format(";reserve={}", *c.mission.reserve);
   }
   return key;
 }
@@ -27,8 +28,8 @@ std::string launch_key(const ExperimentConfig& c) {
 // Likewise only configs with a speed: every other run keeps its id.
 std::string speed_key(const ExperimentConfig& c) {
   std::string key;
-  if (c.speed) key += fmt::format("|speed={}", *c.speed);
-  if (c.climb_speed) key += fmt::format("|climb_speed={}", *c.climb_speed);
+  if (c.mission.speed) key += fmt::format("|speed={}", *c.mission.speed);
+  if (c.mission.climb_speed) key += fmt::format("|climb_speed={}", *c.mission.climb_speed);
   return key;
 }
 
@@ -49,10 +50,10 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
              "hullinspect-run/"
              "1|hull={}|cell_size={}|scenario={}|zones={}|p_tp={}|p_fp={}|s1={}|s2={}|"
              "theta={}|uavs={}|start_z={}|time_limit={}|algorithm={}|planner={}|options={}",
-             c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp, c.s1,
-             c.s2[static_cast<std::size_t>(cell.s2)], c.theta,
-             c.uavs[static_cast<std::size_t>(cell.uavs)], c.start_z, c.time_limit, a.label,
-             a.planner, options) +
+             c.hull_hash, c.cell_size, s.name, zones, s.corrosion.p_tp, s.corrosion.p_fp,
+             c.mission.s1, c.s2[static_cast<std::size_t>(cell.s2)], c.mission.theta,
+             c.uavs[static_cast<std::size_t>(cell.uavs)], c.mission.start_z, c.mission.time_limit,
+             a.label, a.planner, options) +
          // Only scenarios with failures or their own no-fly zones say so, so that every other run
          // keeps its id.
          (s.failures.empty() ? std::string() : "|failures=" + s.failures.text()) +
@@ -60,8 +61,10 @@ std::string canonical_cell(const ExperimentConfig& c, const Cell& cell) {
                                   : "|no_fly=" + s.no_fly_spec.at("hash").get<std::string>()) +
          // The user's maps by content, as no-fly zones: only configs with them say so.
          (c.prior_hash.empty() ? std::string() : "|prior=" + c.prior_hash) +
-         (c.truth_hash.empty() ? std::string() : "|truth=" + c.truth_hash) + launch_key(c) + speed_key(c) +
-         (c.separation == 0 ? std::string() : fmt::format("|separation={}", c.separation));
+         (c.truth_hash.empty() ? std::string() : "|truth=" + c.truth_hash) + launch_key(c) +
+         speed_key(c) +
+         (c.mission.separation == 0 ? std::string()
+                                    : fmt::format("|separation={}", c.mission.separation));
 }
 
 }  // namespace
@@ -121,22 +124,11 @@ planners::MissionSpec ExperimentPlan::mission(const Cell& cell, std::uint64_t se
   planners::MissionSpec spec;
   spec.algorithm = a.planner;
   spec.planner_options = a.options;
+  planners::set_mission_params(c.mission, spec.params);
   spec.params.uavs = c.uavs[static_cast<std::size_t>(cell.uavs)];
-  spec.params.s1 = c.s1;
   spec.params.s2 = c.s2[static_cast<std::size_t>(cell.s2)];
-  spec.params.theta_deg = c.theta;
   spec.params.cell_size_m = c.cell_size;
-  spec.params.start_z = c.start_z;
-  spec.params.time_limit = c.time_limit;
   spec.params.launch_sites = c.launch_sites;
-  spec.params.launch_transfer_s = c.launch_transfer;
-  spec.params.takeoff_time_s = c.takeoff_time;
-  spec.params.endurance_s = c.endurance;
-  spec.params.reserve_s = c.reserve;
-  spec.params.swap_time_s = c.swap_time;
-  spec.params.speed_m_s = c.speed;
-  spec.params.climb_speed_m_s = c.climb_speed;
-  spec.params.separation = c.separation;
   const ScenarioSpec& scenario = c.scenarios[static_cast<std::size_t>(cell.scenario)];
   spec.params.no_fly = scenario.no_fly ? scenario.no_fly : c.no_fly;
   spec.corrosion = scenario.corrosion;
@@ -165,7 +157,9 @@ void ExperimentPlan::validate_cell(const Cell& cell) const {
                name.find('.') != std::string::npos) {
       line = config_.algorithms[static_cast<std::size_t>(cell.algorithm)].line;
     } else {
-      line = config_.line_of(name);
+      // A mission option names its config key ("battery.endurance") and that key's line.
+      const auto [key, key_line] = detail::config_key_of(config_, name);
+      throw InputError(config_.source, key_line, fmt::format("{}: {}", key, e.problem()));
     }
     throw InputError(config_.source, line, e.what());
   }

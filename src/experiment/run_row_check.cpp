@@ -91,7 +91,7 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
   const auto& c = plan.config();
   const Cell& cell = plan.cells()[static_cast<std::size_t>(run.cell)];
   const long long uavs = c.uavs[static_cast<std::size_t>(cell.uavs)];
-  const long long limit = c.time_limit;
+  const long long limit = c.mission.time_limit;
   const long long hull = c.hull_cells;
 
   const auto timing = c.timing();
@@ -108,20 +108,19 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
   for (const char* counter :
        {"detections", "observations", "redundant_observations", "moves", "hovers", "plane_changes",
         "steps_z1", "steps_z2", "steps_transit", "tsp_solves", "tsp_unproven", "tsp_fallbacks",
-        "replans", "assignments", "partition_fallbacks",
-       "separation_conflicts"}) {
+        "replans", "assignments", "partition_fallbacks", "separation_conflicts"}) {
     (void)o.get(counter);
   }
-  if (o.text("separation") != std::to_string(c.separation)) {
+  if (o.text("separation") != std::to_string(c.mission.separation)) {
     return fmt::format("separation is '{}' but this experiment's is {}",
-                       escape_for_message(o.text("separation")), c.separation);
+                       escape_for_message(o.text("separation")), c.mission.separation);
   }
   (void)o.parse("min_separation", kMaxStoredCount);
   // Batteries (docs/model.md, "Batteries and sorties"), parsed here, related at the end.
   const long long sorties = o.get("sorties");
   const auto flight = o.seconds("flight_s", 1e18);
   const long long crashes = o.get("battery_crashes", uavs);
-  const auto least_battery = o.seconds("min_battery_s", c.endurance.value_or(1e18));
+  const auto least_battery = o.seconds("min_battery_s", c.mission.endurance.value_or(1e18));
 
   if (complete != t_m.has_value()) {
     return complete ? "complete is 1 but T_m is empty (a complete mission has a T_m)"
@@ -174,8 +173,8 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
     return fmt::format("bound_T_c is {} but bound_T_m is only {}", o.text("bound_T_c"),
                        o.text("bound_T_m"));
   }
-  if (least_battery.has_value() != c.endurance.has_value()) {
-    return c.endurance
+  if (least_battery.has_value() != c.mission.endurance.has_value()) {
+    return c.mission.endurance
                ? "min_battery_s is empty but this experiment's UAVs have batteries"
                : fmt::format("min_battery_s is {} but this experiment's flight is unlimited",
                              *least_battery);

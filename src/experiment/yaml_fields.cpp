@@ -14,9 +14,9 @@ namespace hullinspect::experiment::detail {
 
 namespace {
 
-std::string join(std::initializer_list<std::string_view> names) {
+std::string join(const std::vector<std::string>& names) {
   std::string out;
-  for (auto n : names) out += fmt::format("{}{}", out.empty() ? "" : ", ", n);
+  for (const auto& n : names) out += fmt::format("{}{}", out.empty() ? "" : ", ", n);
   return out;
 }
 
@@ -45,6 +45,11 @@ void YamlFields::fail_at(int at, std::string_view key, std::string_view problem)
 
 void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
                             std::initializer_list<std::string_view> known) const {
+  expect_map(node, key, std::vector<std::string>(known.begin(), known.end()));
+}
+
+void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
+                            const std::vector<std::string>& known) const {
   if (!node.IsMap()) {
     fail(node, key.empty() ? "config" : key, fmt::format("must be a map (got {})", shown(node)));
   }
@@ -54,7 +59,7 @@ void YamlFields::expect_map(const YAML::Node& node, std::string_view key,
     const std::string name = k.IsScalar() ? escape_for_message(k.Scalar()) : std::string("?");
     const std::string path = key.empty() ? name : fmt::format("{}.{}", key, name);
     bool ok = false;
-    for (auto n : known) ok = ok || n == name;
+    for (const auto& n : known) ok = ok || n == name;
     if (!ok) fail(k, path, fmt::format("unknown key (known: {})", join(known)));
     if (!seen.insert(name).second) fail(k, path, "appears twice");
   }
@@ -95,8 +100,9 @@ double YamlFields::as_number(const YAML::Node& node, std::string_view key, doubl
     fail(node, key, fmt::format("must be a number (got {})", shown(node)));
   }
   if (value < min || value > max) {
-    fail(node, key, fmt::format("must be a number in [{}, {}] (got {})", min, max,
-                                escape_for_message(node.Scalar())));
+    fail(node, key,
+         fmt::format("must be a number in [{}, {}] (got {})", min, max,
+                     escape_for_message(node.Scalar())));
   }
   return value;
 }

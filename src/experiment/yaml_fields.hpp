@@ -19,12 +19,15 @@ class YamlFields {
   const std::string& source() const { return source_; }
   static int line(const YAML::Node& node);
 
-  [[noreturn]] void fail(const YAML::Node& node, std::string_view key, std::string_view problem) const;
+  [[noreturn]] void fail(const YAML::Node& node, std::string_view key,
+                         std::string_view problem) const;
   [[noreturn]] void fail_at(int line, std::string_view key, std::string_view problem) const;
 
   /// Checks that `node` is a map whose keys are all in `known` and appear once.
   void expect_map(const YAML::Node& node, std::string_view key,
                   std::initializer_list<std::string_view> known) const;
+  void expect_map(const YAML::Node& node, std::string_view key,
+                  const std::vector<std::string>& known) const;
 
   int as_int(const YAML::Node& node, std::string_view key, int min, int max) const;
   std::uint64_t as_seed(const YAML::Node& node, std::string_view key) const;

@@ -7,13 +7,13 @@
 namespace hullinspect::io {
 
 TracedMission run_traced_mission(const planners::MissionSpec& spec, const world::HullMask& hull) {
-  planners::validate(spec, hull);
+  const auto starts = planners::validate(spec, hull);
   const auto instance = planners::mission_instance(spec, hull);
   TraceRecorder recorder(instance, spec_json(spec, hull.source()));
   planners::MissionOptions options;
   options.observers.push_back(&recorder);
   TracedMission out;
-  out.result = planners::run_mission(spec, hull, instance, options);
+  out.result = planners::run_mission(spec, hull, instance, starts, options);
   out.trace = recorder.finish(out.result);
   return out;
 }

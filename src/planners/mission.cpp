@@ -54,18 +54,16 @@ grid::DistanceService& distances_of(const PlannerContext& context,
 sim::MissionResult run_mission(const world::HullMask& hull, const world::Instance& instance,
                                const world::MissionParams& params, Planner& planner,
                                const MissionOptions& options) {
-  world::validate(params, hull);
+  const auto starts = world::validate(params, hull);
   world::validate(options.failures, params.uavs);
-  return run_validated_mission(hull, instance, params, planner, options);
+  return run_validated_mission(hull, instance, params, starts, planner, options);
 }
 
 sim::MissionResult run_validated_mission(const world::HullMask& hull,
                                          const world::Instance& instance,
-                                         const world::MissionParams& params, Planner& planner,
+                                         const world::MissionParams& params,
+                                         std::span<const grid::Cell> starts, Planner& planner,
                                          const MissionOptions& options) {
-  // The start cells, computed once: the simulator places the UAVs on them, the planner is told
-  // them and the lower bound measures from them.
-  const auto starts = world::start_cells(params, hull);
   sim::Simulator sim(hull, instance, params, starts);
   if (!options.failures.empty()) {
     const auto times =

@@ -117,18 +117,25 @@ std::vector<MissionOptionDecl> declare() {
   add("algorithm", "TEXT", InputKind::kValue, "Planner: " + planner_names,
       text(&MissionInput::algorithm), d.algorithm)
       .alias = "a";
-  add("uavs", "INT", InputKind::kValue, "Fleet size n (1 … number of hull cells)",
-      integer("uavs", &MissionInput::uavs), std::to_string(d.uavs))
-      .alias = "n";
+  auto& uavs = add("uavs", "INT", InputKind::kValue, "Fleet size n (1 … number of hull cells)",
+                   integer("uavs", &MissionInput::uavs), std::to_string(d.uavs));
+  uavs.alias = "n";
+  uavs.config_key = "uavs";
+  uavs.config_axis = true;
   add("s1", "INT", InputKind::kValue, "Footprint side at the close-up plane z = 1, cells (odd)",
-      integer("s1", &MissionInput::s1), std::to_string(d.s1));
-  add("s2", "INT", InputKind::kValue,
-      "Footprint side at the detection plane z = 2, cells (odd, > s1)",
-      integer("s2", &MissionInput::s2), std::to_string(d.s2));
+      integer("s1", &MissionInput::s1), std::to_string(d.s1))
+      .config_key = "s1";
+  auto& s2 = add("s2", "INT", InputKind::kValue,
+                 "Footprint side at the detection plane z = 2, cells (odd, > s1)",
+                 integer("s2", &MissionInput::s2), std::to_string(d.s2));
+  s2.config_key = "s2";
+  s2.config_axis = true;
   add("theta", "FLOAT", InputKind::kValue, "Camera aperture θ in degrees, in (0, 180)",
-      real("theta", &MissionInput::theta), shown(d.theta));
+      real("theta", &MissionInput::theta), shown(d.theta))
+      .config_key = "theta";
   add("start-z", "INT", InputKind::kValue, "Plane every UAV starts on (1 or 2)",
-      integer("start-z", &MissionInput::start_z), std::to_string(d.start_z));
+      integer("start-z", &MissionInput::start_z), std::to_string(d.start_z))
+      .config_key = "start_z";
   add("start", "X,Y", InputKind::kRepeated,
       "Start cell x,y of each UAV (repeat once per UAV; default: spread along the hull)",
       each(&MissionInput::starts));
@@ -161,11 +168,13 @@ std::vector<MissionOptionDecl> declare() {
       text(&MissionInput::hull), d.hull);
   add("time-limit", "INT", InputKind::kValue,
       "Steps after which an unfinished mission is reported incomplete",
-      integer("time-limit", &MissionInput::time_limit), std::to_string(d.time_limit));
+      integer("time-limit", &MissionInput::time_limit), std::to_string(d.time_limit))
+      .config_key = "time_limit";
   add("separation", "INT", InputKind::kValue,
       "Separation D in cells: two UAVs conflict when max(|dx|, |dy|) < D, whatever "
       "their planes (0: no separation, the paper's model; docs/model.md)",
-      integer("separation", &MissionInput::separation), std::to_string(d.separation));
+      integer("separation", &MissionInput::separation), std::to_string(d.separation))
+      .config_key = "separation";
   add("strict-separation", "", InputKind::kFlag,
       "A separation conflict is a mission error (exit 1) instead of a count",
       flag(&MissionInput::strict_separation));
@@ -229,7 +238,8 @@ std::vector<MissionOptionDecl> declare() {
       "Metres between frames, for defects placed by frame number (frame 0 at x = 0)",
       [](MissionInput& in, const std::string& t) {
         in.frame_spacing = exact("frame-spacing", [&] { return parse_real(t, 1e-3, 1e3); });
-      });
+      })
+      .config_key = "frame-spacing";
   add("launch", "X,Y", InputKind::kRepeated,
       "A launch site: a non-hull or grid-edge cell where UAVs take off and land "
       "(repeatable; each UAV uses the site nearest its start cell; T_m is then the time "
@@ -241,41 +251,48 @@ std::vector<MissionOptionDecl> declare() {
       [](MissionInput& in, const std::string& t) {
         in.launch_transfer = literal<double>("launch-transfer", t);
       },
-      shown(d.launch_transfer));
+      shown(d.launch_transfer))
+      .config_key = "launch.transfer";
   add("takeoff-time", "S", InputKind::kValue,
       "Seconds from the ground to plane 2 at a launch site, and back down (default: a "
       "plane change, u_z)",
       [](MissionInput& in, const std::string& t) {
         in.takeoff_time = literal<double>("takeoff-time", t);
-      });
+      })
+      .config_key = "launch.takeoff-time";
   add("endurance", "S", InputKind::kValue,
       "Seconds of flight per battery (default: unlimited, the paper's model); needs --launch: a "
       "UAV is sent home to swap its battery before it runs low, and one airborne with an empty "
       "battery crashes (docs/model.md)",
       [](MissionInput& in, const std::string& t) {
         in.endurance = literal<double>("endurance", t);
-      });
+      })
+      .config_key = "battery.endurance";
   add("reserve", "S", InputKind::kValue,
       "With --endurance: seconds of flight a UAV keeps for landing (default: 10 % of the "
       "endurance)",
-      [](MissionInput& in, const std::string& t) { in.reserve = literal<double>("reserve", t); });
+      [](MissionInput& in, const std::string& t) { in.reserve = literal<double>("reserve", t); })
+      .config_key = "battery.reserve";
   add(
       "swap-time", "S", InputKind::kValue,
       "With --endurance: seconds on the ground at a launch site to swap a battery",
       [](MissionInput& in, const std::string& t) {
         in.swap_time = literal<double>("swap-time", t);
       },
-      shown(d.swap_time));
+      shown(d.swap_time))
+      .config_key = "battery.swap-time";
   add("speed", "M/S", InputKind::kValue,
       "Horizontal speed in m/s: a move to a neighbouring cell takes cell / speed seconds, the "
       "length of one step (default: one cell per second)",
-      [](MissionInput& in, const std::string& t) { in.speed = literal<double>("speed", t); });
+      [](MissionInput& in, const std::string& t) { in.speed = literal<double>("speed", t); })
+      .config_key = "speed";
   add("climb-speed", "M/S", InputKind::kValue,
       "Climb speed in m/s for plane changes and the take-off, rounded up to whole steps "
       "(default: one cell per second, u_z steps at the default speed)",
       [](MissionInput& in, const std::string& t) {
         in.climb_speed = literal<double>("climb-speed", t);
-      });
+      })
+      .config_key = "climb-speed";
 
   // How a mesh --hull is imported. The defaults shown are MeshImportOptions{}'s (mesh_hull.hpp);
   // the inputs stay unset so that a named mesh hull can start from its own.
@@ -455,6 +472,25 @@ world::CorrosionParams scenario_corrosion(const std::string& name, const OptionM
   }
 }
 
+void set_mission_params(const MissionInput& a, world::MissionParams& p) {
+  p.uavs = a.uavs;
+  p.s1 = a.s1;
+  p.s2 = a.s2;
+  p.theta_deg = a.theta;
+  p.start_z = a.start_z;
+  p.time_limit = a.time_limit;
+  p.separation = a.separation;
+  p.strict_separation = a.strict_separation;
+  p.deconflict = !a.no_deconfliction;
+  p.launch_transfer_s = a.launch_transfer;
+  p.takeoff_time_s = a.takeoff_time;
+  p.endurance_s = a.endurance;
+  p.reserve_s = a.reserve;
+  p.swap_time_s = a.swap_time;
+  p.speed_m_s = a.speed;
+  p.climb_speed_m_s = a.climb_speed;
+}
+
 MissionSpec build_spec(const MissionInput& a, const world::HullMask& hull) {
   if (!a.prior.empty() && !a.prior_defects.empty()) {
     throw ParameterError("prior-defects", "excludes --prior");
@@ -466,26 +502,11 @@ MissionSpec build_spec(const MissionInput& a, const world::HullMask& hull) {
   spec.algorithm = a.algorithm;
   spec.seed = a.seed;
   auto& p = spec.params;
-  p.uavs = a.uavs;
-  p.s1 = a.s1;
-  p.s2 = a.s2;
-  p.theta_deg = a.theta;
-  p.start_z = a.start_z;
-  p.time_limit = a.time_limit;
-  p.separation = a.separation;
-  p.strict_separation = a.strict_separation;
-  p.deconflict = !a.no_deconfliction;
+  set_mission_params(a, p);
   if (hull.geometry()) p.cell_size_m = hull.geometry()->cell_size;
   for (const auto& s : a.starts) p.starts.push_back(parse_xy(s));
   p.no_fly = build_no_fly(a.no_fly, a.no_fly_boxes, hull);
   for (const auto& s : a.launch) p.launch_sites.push_back(parse_xy(s, "launch"));
-  p.launch_transfer_s = a.launch_transfer;
-  p.takeoff_time_s = a.takeoff_time;
-  p.endurance_s = a.endurance;
-  p.reserve_s = a.reserve;
-  p.swap_time_s = a.swap_time;
-  p.speed_m_s = a.speed;
-  p.climb_speed_m_s = a.climb_speed;
 
   OptionMap scenario_options;
   auto set = [&](const char* key, const std::optional<std::string>& v) {

@@ -6,8 +6,8 @@
 
 namespace hullinspect::planners {
 
-void validate(const MissionSpec& spec, const world::HullMask& hull) {
-  world::validate(spec.params, hull);
+std::vector<grid::Cell> validate(const MissionSpec& spec, const world::HullMask& hull) {
+  auto starts = world::validate(spec.params, hull);
   world::validate(spec.corrosion, hull);
   world::validate(spec.failures, spec.params.uavs);
   make_planner(spec.algorithm, spec.planner_options);
@@ -17,7 +17,7 @@ void validate(const MissionSpec& spec, const world::HullMask& hull) {
       it != spec.planner_options.end() && it->second == "stripes") {
     partition::PartitionRequest request;
     request.hull = &hull;
-    request.starts = world::start_cells(spec.params, hull);
+    request.starts = starts;
     try {
       (void)partition::make_partitioner("stripes")->partition(request);
     } catch (const ParameterError&) {
@@ -28,6 +28,7 @@ void validate(const MissionSpec& spec, const world::HullMask& hull) {
       throw ParameterError("partitioner", e.what());
     }
   }
+  return starts;
 }
 
 const world::CorrosionParams* prior_statistics(const MissionSpec& spec) {
@@ -42,20 +43,21 @@ world::Instance mission_instance(const MissionSpec& spec, const world::HullMask&
 }
 
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
-                               const world::Instance& instance, const MissionOptions& options) {
+                               const world::Instance& instance, std::span<const grid::Cell> starts,
+                               const MissionOptions& options) {
   // Failures the caller gives instead of the spec's were not part of validate(spec).
   if (!options.failures.empty()) world::validate(options.failures, spec.params.uavs);
   auto planner = make_planner(spec.algorithm, spec.planner_options);
   MissionOptions with_spec = options;
   if (with_spec.failures.empty()) with_spec.failures = spec.failures;
   if (with_spec.corrosion == nullptr) with_spec.corrosion = prior_statistics(spec);
-  return run_validated_mission(hull, instance, spec.params, *planner, with_spec);
+  return run_validated_mission(hull, instance, spec.params, starts, *planner, with_spec);
 }
 
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
                                const MissionOptions& options) {
-  validate(spec, hull);
-  return run_mission(spec, hull, mission_instance(spec, hull), options);
+  const auto starts = validate(spec, hull);
+  return run_mission(spec, hull, mission_instance(spec, hull), starts, options);
 }
 
 }  // namespace hullinspect::planners

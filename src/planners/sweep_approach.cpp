@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "hullinspect/world/mission_params.hpp"
+
 namespace hullinspect::planners {
 
 namespace {
@@ -41,7 +43,7 @@ void own_band_first(const grid::Grid<std::int16_t>& owner, const SweepRequest& r
                     SweepScratch& scratch, std::vector<SweepCandidate>& candidates) {
   const bool rows = request.axis == BandAxis::kRows;
   const int s = request.band;
-  const int h = (s - 1) / 2;
+  const int h = world::footprint_half(s);
   const int across_size = rows ? owner.height() : owner.width();
   const int along_size = rows ? owner.width() : owner.height();
   // Each band's cells along it, as the last cell at or before and the first at or after each
@@ -233,7 +235,7 @@ std::vector<SweepCandidate> approach_candidates(const grid::Grid<std::int16_t>& 
   const int along_hi = rows ? x_hi : y_hi;
   const int across_lo = rows ? y_lo : x_lo;
   const int across_hi = rows ? y_hi : x_hi;
-  const int h = (request.band - 1) / 2;
+  const int h = world::footprint_half(request.band);
   if (along_lo + h > along_hi - h) return candidates;  // a region no taller than one footprint
   // The centre line of the band holding an across coordinate (band_sweep's bands).
   const auto centre = [&](int a) {

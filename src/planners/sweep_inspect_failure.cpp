@@ -23,7 +23,7 @@ void SweepInspectPlanner::resplit(const sim::PlannerView& view) {
   // The working UAVs' loads: the prior's cells each still has to visit, in cells (a visit costs
   // about kPriorVisitSteps steps, a step of sweep sees about kSweepRate·s2 new cells); on the
   // band partition's grid in steps.
-  const double cells_per_step = kSweepRate * (2 * h2_ + 1);
+  const double cells_per_step = kSweepRate * s2_;
   const bool on_bands = !band_start_.empty();
   split_load_.assign(n, 0.0);
   for (std::size_t k = 0; k < n; ++k) {

@@ -19,9 +19,9 @@ std::shared_ptr<const partition::Partition> SweepInspectPlanner::band_partition(
   // of them): a band is one step a row and about one more to reach it (its width across, less
   // the rows its trimmed ends save); at z = 2 a cell adds the inspections the weights expect
   // there (their excess over 1), at z = 1 nothing (it is inspected when seen).
-  std::vector<int> width_of_column(static_cast<std::size_t>(width_), 2 * h2_ + 1);
+  std::vector<int> width_of_column(static_cast<std::size_t>(width_), s2_);
   for (std::size_t x = 0; x < dense_column_.size(); ++x) {
-    if (dense_column_[x] != 0) width_of_column[x] = 2 * h1_ + 1;
+    if (dense_column_[x] != 0) width_of_column[x] = s1_;
   }
   std::vector<int> band_start = column_band_starts(width_of_column);
   // An inspection on detection (a descent, a flight across the band and back, a climb) costs

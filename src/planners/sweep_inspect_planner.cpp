@@ -52,8 +52,10 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   width_ = context.hull.width();
   reach_ = context.reach != nullptr && context.reach->any_no_fly ? &context.reach->reach : nullptr;
   const auto& p = context.params;
-  h1_ = (p.s1 - 1) / 2;
-  h2_ = (p.s2 - 1) / 2;
+  s1_ = p.footprint(1);
+  s2_ = p.footprint(2);
+  h1_ = p.half_side(1);
+  h2_ = p.half_side(2);
   // An inspection takes the detections within s2 of the descent point (at least h2: a descent
   // is for a detected cell abreast, within h2 across, which must then lie within the radius, or
   // the UAV would climb at once and descend again for the same cell for ever).

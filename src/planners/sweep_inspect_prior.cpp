@@ -123,7 +123,7 @@ bool SweepInspectPlanner::take_prior_share(int k, grid::Cell pos) {
   const auto [t, later] =
       split_tours(k, pos, giver, positions_[static_cast<std::size_t>(giver)], cells);
   // Only when it saves the giver at least a strip's width of steps.
-  if (t == 0 || later + (2 * h2_ + 1) > giver_steps) return false;
+  if (t == 0 || later + s2_ > giver_steps) return false;
   prior_[ku].assign(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(t));
   cells.erase(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(t));
   forget_tour(k);

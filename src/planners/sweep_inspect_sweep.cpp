@@ -40,7 +40,7 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
   // still choose.
   const bool auto_axis = options_.strips == "auto" && (band_start_.empty() || low);
   axis = options_.strips == "rows" || auto_axis ? BandAxis::kRows : BandAxis::kColumns;
-  const int band = low ? h1_ * 2 + 1 : h2_ * 2 + 1;
+  const int band = low ? s1_ : s2_;
   std::vector<grid::Cell> waypoints;
   if (auto_axis) {
     // Rows (listed first) or columns, whichever the chooser takes.
@@ -69,7 +69,8 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
     // miss is found as unknown cells by the help phase.
     std::vector<grid::Cell> flyable;
     for (const grid::Cell w : waypoints) {
-      const grid::Cell v = distances.allowed(w) ? w : distances.viewpoint(w, band / 2);
+      const grid::Cell v =
+          distances.allowed(w) ? w : distances.viewpoint(w, world::footprint_half(band));
       if (v != grid::kNoCell && (flyable.empty() || flyable.back() != v)) flyable.push_back(v);
     }
     waypoints = std::move(flyable);
@@ -104,7 +105,7 @@ void SweepInspectPlanner::low_blocks(const grid::Grid<std::int16_t>& owner, int 
   // where a band is a pass of the hull's height: at z = 2 the Manhattan estimate's gain is
   // small and the flown mission can be longer. Without a failure there is no re-split, and no
   // mission changes.
-  const SweepRequest request{k, 2 * h1_ + 1, p.axis, true, band_start_, true};
+  const SweepRequest request{k, s1_, p.axis, true, band_start_, true};
   auto candidates = two_block_candidates(owner, request, from, std::move(waypoints));
   const std::size_t chosen = choose_plan(candidates);
   waypoints = std::move(candidates[chosen].plan.waypoints);
@@ -135,8 +136,7 @@ std::vector<grid::Cell> SweepInspectPlanner::sweep_from(int k, grid::Cell from) 
   }
   // A dense part that a few z = 1 bands would cover is swept at z = 2 with the rest: each z = 1
   // band is a whole pass of the hull's height (and a plane change), for a few columns.
-  if (sparse > 0 && dense > 0 && dense_hi - dense_lo + 1 <= kLowSweepMinBands * (2 * h1_ + 1))
-    dense = 0;
+  if (sparse > 0 && dense > 0 && dense_hi - dense_lo + 1 <= kLowSweepMinBands * s1_) dense = 0;
   if (dense == 0) {
     waypoints = strips_from(owner_, k, from);
   } else if (sparse == 0) {
@@ -233,7 +233,7 @@ bool SweepInspectPlanner::take_sweep_tail(int j, const sim::UavState& u,
     const double alone = sweep_left_end(left);
     if (donor >= 0 && alone <= donor_alone) continue;
     // A split must save at least s2 steps.
-    const TailSplit split = split_sweep_tail(left, u.pos, mine, 2 * h2_ + 1, tail_walk_);
+    const TailSplit split = split_sweep_tail(left, u.pos, mine, s2_, tail_walk_);
     if (split.leg < 0) continue;
     donor = static_cast<int>(k);
     donor_alone = alone;

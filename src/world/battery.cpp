@@ -43,7 +43,7 @@ int sortie_margin_steps(const MissionParams& p) {
   return 2 * p.plane_change_steps() + 1;
 }
 
-void validate_battery(const MissionParams& p, const HullMask& hull) {
+void validate_battery(const MissionParams& p) {
   check_seconds("swap-time", p.swap_time_s, true);
   if (p.reserve_s) check_seconds("reserve", *p.reserve_s, true);
   if (!p.endurance_s) {
@@ -61,7 +61,11 @@ void validate_battery(const MissionParams& p, const HullMask& hull) {
     throw ParameterError("endurance",
                          "needs a launch site (--launch) where the UAVs land to swap batteries");
   }
-  const auto starts = start_cells(p, hull);
+}
+
+void validate_battery_reach(const MissionParams& p, const HullMask& hull,
+                            std::span<const grid::Cell> starts) {
+  if (!p.endurance_s) return;
   const auto reach = compute_reachability(hull, p.no_fly.get(), p.s1, p.s2, starts);
   check_endurance_reaches(p, hull, reach, plan_launch_legs(p, hull, reach, starts));
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/plural.hpp"
@@ -61,9 +62,8 @@ long long separation_capacity(int separation, int width, int height) {
 
 namespace {
 
-// D against the fleet: room on the grid for n UAVs, and start cells pairwise D apart (a conflict
-// at t = 0 is one no layer can undo).
-void validate_separation(const MissionParams& p, const HullMask& hull) {
+// D against the grid: room for n UAVs pairwise D apart.
+void validate_separation_room(const MissionParams& p, const HullMask& hull) {
   if (p.separation < 0) {
     throw ParameterError(
         "separation", fmt::format("must be a whole number of cells >= 0 (got {})", p.separation));
@@ -77,7 +77,11 @@ void validate_separation(const MissionParams& p, const HullMask& hull) {
                     p.separation, plural(room, "UAV"), hull.width(), hull.height(),
                     plural(p.uavs, "UAV")));
   }
-  const auto starts = start_cells(p, hull);
+}
+
+// D against the start cells: pairwise D apart (a conflict at t = 0 is one no layer can undo).
+void validate_separation_starts(const MissionParams& p, std::span<const grid::Cell> starts) {
+  if (p.separation == 0) return;
   for (std::size_t a = 0; a < starts.size(); ++a) {
     for (std::size_t b = a + 1; b < starts.size(); ++b) {
       const int d = grid::chebyshev(starts[a], starts[b]);
@@ -95,7 +99,7 @@ void validate_separation(const MissionParams& p, const HullMask& hull) {
 
 }  // namespace
 
-void validate(const MissionParams& p, const HullMask& hull) {
+void validate_without_starts(const MissionParams& p, const HullMask& hull) {
   if (p.uavs < 1) throw ParameterError("uavs", fmt::format("must be at least 1 (got {})", p.uavs));
   if (p.uavs > hull.cell_count()) {
     throw ParameterError("uavs", fmt::format("must be at most the {} hull cells (got {})",
@@ -126,11 +130,11 @@ void validate(const MissionParams& p, const HullMask& hull) {
   }
   // Speeds: positive and finite; bounded so that a step lasts between a microsecond and a day for
   // any cell size validate() accepts.
-  for (const auto& [name, value] : {std::pair{"speed", p.speed_m_s},
-                                    std::pair{"climb-speed", p.climb_speed_m_s}}) {
+  for (const auto& [name, value] :
+       {std::pair{"speed", p.speed_m_s}, std::pair{"climb-speed", p.climb_speed_m_s}}) {
     if (value && !(*value >= kMinSpeedMs && *value <= kMaxSpeedMs)) {
-      throw ParameterError(name, fmt::format("must be a speed in [{}, {}] m/s (got {})", kMinSpeedMs,
-                                             kMaxSpeedMs, *value));
+      throw ParameterError(name, fmt::format("must be a speed in [{}, {}] m/s (got {})",
+                                             kMinSpeedMs, kMaxSpeedMs, *value));
     }
   }
   if (p.start_z != 1 && p.start_z != 2) {
@@ -182,34 +186,48 @@ void validate(const MissionParams& p, const HullMask& hull) {
                            fmt::format("leaves {} outside no-fly zones for {} to start on",
                                        plural(allowed_hull, "hull cell"), plural(p.uavs, "UAV")));
     }
-    for (const auto& c : start_cells(p, hull)) {
+  }
+  validate_launch_sites(p, hull);
+  validate_separation_room(p, hull);
+  validate_battery(p);
+}
+
+void validate_starts(const MissionParams& p, const HullMask& hull,
+                     std::span<const grid::Cell> starts) {
+  if (p.no_fly) {
+    for (const auto& c : starts) {
       if ((*p.no_fly)[c] != 0) {
         throw ParameterError("starts",
                              fmt::format("start cell ({}, {}) is a no-fly position", c.x, c.y));
       }
     }
   }
-  validate_launch_sites(p, hull);
   // Explicit starts that snap onto one hull cell: refused here, before any planning starts.
   if (!p.starts.empty()) {
-    const auto snapped = start_cells(p, hull);
     grid::Grid<int> first(hull.width(), hull.height(), -1);
-    for (std::size_t k = 0; k < snapped.size(); ++k) {
-      int& owner = first(snapped[k].x, snapped[k].y);
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      int& owner = first(starts[k].x, starts[k].y);
       if (owner >= 0) {
         const auto other = static_cast<std::size_t>(owner);
         throw ParameterError(
             "starts", fmt::format("UAVs {} and {} both start on cell ({}, {}) (given ({}, {}) and "
                                   "({}, {}); cells off the hull snap to the nearest hull cell); "
                                   "every UAV needs its own start cell",
-                                  other, k, snapped[k].x, snapped[k].y, p.starts[other].x,
+                                  other, k, starts[k].x, starts[k].y, p.starts[other].x,
                                   p.starts[other].y, p.starts[k].x, p.starts[k].y));
       }
       owner = static_cast<int>(k);
     }
   }
-  validate_separation(p, hull);
-  validate_battery(p, hull);
+  validate_separation_starts(p, starts);
+  validate_battery_reach(p, hull, starts);
+}
+
+std::vector<grid::Cell> validate(const MissionParams& p, const HullMask& hull) {
+  validate_without_starts(p, hull);
+  auto starts = start_cells(p, hull);
+  validate_starts(p, hull, starts);
+  return starts;
 }
 
 std::vector<grid::Cell> start_cells(const MissionParams& p, const HullMask& hull) {

@@ -53,6 +53,21 @@ TEST(MissionDeclarations, EveryDeclaredOptionIsOnTheRunAndPlanCommandLines) {
   }
 }
 
+TEST(MissionDeclarations, PartitionSharesTheFleetHullStartAndFootprintDeclarations) {
+  const auto help = run_cli({"partition", "--help"});
+  ASSERT_EQ(help.status, 0) << help.err;
+  for (const char* key : {"uavs", "hull", "start", "s1", "s2"}) {
+    SCOPED_TRACE(std::string("partition --") + key);
+    const planners::MissionOptionDecl* d = planners::find_mission_option(key);
+    ASSERT_NE(d, nullptr);
+    const std::string line = help_line(help.out, key);
+    ASSERT_NE(line, "") << help.out;
+    EXPECT_NE(line.find(d->value_name), std::string::npos) << line;
+    // The declaration's own help, not a text of the command's.
+    EXPECT_NE(help.out.find(d->help.substr(0, 30)), std::string::npos) << help.out;
+  }
+}
+
 TEST(MissionDeclarations, ARefusedValueIsTheCommandLinesParseError) {
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"uavs", "abc"},        {"s2", "1.5"},         {"seed", "-1"},

@@ -31,15 +31,17 @@ TEST(ExperimentConfigSpeed, SpeedsReachEveryMissionTheManifestAndTheRunIds) {
   EXPECT_FALSE(config_json(paper.config()).contains("speed"));
   const auto back = config_from_json(config_json(fast.config()), "manifest.json");
   EXPECT_EQ(config_json(back), config_json(fast.config()));
-  EXPECT_EQ(back.speed, 2.0);
-  EXPECT_EQ(back.climb_speed, 0.25);
+  EXPECT_EQ(back.mission.speed, 2.0);
+  EXPECT_EQ(back.mission.climb_speed, 0.25);
 }
 
 TEST(ExperimentConfigSpeed, LaunchTimesMayReachTheTimeLimitInSeconds) {
-  // 100 steps of 0.25 s: 25 s of transfer is the most the time limit leaves.
+  // 100 steps of 0.25 s: 25 s of transfer is the most the time limit leaves (checked when the
+  // missions are validated, before any runs).
   const std::string base = "uavs: [2]\ninstances: 1\ntime_limit: 100\nspeed: 2\n";
-  EXPECT_NO_THROW(parse(base + "launch: {sites: [[0, 0]], transfer: 25}\n"));
-  EXPECT_THROW(parse(base + "launch: {sites: [[0, 0]], transfer: 26}\n"), InputError);
+  EXPECT_NO_THROW(ExperimentPlan(parse(base + "launch: {sites: [[0, 0]], transfer: 25}\n")));
+  EXPECT_THROW(ExperimentPlan(parse(base + "launch: {sites: [[0, 0]], transfer: 26}\n")),
+               InputError);
 }
 
 }  // namespace

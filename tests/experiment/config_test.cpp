@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "experiment_test_support.hpp"
 #include "source_dir.hpp"
 
 #include <algorithm>
@@ -30,12 +31,7 @@ ExperimentConfig parse(const std::string& yaml) {
 
 /// The error a config produces when parsed and expanded (cells validated), or "" if none.
 std::string error_of(const std::string& yaml) {
-  try {
-    ExperimentPlan plan(parse(yaml));
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return testing::config_error(yaml, "bad.yaml");
 }
 
 std::string known_algorithms() {
@@ -50,16 +46,16 @@ TEST(ExperimentConfig, EmptyConfigGivesTheSpecDefaults) {
   EXPECT_EQ(c.hull->height(), 30);
   ASSERT_EQ(c.scenarios.size(), 1u);
   EXPECT_EQ(c.scenarios[0].name, "perfect");
-  EXPECT_EQ(c.s1, 5);
+  EXPECT_EQ(c.mission.s1, 5);
   EXPECT_EQ(c.s2, std::vector<int>{7});
   EXPECT_EQ(c.uavs, std::vector<int>{4});
-  EXPECT_DOUBLE_EQ(c.theta, 90.0);
+  EXPECT_DOUBLE_EQ(c.mission.theta, 90.0);
   ASSERT_EQ(c.algorithms.size(), 1u);
   EXPECT_EQ(c.algorithms[0].label, "lawnmower");
   ASSERT_EQ(c.seeds.size(), 50u);  // model.md §6: 50 instances
   EXPECT_EQ(c.seeds.front(), 1u);
   EXPECT_EQ(c.seeds.back(), 50u);
-  EXPECT_EQ(c.time_limit, 20000);
+  EXPECT_EQ(c.mission.time_limit, 20000);
   EXPECT_EQ(c.curve.step, 5);
   EXPECT_EQ(c.curve.end, 1500);
   EXPECT_EQ(c.name, "bad");
@@ -223,7 +219,7 @@ TEST(ExperimentConfig, ResolvedJsonRoundTripsWithTheSameFingerprint) {
   renamed.name = "another name";
   EXPECT_EQ(config_fingerprint(renamed), config_fingerprint(c));
   auto changed = c;
-  changed.time_limit = 100;
+  changed.mission.time_limit = 100;
   EXPECT_NE(config_fingerprint(changed), config_fingerprint(c));
 }
 
@@ -244,16 +240,19 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
       {"s1: 5\ns1: 7\n", "bad.yaml:2: s1: appears twice"},
-      {"s2: seven\n", "bad.yaml:1: s2: must be an integer (got 'seven')"},
-      {"s2: [7, 9.5]\n", "bad.yaml:1: s2: must be an integer (got '9.5')"},
-      {"uavs:\n  - 4\n  - 0\n", "bad.yaml:3: uavs: must be an integer in [1, 100000] (got 0)"},
+      {"s2: seven\n",
+       "bad.yaml:1: s2: must be an integer in [-2147483648, 2147483647] (got 'seven')"},
+      {"s2: [7, 9.5]\n",
+       "bad.yaml:1: s2: must be an integer in [-2147483648, 2147483647] (got '9.5')"},
+      {"uavs:\n  - 4\n  - 0\n", "bad.yaml:3: uavs: must be at least 1 (got 0)"},
       {"s2: [7, 7]\n", "bad.yaml:1: s2: lists 7 twice"},
       {"s2:\n  - 7\n  - 8\n", "bad.yaml:3: s2: must be an odd integer greater than s1 = 5 (got 8)"},
       {"s1: 9\n", "bad.yaml:1: s2: must be an odd integer greater than s1 = 9 (got 7)"},
       {"theta: 180\n", "bad.yaml:1: theta: must be in (0, 180) degrees, exclusive (got 180)"},
-      {"theta: wide\n", "bad.yaml:1: theta: must be a number (got 'wide')"},
-      {"start_z: 3\n", "bad.yaml:1: start_z: must be an integer in [1, 2] (got 3)"},
-      {"time_limit: 0\n", "bad.yaml:1: time_limit: must be an integer in [1, 1000000000] (got 0)"},
+      {"theta: wide\n",
+       "bad.yaml:1: theta: must be a finite number of magnitude at most 1e15 (got 'wide')"},
+      {"start_z: 3\n", "bad.yaml:1: start_z: must be 1 or 2 (got 3)"},
+      {"time_limit: 0\n", "bad.yaml:1: time_limit: must be at least 1 step (got 0)"},
       {"instances: 0\n", "bad.yaml:1: instances: must be an integer in [1, 1000000] (got 0)"},
       {"instances: [1, -2]\n",
        "bad.yaml:1: instances: must be a non-negative integer seed below 2^64 (got '-2')"},

@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <string>
 
+#include "hullinspect/core/errors.hpp"
+#include "hullinspect/experiment/config.hpp"
+#include "hullinspect/experiment/plan.hpp"
 #include "hullinspect/files/atomic_file.hpp"
 
 namespace hullinspect::experiment::testing {
@@ -25,6 +28,17 @@ inline const char* kSmallConfig =
     "algorithms: [lawnmower, {name: lawnmower, label: lm-seed2, options: {partition-seed: 2}}]\n"
     "instances: 6\n"
     "curve: {step: 10, end: 200}\n";
+
+/// The error a config produces when parsed (named `source`, relative paths from /cfg) and expanded
+/// (every cell validated), or "" if none.
+inline std::string config_error(const std::string& yaml, const std::string& source) {
+  try {
+    ExperimentPlan plan(parse_config(yaml, source, "/cfg"));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
 
 /// A fresh empty directory under the system temporary directory, removed on destruction.
 class ScratchDir {

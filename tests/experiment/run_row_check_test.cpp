@@ -115,7 +115,7 @@ TEST_F(RowCheck, ARowThatLiesIsRefusedWithItsReason) {
   const auto [row, samples] = busy_row();
   const auto h = runs_header();
   const std::string id = row.substr(0, row.find(','));
-  const int limit = plan_->config().time_limit;
+  const int limit = plan_->config().mission.time_limit;
   const int hull = plan_->config().hull_cells;
   const std::string t_m = field(row, h, "T_m");
   const std::string t_c = field(row, h, "T_c");
@@ -288,8 +288,8 @@ namespace {
 // With launch sites T_m is the last landing, after the hull is known: the rows the runner writes
 // still pass, and a curve that is complete before T_m is accepted only then.
 TEST(RowCheckLaunch, RowsOfMissionsWithLaunchSitesPass) {
-  const std::string config = std::string(testing::kSmallConfig) +
-                             "launch: {sites: [[0, 0], [29, 9]], transfer: 15}\n";
+  const std::string config =
+      std::string(testing::kSmallConfig) + "launch: {sites: [[0, 0], [29, 9]], transfer: 15}\n";
   const ExperimentPlan plan(parse_config(config, "small.yaml", "."));
   const auto dir = std::filesystem::temp_directory_path() /
                    ("hullinspect-RowCheckLaunch-" + std::to_string(::getpid()));

@@ -24,7 +24,7 @@ ExperimentConfig every_planner(std::string_view preset, std::vector<int> uavs, i
   }
   c.uavs = std::move(uavs);
   c.s2 = {c.s2.front()};
-  c.separation = separation;
+  c.mission.separation = separation;
   return c;
 }
 

@@ -22,9 +22,9 @@ TEST(MissionFrontDoor, AGivenInstanceIsTheOneTheSpecDraws) {
   const world::HullMask hull(grid::Grid<std::uint8_t>(40, 12, 1), "plate");
   MissionSpec spec = small_spec();
   spec.failures.at.push_back({1, 30});
-  validate(spec, hull);
+  const auto starts = validate(spec, hull);
   const auto whole = run_mission(spec, hull);
-  const auto given = run_mission(spec, hull, mission_instance(spec, hull));
+  const auto given = run_mission(spec, hull, mission_instance(spec, hull), starts);
   EXPECT_EQ(whole.t_c, given.t_c);
   EXPECT_EQ(whole.t_m, given.t_m);
   EXPECT_EQ(whole.steps, given.steps);
@@ -36,7 +36,7 @@ TEST(MissionFrontDoor, TheInstanceGivenIsTheOneFlown) {
   const MissionSpec spec = small_spec();
   auto clean = mission_instance(spec, hull);
   for (int i : hull.cells()) clean.truth[i] = clean.prior[i] = 0;
-  const auto r = run_mission(spec, hull, clean);
+  const auto r = run_mission(spec, hull, clean, validate(spec, hull));
   EXPECT_TRUE(r.complete);
   EXPECT_EQ(r.corroded_cells, 0);
   EXPECT_GT(run_mission(spec, hull).corroded_cells, 0);
@@ -47,7 +47,17 @@ TEST(MissionFrontDoor, FailuresGivenInsteadOfTheSpecsAreChecked) {
   const MissionSpec spec = small_spec();
   MissionOptions options;
   options.failures.at.push_back({7, 3});  // no UAV 7 in a fleet of 2
-  EXPECT_THROW(run_mission(spec, hull, mission_instance(spec, hull), options), ParameterError);
+  const auto starts = validate(spec, hull);
+  EXPECT_THROW(run_mission(spec, hull, mission_instance(spec, hull), starts, options),
+               ParameterError);
+}
+
+TEST(MissionFrontDoor, ValidationReturnsTheMissionsStartCells) {
+  const world::HullMask hull = world::default_hull();
+  MissionSpec spec = small_spec();
+  spec.params.uavs = 5;
+  spec.planner_options["partitioner"] = "stripes";  // its check partitions from the same cells
+  EXPECT_EQ(validate(spec, hull), world::start_cells(spec.params, hull));
 }
 
 }  // namespace

@@ -21,8 +21,8 @@ void expect_distinct_hull_starts(const HullMask& hull, int n) {
   std::set<std::pair<int, int>> seen;
   for (const auto& c : starts) {
     EXPECT_TRUE(hull.is_hull(c)) << n;
-    EXPECT_TRUE(seen.insert({c.x, c.y}).second) << "n = " << n << ": two UAVs on (" << c.x << ", "
-                                                 << c.y << ")";
+    EXPECT_TRUE(seen.insert({c.x, c.y}).second)
+        << "n = " << n << ": two UAVs on (" << c.x << ", " << c.y << ")";
   }
   EXPECT_NO_THROW(validate(p, hull)) << n;
 }
@@ -87,6 +87,33 @@ TEST(StartCells, ExplicitStartsOnOneCellAreRefusedUpFront) {
   EXPECT_EQ(refusal(p),
             "starts: UAVs 0 and 1 both start on cell (3, 11) (given (0, 0) and (3, 11); cells off "
             "the hull snap to the nearest hull cell); every UAV needs its own start cell");
+}
+
+TEST(StartCells, ValidationReturnsTheStartCellsItChecked) {
+  MissionParams p;
+  p.uavs = 6;
+  p.separation = 3;
+  EXPECT_EQ(validate(p, default_hull()), start_cells(p, default_hull()));
+}
+
+TEST(StartCells, TheStartChecksUseTheCellsTheyAreGiven) {
+  // A mission computes its start cells once and hands them to validate_starts(), which checks
+  // those cells, not cells of its own.
+  const HullMask hull = parse_text_mask("XXXXXX\nXXXXXX\n", "plate");
+  MissionParams p;
+  p.uavs = 2;
+  p.separation = 2;
+  validate_without_starts(p, hull);
+  EXPECT_NO_THROW(validate_starts(p, hull, std::vector<grid::Cell>{{0, 0}, {5, 1}}));
+  try {
+    validate_starts(p, hull, std::vector<grid::Cell>{{0, 0}, {1, 1}});
+    FAIL() << "expected a separation error";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.name(), "separation");
+    EXPECT_EQ(e.problem(),
+              "2 cells: UAVs 0 and 1 start 1 cell apart, at (0, 0) and (1, 1) (give --start cells "
+              "at least 2 apart, or fewer UAVs)");
+  }
 }
 
 }  // namespace

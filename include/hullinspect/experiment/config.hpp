@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "hullinspect/core/options.hpp"
+#include "hullinspect/planners/mission_input.hpp"
 #include "hullinspect/world/failures.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/instance.hpp"
@@ -77,32 +78,23 @@ struct ExperimentConfig {
   /// Stable ids of the loaded C′ and C (from a mask or defects; empty without), so that the
   /// fingerprint follows the files' contents.
   std::string prior_hash, truth_hash;
-  std::optional<double> frame_spacing;
   world::UserMaps maps;                 ///< loaded from them; empty in a config read back
   std::vector<ScenarioSpec> scenarios;  ///< plain scenarios, then every sweep's points
-  // Defaults are MissionParams{}'s (world/mission_params.hpp), the one place they are declared.
-  int s1 = world::MissionParams{}.s1;
+  /// The mission options the config sets (s1, theta, start_z, time_limit, separation, the launch
+  /// times, the battery, the speeds, the frame spacing), read through their declarations
+  /// (planners/mission_input.hpp), with the same defaults as on the command line. Its uavs and s2
+  /// are unused: those are the axes below.
+  planners::MissionInput mission;
   std::vector<int> s2 = {world::MissionParams{}.s2};
-  double theta = world::MissionParams{}.theta_deg;
   std::vector<int> uavs = {world::MissionParams{}.uavs};
-  int start_z = world::MissionParams{}.start_z;
-  int separation = world::MissionParams{}.separation;  ///< D, cells (model.md, "Separation")
   std::vector<AlgorithmSpec> algorithms;
   std::vector<std::uint64_t> seeds;
-  int time_limit = world::MissionParams{}.time_limit;
   /// Launch sites ("launch:", docs/model.md); empty = the paper's model.
   std::vector<grid::Cell> launch_sites;
-  double launch_transfer = world::MissionParams{}.launch_transfer_s;  ///< seconds each way
-  std::optional<double> takeoff_time;                                 ///< seconds; empty = u_z
-  /// "speed:" and "climb-speed:" in m/s (docs/model.md, "Speed and time"); empty = the paper's.
-  std::optional<double> speed, climb_speed;
-  /// Batteries ("battery:", docs/model.md); no endurance = unlimited flight, the paper's model.
-  std::optional<double> endurance;  ///< seconds of flight per battery
-  std::optional<double> reserve;    ///< seconds; empty = 10 % of the endurance
-  double swap_time = world::MissionParams{}.swap_time_s;
   CurveGrid curve;
-  /// Config line of each key and list item ("s1", "s2[1]", "uavs[0]", "time_limit"), so that an
-  /// error found later (when cells are validated) can still name its line. 0 = not in the file.
+  /// Config line of each key and list item ("s1", "s2[1]", "uavs[0]", "battery.endurance"), so
+  /// that an error found later (when cells are validated) can still name its line. 0 = not in the
+  /// file.
   std::map<std::string, int> lines;
 
   int line_of(const std::string& key) const;

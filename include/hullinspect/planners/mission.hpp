@@ -1,6 +1,7 @@
 #pragma once
 // Runs one mission: a simulator and a planner stepped together until completion or the time limit.
 
+#include <span>
 #include <vector>
 
 #include "hullinspect/planners/planner.hpp"
@@ -39,10 +40,13 @@ sim::MissionResult run_mission(const world::HullMask& hull, const world::Instanc
                                const MissionOptions& options = {});
 
 /// run_mission for parameters and failures already validated (run_mission(MissionSpec) validates
-/// the whole spec once, before it builds anything).
+/// the whole spec once, before it builds anything), from `starts`, the start cells that validation
+/// returned: the simulator places the UAVs on them, the planner is told them and the lower bound
+/// measures from them.
 sim::MissionResult run_validated_mission(const world::HullMask& hull,
                                          const world::Instance& instance,
-                                         const world::MissionParams& params, Planner& planner,
+                                         const world::MissionParams& params,
+                                         std::span<const grid::Cell> starts, Planner& planner,
                                          const MissionOptions& options = {});
 
 }  // namespace hullinspect::planners

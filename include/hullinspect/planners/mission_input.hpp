@@ -6,7 +6,8 @@
 // the input into the MissionSpec that run_mission runs.
 //
 // Adding a mission option is one entry in mission_option_declarations() (mission_input.cpp) plus
-// its field in MissionInput and the line of build_spec that carries it into the spec.
+// its field in MissionInput and the line of set_mission_params (or build_spec) that carries it
+// into the spec; with a config_key, experiment configs read it too.
 
 #include <cstdint>
 #include <functional>
@@ -72,8 +73,8 @@ struct MissionInput {
   std::optional<double> endurance;     ///< seconds of flight per battery; none = unlimited
   std::optional<double> reserve;       ///< seconds; default 10 % of the endurance
   double swap_time = world::MissionParams{}.swap_time_s;
-  std::optional<double> speed;         ///< m/s; empty = one cell per second (the paper's)
-  std::optional<double> climb_speed;   ///< m/s; empty = the paper's plane change
+  std::optional<double> speed;        ///< m/s; empty = one cell per second (the paper's)
+  std::optional<double> climb_speed;  ///< m/s; empty = the paper's plane change
 };
 
 /// How an option takes its value.
@@ -99,6 +100,11 @@ struct MissionOptionDecl {
   std::function<void(MissionInput&, const std::string&)> set;
   /// The default as --help shows it, or "" for none.
   std::string shown_default;
+  /// Its key in experiment configs ("start_z", "battery.endurance": a key of the `battery:` map),
+  /// or "" when a config does not set it this way (docs/experiments.md).
+  std::string config_key;
+  /// In a config, a list of values: one axis of the experiment's grid (s2, uavs).
+  bool config_axis = false;
 };
 
 /// Every mission option, in --help order. The mesh options (group "Mesh hulls …") are also those
@@ -137,6 +143,11 @@ std::shared_ptr<const grid::Grid<std::uint8_t>> build_no_fly(const std::string& 
 /// the mission option ("p-c"), not the scenario's own key ("perfect.p-c").
 world::CorrosionParams scenario_corrosion(const std::string& name, const OptionMap& options,
                                           int width);
+
+/// Writes the parameters of `input` that need no hull — fleet, footprints, camera, start plane,
+/// time limit, separation, launch times, battery and speeds — into `params` (build_spec's, and an
+/// experiment's for each of its missions).
+void set_mission_params(const MissionInput& input, world::MissionParams& params);
 
 /// Turns the input into a spec for `hull`; throws ParameterError naming the option.
 MissionSpec build_spec(const MissionInput& input, const world::HullMask& hull);

@@ -2,7 +2,9 @@
 // Everything that defines one mission, as the CLI and the experiment runner state it.
 
 #include <cstdint>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "hullinspect/core/options.hpp"
 #include "hullinspect/planners/mission.hpp"
@@ -25,8 +27,9 @@ struct MissionSpec {
 };
 
 /// Validates `spec` against `hull` (ParameterError naming the field) — params, corrosion, the
-/// algorithm name and its options — without running anything.
-void validate(const MissionSpec& spec, const world::HullMask& hull);
+/// algorithm name and its options — without running anything. Returns the mission's start cells
+/// (world::start_cells, computed once here), which run_mission() takes.
+std::vector<grid::Cell> validate(const MissionSpec& spec, const world::HullMask& hull);
 
 /// The statistics a planner may know of the instance's prior (MissionOptions::corrosion):
 /// `spec.corrosion`, or null when a user map replaced C' or C (then they describe neither).
@@ -35,13 +38,14 @@ const world::CorrosionParams* prior_statistics(const MissionSpec& spec);
 /// The mission's instance: drawn from spec.seed with spec.corrosion, then spec.maps applied.
 world::Instance mission_instance(const MissionSpec& spec, const world::HullMask& hull);
 
-/// The one place a mission is assembled: builds the planner and runs it on `instance` with the
-/// spec's failures and prior statistics (unless `options` names its own). `spec` must have passed
-/// validate(spec, hull) (a command validates before it declares its outputs); it is not validated
-/// again. For callers that watch or change the instance (a trace recorder, `plan`'s world whose
-/// truth is the prior).
+/// The one place a mission is assembled: builds the planner and runs it on `instance` from `starts`
+/// with the spec's failures and prior statistics (unless `options` names its own). `spec` must
+/// have passed validate(spec, hull), which returned `starts` (a command validates before it
+/// declares its outputs); it is not validated again. For callers that watch or change the
+/// instance (a trace recorder, `plan`'s world whose truth is the prior).
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,
-                               const world::Instance& instance, const MissionOptions& options = {});
+                               const world::Instance& instance, std::span<const grid::Cell> starts,
+                               const MissionOptions& options = {});
 
 /// Validates `spec` (once), draws its instance and runs the mission.
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,

@@ -334,6 +334,10 @@ class SweepInspectPlanner final : public Planner {
   bool prior_dropped_ = false;  // the statistics say the prior is not worth a tour
   int prior_true_ = 0;          // prior cells found corroded so far (fleet-wide)
   int prior_false_ = 0;         // prior cells found clean so far
+  // The footprint's sides on planes 1 and 2 (MissionParams::footprint) and their half-sides
+  // (MissionParams::half_side).
+  int s1_ = 5;
+  int s2_ = 7;
   int h1_ = 2;
   int h2_ = 3;
   int radius_ = 7;

@@ -2,6 +2,8 @@
 // Batteries (docs/model.md, "Batteries and sorties"): endurance, reserve and swap time in steps,
 // and the checks that refuse a battery no mission can fly with.
 
+#include <span>
+
 #include "hullinspect/world/launch_sites.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
@@ -28,9 +30,14 @@ int sortie_margin_steps(const MissionParams& params);
 
 /// Throws ParameterError naming "endurance", "reserve" or "swap-time": a time that is not finite,
 /// negative (or zero for the endurance), a reserve or swap time without an endurance, a reserve
-/// not below the endurance, an endurance without a launch site to swap batteries at, or one too
-/// short for the hull (check_endurance_reaches). Call after the launch sites are validated.
-void validate_battery(const MissionParams& params, const HullMask& hull);
+/// not below the endurance, or an endurance without a launch site to swap batteries at. Call after
+/// the launch sites are validated.
+void validate_battery(const MissionParams& params);
+
+/// With an endurance: check_endurance_reaches() for UAVs starting on `starts` (start_cells of the
+/// mission, computed once by its caller). Call after validate_battery().
+void validate_battery_reach(const MissionParams& params, const HullMask& hull,
+                            std::span<const grid::Cell> starts);
 
 /// Throws ParameterError naming "endurance" when a full battery cannot fly from a UAV's launch
 /// site to the farthest flyable hull cell and back with the reserve and the margin left: the

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "hullinspect/grid/cell.hpp"
@@ -23,21 +24,21 @@ inline constexpr double kMinSpeedMs = 1e-3;
 inline constexpr double kMaxSpeedMs = 1e3;
 
 struct MissionParams {
-  int uavs = 4;                      ///< n, fleet size (>= 1, <= hull cells)
-  int s1 = 5;                        ///< footprint side at z = 1 (close-up), odd, cells
-  int s2 = 7;                        ///< footprint side at z = 2 (detection), odd, > s1, cells
-  double theta_deg = 90.0;           ///< camera aperture θ, degrees, in (0, 180)
-  double cell_size_m = 0.5;          ///< side of one cell in metres (for reports and exports)
-  double plane_speed_cells = 1.0;    ///< standoff change per step, cells per step (> 0)
+  int uavs = 4;                    ///< n, fleet size (>= 1, <= hull cells)
+  int s1 = 5;                      ///< footprint side at z = 1 (close-up), odd, cells
+  int s2 = 7;                      ///< footprint side at z = 2 (detection), odd, > s1, cells
+  double theta_deg = 90.0;         ///< camera aperture θ, degrees, in (0, 180)
+  double cell_size_m = 0.5;        ///< side of one cell in metres (for reports and exports)
+  double plane_speed_cells = 1.0;  ///< standoff change per step, cells per step (> 0)
   /// Horizontal speed in m/s (docs/model.md, "Speed and time"): one move takes cell / speed
   /// seconds. Empty = one cell per second, the paper's model.
   std::optional<double> speed_m_s;
   /// Climb speed in m/s for plane changes and the take-off. Empty = plane_speed_cells cells per
   /// second (with the default speed, u_z steps as in the paper).
   std::optional<double> climb_speed_m_s;
-  int start_z = 2;                   ///< plane every UAV starts on (1 or 2)
-  std::vector<grid::Cell> starts;    ///< explicit start cells; empty = model.md §1 default spacing
-  int time_limit = 20000;            ///< steps after which an unfinished mission is "incomplete"
+  int start_z = 2;                 ///< plane every UAV starts on (1 or 2)
+  std::vector<grid::Cell> starts;  ///< explicit start cells; empty = model.md §1 default spacing
+  int time_limit = 20000;          ///< steps after which an unfinished mission is "incomplete"
   /// Launch sites (docs/model.md, "Launch sites"): the UAVs start on the ground at a site and end
   /// the mission landed at it. Empty = the paper's model (start airborne at the start cells).
   std::vector<grid::Cell> launch_sites;
@@ -82,8 +83,15 @@ struct MissionParams {
 /// pairwise at least D apart in Chebyshev distance); unlimited (INT_MAX) for D <= 1.
 long long separation_capacity(int separation, int width, int height);
 
-/// Throws ParameterError naming the field ("uavs", "s2", "theta", …) and the accepted range.
-void validate(const MissionParams& params, const HullMask& hull);
+/// Throws ParameterError naming the field ("uavs", "s2", "theta", …) and the accepted range, for
+/// every check that needs no start cells; once it passes, start_cells(params, hull) is bounded.
+void validate_without_starts(const MissionParams& params, const HullMask& hull);
+/// The checks of the start cells (no-fly positions, two UAVs on one cell, separation, the battery's
+/// reach) for `starts` = start_cells(params, hull). Call after validate_without_starts().
+void validate_starts(const MissionParams& params, const HullMask& hull,
+                     std::span<const grid::Cell> starts);
+/// Both, computing the start cells once; returns them so that the mission can use them.
+std::vector<grid::Cell> validate(const MissionParams& params, const HullMask& hull);
 
 /// The start cells of the mission: `params.starts` snapped to the hull, or the defaults of
 /// docs/model.md §1: UAV k aims at x = x0 + floor((k + 0.5)·w/n) on the middle row of the hull's
