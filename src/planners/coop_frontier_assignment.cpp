@@ -112,7 +112,7 @@ FrontierAssigner::Pick FrontierAssigner::rings(int robot, grid::Cell at,
   const int w = set_->width();
   const int h = set_->height();
   // Past this many cells looked at, a scan of F is cheaper than the rings still to come.
-  const long long budget = 2 * static_cast<long long>(frontiers_.size()) + 64;
+  const long long budget = static_cast<long long>(frontiers_.size()) / 2 + 32;
   long long looked = 0;
   Pick best;
   const auto look = [&](int x, int y, int m) {
