@@ -40,12 +40,8 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   grid::Grid<std::int8_t>& map = map_;
   map = grid::Grid<std::int8_t>(w, h, sim::kUnknown);
   known_.assign(static_cast<std::size_t>(prior.size()), 0);
-  // The assignment reads the fields only at the frontiers it looks at, so with Manhattan distances
-  // they answer each read on their own instead of transforming the whole grid after a change.
-  // (Searched distances keep the fields' own size rule.)
-  const int on_demand_cells = distances_->searched() ? SourceDistanceField::kOnDemandCells : 0;
-  prior_field_.reset(w, h, distances_, on_demand_cells);
-  detected_field_.reset(w, h, distances_, on_demand_cells);
+  prior_field_.reset(w, h, distances_);
+  detected_field_.reset(w, h, distances_);
   prior_floor_.reset(prior.size(), kFloorLevels);
   corrosion_left_.reset(w, h);
   for (int i = 0; i < prior.size(); ++i) {

@@ -73,7 +73,7 @@ class FrontierAssigner {
   /// searched in rings of growing Manhattan distance m around it, and the search stops at the
   /// ring from which even utilities.score_ceiling(robot, m, β) (≥ any U_f + β / d(r, f) there:
   /// shortest flights are no shorter than the Manhattan distance) is below the best score found, or
-  /// falls back to a scan of F once the rings have covered more than twice as many cells as F
+  /// falls back to a scan of F once the rings have covered more than half as many cells as F
   /// holds. The cost then follows the frontiers near the robot rather than |F|. Robots with their
   /// own distance services (set_robot_distances) scan F. reduced_utility() is not filled.
   void assign(const IndexedCellSet& frontiers, const FrontierUtilities& utilities,
