@@ -276,6 +276,7 @@ void run_experiment(const std::string& kind, const std::string& value, const py:
     options.on_progress = [&stopped](const experiment::Progress&) {
       if (stopped) throw Error("interrupted");
     };
+    options.interrupted = [&stopped] { return stopped.load(); };
     experiment::run_experiment(plan, out, options);
   });
 }

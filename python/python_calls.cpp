@@ -1,6 +1,9 @@
 #include "python_calls.hpp"
 
+#include <pthread.h>
+
 #include <chrono>
+#include <csignal>
 #include <thread>
 
 #include "hullinspect/core/errors.hpp"
@@ -26,6 +29,24 @@ struct Server {
   bool serving = false;
   bool work_done = false;
   std::atomic<bool> stopped{false};
+};
+
+// Blocks SIGINT, SIGTERM and SIGHUP on the calling thread while it lives (threads started
+// meanwhile inherit the mask).
+class InterruptsBlocked {
+ public:
+  InterruptsBlocked() {
+    sigset_t interrupts;
+    sigemptyset(&interrupts);
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&interrupts, signal);
+    pthread_sigmask(SIG_BLOCK, &interrupts, &previous_);
+  }
+  ~InterruptsBlocked() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  InterruptsBlocked(const InterruptsBlocked&) = delete;
+  InterruptsBlocked& operator=(const InterruptsBlocked&) = delete;
+
+ private:
+  sigset_t previous_;
 };
 
 Server& server() {
@@ -62,6 +83,10 @@ void serve_python_calls(const std::function<void(const std::atomic<bool>& stoppe
   }
   std::exception_ptr work_error;
   std::optional<py::error_already_set> interrupt;
+  // The worker, and every thread it starts, blocks the interrupt signals, so that the kernel
+  // delivers Ctrl-C to this thread: Python runs its handlers only here, and a signal taken by a
+  // worker would not wake a decide() that sleeps on this thread.
+  std::optional<InterruptsBlocked> blocked(std::in_place);
   std::thread worker([&] {
     try {
       work(s.stopped);
@@ -72,6 +97,7 @@ void serve_python_calls(const std::function<void(const std::atomic<bool>& stoppe
     s.work_done = true;
     s.posted.notify_all();
   });
+  blocked.reset();  // this thread takes them again
   auto stop_with = [&](py::error_already_set&& e) {
     if (!interrupt) interrupt.emplace(std::move(e));
     s.stopped = true;

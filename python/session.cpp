@@ -92,7 +92,8 @@ std::vector<std::array<int, 3>> Session::expected_readings(const std::vector<int
         u.transit_left = sim_->plane_change_steps() - 1;
         if (u.transit_left == 0) u.z = 3 - u.z;
       } else {
-        u.pos = sim::moved(u.pos, pending_[k]);
+        u.pos = sim::moved(u.pos, pending_[k], hull_->width(), hull_->height(),
+                           sim_->flight_steps().plane[0]);
       }
       if (u.in_transit()) continue;
     }

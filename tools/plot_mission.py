@@ -44,7 +44,7 @@ NO_FLY = "#b2182b"
 NO_FLY_HATCH = "////"
 UNREACHABLE = "#5e3c99"
 UNREACHABLE_HATCH = {"x": "xxxx", "d": "xx"}
-UAV_FIELDS = 5  # x, y, z, transit_left, active
+PAPER_UAV_FIELDS = 5  # x, y, z, transit_left, active (then airborne, battery_left, away_left)
 # Trajectory colours: no orange or green, which mark corrosion.
 UAV_COLORS = ["#1f77b4", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#555555", "#bcbd22",
               "#393b79", "#843c39", "#000000", "#7b4173"]
@@ -64,8 +64,8 @@ def read_trace(path):
         raise TraceError(f"{path}:{e.lineno}: not a JSON trace: {e.msg}") from None
     if not isinstance(trace, dict) or trace.get("format") != "hullinspect-trace":
         raise TraceError(f'{path}: format: expected "hullinspect-trace" (not a hullinspect trace?)')
-    if trace.get("version") not in (1, 2):
-        raise TraceError(f"{path}: version: {trace.get('version')} is not supported (this script reads versions 1 and 2)")
+    if trace.get("version") not in (1, 2, 3):
+        raise TraceError(f"{path}: version: {trace.get('version')} is not supported (this script reads versions 1 to 3)")
     for key in ("grid", "initial_map", "frames", "footprint", "result"):
         if key not in trace:
             raise TraceError(f"{path}: {key}: missing")
@@ -152,8 +152,9 @@ def uav_tracks(trace, until):
     """Per UAV: array [t, (x, y, z, transit_left, active)] for t = 0..until."""
     frames = trace["frames"][: until + 1]
     u = np.array([f["u"] for f in frames], dtype=np.int32)
-    n = u.shape[1] // UAV_FIELDS
-    return [u[:, k * UAV_FIELDS:(k + 1) * UAV_FIELDS] for k in range(n)]
+    fields = len(trace.get("uav_fields", range(PAPER_UAV_FIELDS)))
+    n = u.shape[1] // fields
+    return [u[:, k * fields:k * fields + PAPER_UAV_FIELDS] for k in range(n)]
 
 
 def flight_runs(track):

@@ -6,7 +6,10 @@
 (function (hv) {
   const {FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, uavColor, layerColor,
     cellColor} = hv.palette;
+  const {LAUNCH_SITE_FILL, GROUND_FILL, AWAY_FILL} = hv.palette;
   const PATH_LENGTH = 40; // steps of recent path drawn behind each UAV
+  // On the ground, or flying between its launch site and the hull: not a UAV at work on the hull.
+  const offHull = (s) => !s.airborne || s.away > 0;
   // Margins around the cells (CSS px), inside the overlay canvas: axes in metres below and left,
   // room above and right so markers and labels of the outer rows are not cut off.
   const PAD = {top: 18, right: 18, bottom: 34, left: 46};
@@ -156,7 +159,7 @@
       if (this.show.footprints) {
         const fp = r.trace.footprint;
         states.forEach((s, k) => {
-          if (!s.active) return;
+          if (!s.active || offHull(s)) return; // away from the hull a UAV senses nothing
           const half = ((s.z === 1 ? fp[0] : fp[1]) - 1) / 2;
           const x0 = Math.max(0, s.x - half) * cp;
           const x1 = Math.min(r.W, s.x + half + 1) * cp;
@@ -193,7 +196,8 @@
           ctx.strokeRect(px - pad, py - pad, cp + 2 * pad, cp + 2 * pad);
         });
       }
-      states.forEach((s, k) => this.drawUav(ctx, s, k));
+      this.drawLaunchSites(ctx);
+      states.forEach((s, k) => (offHull(s) ? this.drawOffHull(ctx, s, k) : this.drawUav(ctx, s, k)));
       if (this.show.labels) this.drawLabels(ctx, states, notes); else this.labelBoxes = [];
       if (this.hover) {
         // A yellow ring and a cross-hair along the row and the column: unlike targets (white
@@ -471,6 +475,45 @@
       const d = Math.max(2, this.cellPx * 0.4);
       for (const [wx, wy] of plan) ctx.fillRect(this.cx(wx) - d / 2, this.cy(wy) - d / 2, d, d);
       ctx.globalAlpha = 1;
+    }
+
+    // Launch sites: a light pad with a dark outline under the UAVs that take off there.
+    drawLaunchSites(ctx) {
+      const cp = this.cellPx;
+      const r = this.replay;
+      for (const [x, y] of r.launchSites) {
+        const pad = Math.max(1, cp * 0.2);
+        ctx.fillStyle = LAUNCH_SITE_FILL;
+        ctx.fillRect(x * cp - pad, (r.H - 1 - y) * cp - pad, cp + 2 * pad, cp + 2 * pad);
+        ctx.strokeStyle = '#111';
+        ctx.lineWidth = 1.5;
+        ctx.strokeRect(x * cp - pad, (r.H - 1 - y) * cp - pad, cp + 2 * pad, cp + 2 * pad);
+      }
+    }
+
+    // A UAV away from the hull: on the ground at its site a dark triangle, flying out or home a
+    // dark diamond, both outlined in its colour; never the round marker of a UAV on the hull.
+    drawOffHull(ctx, s, k) {
+      const x = this.cx(s.x);
+      const y = this.cy(s.y);
+      const rad = this.markerRadius();
+      ctx.beginPath();
+      if (!s.airborne) {
+        ctx.moveTo(x, y - rad);
+        ctx.lineTo(x + rad, y + rad * 0.8);
+        ctx.lineTo(x - rad, y + rad * 0.8);
+      } else {
+        ctx.moveTo(x, y - rad);
+        ctx.lineTo(x + rad, y);
+        ctx.lineTo(x, y + rad);
+        ctx.lineTo(x - rad, y);
+      }
+      ctx.closePath();
+      ctx.fillStyle = s.airborne ? AWAY_FILL : GROUND_FILL;
+      ctx.fill();
+      ctx.lineWidth = 2;
+      ctx.strokeStyle = s.active ? uavColor(k) : '#777';
+      ctx.stroke();
     }
 
     drawUav(ctx, s, k) {

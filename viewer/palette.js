@@ -28,6 +28,14 @@
   // No-fly positions and unreachable hull cells, hatched over the cells (map_view.js drawNoFly).
   const NO_FLY_MARK = '#111';
   const UNREACHABLE_MARK = [null, '#999', '#444']; // by kind: 1 only z = 2 sees it, 2 none does
+  // The physical mission (map_view.js): launch sites, UAVs on the ground (triangles) and flying
+  // between a site and the hull (diamonds); the battery gauge, green above the reserve and red at
+  // or below it.
+  const LAUNCH_SITE_FILL = '#f2f2f2';
+  const GROUND_FILL = '#3c3c3c';
+  const AWAY_FILL = '#8a8a8a';
+  const BATTERY_OK = 'rgb(60, 170, 90)';
+  const BATTERY_LOW = 'rgb(215, 40, 40)';
   const LAYER_COLORS = {frontiers: 'rgba(255, 105, 97, 0.62)'};
   const EXTRA_LAYER_COLORS = [
     'rgba(150, 80, 255, 0.45)', 'rgba(0, 190, 220, 0.45)', 'rgba(255, 215, 0, 0.55)',
@@ -61,6 +69,7 @@
 
   hv.palette = {
     COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, M_NAMES, rgb,
+    LAUNCH_SITE_FILL, GROUND_FILL, AWAY_FILL, BATTERY_OK, BATTERY_LOW,
     regionColor, regionTint, uavColor, layerColor, cellColor,
   };
 })(window.hullinspectViewer = window.hullinspectViewer || {});

@@ -27,8 +27,8 @@
   class Replay {
     constructor(trace) {
       if (!trace || trace.format !== 'hullinspect-trace') throw new Error('not a hullinspect trace');
-      // Version 1 is version 2 without layer changes.
-      if (trace.version !== 1 && trace.version !== 2) {
+      // Version 1 is version 2 without layer changes; version 2 is version 3 of the paper's model.
+      if (trace.version !== 1 && trace.version !== 2 && trace.version !== 3) {
         throw new Error(`trace version ${trace.version} is not supported`);
       }
       this.trace = trace;
@@ -36,7 +36,15 @@
       this.H = trace.grid.height;
       this.frameCount = trace.frames.length;
       this.lastT = this.frameCount - 1;
-      this.uavCount = trace.frames[0].u.length / 5;
+      // Values per UAV: x, y, z, transit_left, active, and with launch sites airborne,
+      // battery_left, away_left (docs/trace-format.md).
+      this.fields = trace.uav_fields ? trace.uav_fields.length : 5;
+      this.physical = this.fields >= 8;
+      this.uavCount = trace.frames[0].u.length / this.fields;
+      // The battery in steps (endurance, reserve), or null when flight is unlimited.
+      this.battery = trace.battery ? {endurance: trace.battery.endurance_steps,
+                                      reserve: trace.battery.reserve_steps} : null;
+      this.launchSites = trace.launch ? trace.launch.sites : [];
       this.truth = this.parseRows(trace.truth);
       this.prior = this.parseRows(trace.prior);
       this.owner = trace.partition ? this.parseRows(trace.partition, true) : null;
@@ -98,11 +106,11 @@
       this.changeStart[this.frameCount] = j;
     }
 
-    // UAV states of every frame: [x, y, z, transit_left, active] per UAV.
+    // UAV states of every frame: `fields` values per UAV.
     indexUavs() {
-      const n5 = this.uavCount * 5;
-      this.uav = new Int32Array(this.frameCount * n5);
-      this.trace.frames.forEach((f, i) => this.uav.set(f.u, i * n5));
+      const stride = this.uavCount * this.fields;
+      this.uav = new Int32Array(this.frameCount * stride);
+      this.trace.frames.forEach((f, i) => this.uav.set(f.u, i * stride));
     }
 
     // The first time each cell was in a sensing footprint (any UAV, any plane), or Infinity: so
@@ -110,11 +118,13 @@
     indexFirstSeen() {
       const fp = this.trace.footprint;
       const seen = new Float64Array(this.W * this.H).fill(Infinity);
-      const n5 = this.uavCount * 5;
+      const f = this.fields;
+      const stride = this.uavCount * f;
       const u = this.uav;
       for (let t = 0; t < this.frameCount; ++t) {
-        for (let o = t * n5; o < (t + 1) * n5; o += 5) {
-          if (u[o + 4] !== 1 || u[o + 3] !== 0) continue;  // failed or changing plane: no sensing
+        for (let o = t * stride; o < (t + 1) * stride; o += f) {
+          // Failed, changing plane or away from the hull: no sensing.
+          if (u[o + 4] !== 1 || u[o + 3] !== 0 || (f >= 8 && u[o + 7] !== 0)) continue;
           const half = ((u[o + 2] === 1 ? fp[0] : fp[1]) - 1) / 2;
           const y0 = Math.max(0, u[o + 1] - half);
           const y1 = Math.min(this.H - 1, u[o + 1] + half);
@@ -130,9 +140,13 @@
     }
 
     uavState(t, k) {
-      const o = (t * this.uavCount + k) * 5;
+      const o = (t * this.uavCount + k) * this.fields;
       const u = this.uav;
-      return {x: u[o], y: u[o + 1], z: u[o + 2], transit: u[o + 3], active: u[o + 4] === 1};
+      // Without launch sites a UAV is always airborne, on the hull, with an unlimited battery.
+      const physical = this.physical;
+      return {x: u[o], y: u[o + 1], z: u[o + 2], transit: u[o + 3], active: u[o + 4] === 1,
+              airborne: !physical || u[o + 5] === 1, battery: physical ? u[o + 6] : -1,
+              away: physical ? u[o + 7] : 0};
     }
 
     // Per UAV and per layer: the frames where the annotation changed, for binary search.

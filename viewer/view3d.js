@@ -298,13 +298,16 @@
         this.lifted(i, this.zeta[s.z], p);
         u.mesh.position.set(p[0], p[1], p[2]);
         u.label.position.set(p[0], p[1], p[2]);
-        u.label.visible = this.show.labels;
+        // On the ground or away at its launch site (flying out or home): not on the hull.
+        const offHull = !s.airborne || s.away > 0;
+        u.mesh.visible = !offHull;
+        u.label.visible = this.show.labels && !offHull;
         u.mesh.material.color.copy(s.active ? u.color : this.failedColor);
         const sight = u.sight.geometry.attributes.position;
         sight.array.set(p, 0);
         this.lifted(i, 0, sight.array, 3);
         sight.needsUpdate = true;
-        u.sight.visible = s.active && s.transit === 0;
+        u.sight.visible = s.active && s.transit === 0 && !offHull;
         const path = u.path.geometry.attributes.position;
         const first = Math.max(0, t - PATH_LENGTH);
         for (let j = first; j <= t; ++j) {
@@ -314,7 +317,7 @@
         path.needsUpdate = true;
         u.path.geometry.setDrawRange(0, t - first + 1);
         u.path.visible = this.show.paths;
-        if (!this.show.footprints || !s.active || s.transit > 0) continue;
+        if (!this.show.footprints || !s.active || s.transit > 0 || offHull) continue;
         const half = (fp[s.z - 1] - 1) / 2;
         for (let y = Math.max(0, s.y - half); y <= Math.min(H - 1, s.y + half); ++y) {
           for (let x = Math.max(0, s.x - half); x <= Math.min(W - 1, s.x + half); ++x) {

@@ -5,7 +5,8 @@
 
 (function (hv) {
   const {COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, M_NAMES, rgb,
-    regionColor, regionTint, uavColor, layerColor} = hv.palette;
+    regionColor, regionTint, uavColor, layerColor, LAUNCH_SITE_FILL, GROUND_FILL, AWAY_FILL, BATTERY_OK,
+    BATTERY_LOW} = hv.palette;
   const $ = (id) => document.getElementById(id);
 
   class Viewer {
@@ -61,7 +62,9 @@
           (r.unreachable_cells ? `, ${r.unreachable_cells} unreachable for close-up (not counted in c(t), m(t))` : '');
       $('stat-counters').textContent =
           `moves ${r.moves} · plane changes ${r.plane_changes} · hovers ${r.hovers} · ` +
-          `redundant observations ${r.redundant_observations}`;
+          `redundant observations ${r.redundant_observations}` +
+          (r.sorties !== undefined ? ` · sorties ${r.sorties}` : '') +
+          (r.battery_crashes !== undefined ? ` · battery crashes ${r.battery_crashes}` : '');
       $('btn-tc').disabled = r.T_c === null || r.T_c === undefined;
       $('btn-tm').disabled = r.T_m === null || r.T_m === undefined;
     }
@@ -109,6 +112,13 @@
         'UAV at z = 1 (close-up)']);
       items.push([swatch(`background:linear-gradient(90deg,${c0} 50%,#fff 50%);border-color:${c0}`,
                          'marker'), 'UAV changing plane']);
+      if (this.replay.physical) {
+        items.push([swatch(`background:${LAUNCH_SITE_FILL};border:1.5px solid #111`), 'launch site']);
+        items.push([swatch(`background:${GROUND_FILL};border-color:${c0};clip-path:polygon(50% 0,100% 100%,0 100%)`,
+                           'marker'), 'UAV on the ground at its launch site']);
+        items.push([swatch(`background:${AWAY_FILL};border-color:${c0};transform:rotate(45deg);border-radius:0`,
+                           'marker'), 'UAV away: flying between its launch site and the hull']);
+      }
       items.push([swatch(`border-color:${c0}`, 'line'), 'recent path at z = 1']);
       items.push([swatch(`border-color:${c0}`, 'line dashed'), 'recent path at z = 2']);
       items.push([swatch(`border-color:${c0};border-top-width:1px;opacity:0.6`, 'line'),
@@ -120,6 +130,11 @@
     }
 
     buildUavTable() {
+      // With launch sites: whether each UAV is airborne, on the ground or away; with a battery, its
+      // gauge.
+      const head = $('uav-table').querySelector('thead tr');
+      if (this.replay.physical) head.insertAdjacentHTML('beforeend', '<th>flight</th>');
+      if (this.replay.battery) head.insertAdjacentHTML('beforeend', '<th>battery</th>');
       const body = $('uav-table').querySelector('tbody');
       body.innerHTML = '';
       this.uavRows = [];
@@ -127,7 +142,10 @@
         const tr = document.createElement('tr');
         tr.innerHTML = `<td><span class="swatch marker" style="background:${uavColor(k)};` +
             `border-color:${uavColor(k)}"></span> ${k}</td><td class="num"></td><td></td><td></td>` +
-            '<td class="num"></td>';
+            '<td class="num"></td>' +
+            (this.replay.physical ? '<td class="flight"></td>' : '') +
+            (this.replay.battery ? '<td class="battery"><span class="gauge"><span class="gauge-fill">' +
+                '</span></span> <span class="gauge-text num"></span></td>' : '');
         body.appendChild(tr);
         this.uavRows.push(Array.from(tr.children).slice(1));
       }
@@ -343,8 +361,26 @@
             : s.transit > 0 ? `z ${s.z}→${3 - s.z} (${s.transit} left)` : `z = ${s.z}`;
         cells[2].textContent = a && a.mode ? a.mode : '—';
         cells[3].textContent = a && a.target ? `(${a.target[0]}, ${a.target[1]})` : '—';
+        if (r.physical) {
+          cells[4].textContent = !s.active ? 'failed' : !s.airborne ? 'on the ground'
+              : s.away > 0 ? 'away' : 'airborne';
+        }
+        if (r.battery) this.showBattery(cells[5], s);
       }
       this.updateHoverInfo();
+    }
+
+    // The gauge of a battery: its seconds left, the bar's length the share of the endurance, red
+    // at or below the reserve.
+    showBattery(cell, s) {
+      const r = this.replay;
+      const step = r.trace.step_seconds || 1;
+      const fill = cell.querySelector('.gauge-fill');
+      const low = s.battery <= r.battery.reserve;
+      fill.style.width = `${(100 * s.battery / r.battery.endurance).toFixed(1)}%`;
+      fill.style.background = low ? BATTERY_LOW : BATTERY_OK;
+      cell.classList.toggle('low', low);
+      cell.querySelector('.gauge-text').textContent = `${+(s.battery * step).toFixed(3)} s`;
     }
 
     onHover(e) {
@@ -388,7 +424,7 @@
       for (let k = 0; k < r.uavCount; ++k) {
         const s = r.uavState(r.t, k);
         const half = ((s.z === 1 ? fp[0] : fp[1]) - 1) / 2;
-        if (s.active && s.transit === 0 && Math.abs(s.x - x) <= half && Math.abs(s.y - y) <= half) sight.push(k);
+        if (s.active && s.transit === 0 && s.airborne && s.away === 0 && Math.abs(s.x - x) <= half && Math.abs(s.y - y) <= half) sight.push(k);
         if (s.x === x && s.y === y) here.push(k);
         const a = r.annotation(k, r.t);
         if (a && a.target && a.target[0] === x && a.target[1] === y) targets.push(k);

@@ -17,9 +17,10 @@ void add_tsp_command(CLI::App& app, CommandAction& action);
 void add_experiment_commands(CLI::App& app, CommandAction& action);  // experiment, merge, report
 void add_view_command(CLI::App& app, CommandAction& action);
 void add_list_command(CLI::App& app, CommandAction& action);
-void add_hull_command(CLI::App& app, CommandAction& action);  // hull import
+void add_hull_command(CLI::App& app, CommandAction& action);    // hull import
 void add_export_command(CLI::App& app, CommandAction& action);  // docs/export.md
 void add_plan_command(CLI::App& app, CommandAction& action);    // docs/export.md
+void add_trace_command(CLI::App& app, CommandAction& action);   // trace check
 
 /// Exit status for invalid input (bad option values, unreadable or malformed files).
 inline constexpr int kExitBadInput = 2;

@@ -13,6 +13,7 @@
 #include "hullinspect/files/bounded_read.hpp"
 #include "hullinspect/io/geo_survey.hpp"
 #include "hullinspect/planners/mission_input.hpp"
+#include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/ship_frame_bounds.hpp"
 
 #include <algorithm>
@@ -116,9 +117,19 @@ io::GeoPoint geo_point(const YAML::Node& node, const std::string& field, const s
       yaml_number(node[2], field + "[2] (height)", io::kMinOriginAltM, io::kMaxOriginAltM, path)};
 }
 
-// survey: [{ship: [X, Y, Z] or [X, Z], at: [LAT, LON, ALT]}, {…}] and an optional tolerance: M
-// (docs/export.md, "Two surveyed points").
-io::GeoReference geo_from_survey_yaml(const YAML::Node& doc, const std::string& path) {
+// The geo-reference of two surveyed points whose ship-frame coordinates are all known.
+io::GeoReference survey_reference(const std::array<io::SurveyedPoint, 2>& points,
+                                  double tolerance_m, const std::string& path, int line) {
+  try {
+    return io::geo_from_survey(points[0], points[1], tolerance_m);
+  } catch (const ParameterError& e) {
+    throw InputError(path, line, "survey: " + e.problem());
+  }
+}
+
+// survey: [{ship: [X, Y, Z] or [X, Z], at: [LAT, LON, ALT]} or {cell: [COL, ROW], at: …}, {…}]
+// and an optional tolerance: M (docs/export.md, "Two surveyed points").
+CellSurvey survey_yaml(const YAML::Node& doc, const std::string& path) {
   for (const auto& entry : doc) {
     const std::string key = entry.first.Scalar();
     if (key != "survey" && key != "tolerance") {
@@ -129,57 +140,84 @@ io::GeoReference geo_from_survey_yaml(const YAML::Node& doc, const std::string& 
     }
   }
   const auto survey = doc["survey"];
+  constexpr const char* kPointForm =
+      "{ship: [X, Y, Z], at: [LAT, LON, ALT]} or {cell: [COL, ROW], at: [LAT, LON, ALT]}";
   if (!survey.IsSequence() || survey.size() != 2) {
     throw InputError(path, survey.Mark().line + 1,
-                     "survey: expected two points, each {ship: [X, Y, Z], at: [LAT, LON, ALT]}");
+                     fmt::format("survey: expected two points, each {}", kPointForm));
   }
-  io::SurveyedPoint points[2];
+  CellSurvey out;
+  out.path = path;
+  out.line = survey.Mark().line + 1;
   for (std::size_t i = 0; i < 2; ++i) {
     const auto node = survey[i];
     const std::string field = fmt::format("survey[{}]", i);
     const int line = node.Mark().line + 1;
-    if (!node.IsMap() || !node["ship"] || !node["at"]) {
-      throw InputError(path, line, field + ": expected {ship: [X, Y, Z], at: [LAT, LON, ALT]}");
+    out.lines[i] = line;
+    if (!node.IsMap() || !node["at"] || (!node["ship"] == !node["cell"])) {
+      throw InputError(path, line, fmt::format("{}: expected {}", field, kPointForm));
     }
     refuse_duplicate_keys(node, path);
     for (const auto& entry : node) {
       const std::string key = entry.first.Scalar();
-      if (key != "ship" && key != "at") {
+      if (key != "ship" && key != "cell" && key != "at") {
         throw InputError(path, entry.first.Mark().line + 1,
-                         fmt::format("{}.{}: unknown key (known: ship, at)", field,
+                         fmt::format("{}.{}: unknown key (known: ship or cell, at)", field,
                                      escape_for_message(key, 200)));
       }
     }
-    const auto ship = node["ship"];
-    if (!ship.IsSequence() || (ship.size() != 2 && ship.size() != 3)) {
-      throw InputError(path, ship.Mark().line + 1,
-                       field + ".ship: expected [X, Y, Z] or [X, Z] in metres of the ship frame");
+    auto& p = out.points[i];
+    if (const auto cell = node["cell"]) {
+      if (!cell.IsSequence() || cell.size() != 2) {
+        throw InputError(path, cell.Mark().line + 1,
+                         field + ".cell: expected [COL, ROW], the hull grid's column and row");
+      }
+      int v[2] = {0, 0};
+      for (std::size_t k = 0; k < 2; ++k) {
+        const char* axis = k == 0 ? "COL" : "ROW";
+        if (!cell[k].IsScalar()) {
+          throw InputError(path, cell.Mark().line + 1,
+                           fmt::format("{}.cell ({}): expected an integer", field, axis));
+        }
+        try {
+          v[k] = parse_integer<int>(cell[k].Scalar(), 0, world::kMaxGridSide - 1);
+        } catch (const NumberError& e) {
+          throw InputError(path, cell.Mark().line + 1,
+                           fmt::format("{}.cell ({}): {}", field, axis, e.what()));
+        }
+      }
+      out.cells[i] = grid::Cell{v[0], v[1]};
+    } else {
+      const auto ship = node["ship"];
+      if (!ship.IsSequence() || (ship.size() != 2 && ship.size() != 3)) {
+        throw InputError(path, ship.Mark().line + 1,
+                         field + ".ship: expected [X, Y, Z] or [X, Z] in metres of the ship frame");
+      }
+      const auto metres = [&](std::size_t k, const char* axis) {
+        return yaml_number(ship[k], fmt::format("{}.ship ({})", field, axis),
+                           -world::kMaxShipFrameM, world::kMaxShipFrameM, path);
+      };
+      p.x = metres(0, "X");
+      p.y = ship.size() == 3 ? metres(1, "Y") : 0.0;
+      p.z = metres(ship.size() - 1, "Z");
     }
-    const auto metres = [&](std::size_t k, const char* axis) {
-      return yaml_number(ship[k], fmt::format("{}.ship ({})", field, axis), -world::kMaxShipFrameM,
-                         world::kMaxShipFrameM, path);
-    };
-    auto& p = points[i];
-    p.x = metres(0, "X");
-    p.y = ship.size() == 3 ? metres(1, "Y") : 0.0;
-    p.z = metres(ship.size() - 1, "Z");
     const auto at = node["at"];
     if (!at.IsSequence() || at.size() != 3) {
       throw InputError(path, at.Mark().line + 1, field + ".at: expected [LAT, LON, ALT]");
     }
     p.at = geo_point(at, field + ".at", path);
   }
-  const double tolerance = doc["tolerance"]
-                               ? yaml_number(doc["tolerance"], "tolerance", 0.0, 1e3, path)
-                               : io::kDefaultSurveyToleranceM;
-  try {
-    return io::geo_from_survey(points[0], points[1], tolerance);
-  } catch (const ParameterError& e) {
-    throw InputError(path, survey.Mark().line + 1, "survey: " + e.problem());
-  }
+  if (doc["tolerance"])
+    out.tolerance_m = yaml_number(doc["tolerance"], "tolerance", 0.0, 1e3, path);
+  return out;
 }
 
-io::GeoReference geo_from_yaml(const std::string& path) {
+// The keys of a --geo file's two forms.
+constexpr const char* kGeoKeys = "origin and heading, or survey and tolerance";
+
+// The --geo file's geo-reference, or its survey when a surveyed point is a grid cell (the
+// reference then waits for the mission's frame).
+void geo_from_yaml(const std::string& path, ExportRequest& request) {
   // Read like every input (bounded, regular files only, registered against the outputs).
   const std::string text = io::read_file(path, kMaxGeoFileBytes, "the geo-reference file");
   YAML::Node doc;
@@ -192,7 +230,23 @@ io::GeoReference geo_from_yaml(const std::string& path) {
     throw InputError(path, 0, "expected a YAML mapping with origin: [LAT, LON, ALT] and heading");
   }
   refuse_duplicate_keys(doc, path);
-  if (doc["survey"]) return geo_from_survey_yaml(doc, path);
+  if (doc["survey"]) {
+    auto survey = survey_yaml(doc, path);
+    if (survey.cells[0] || survey.cells[1]) {
+      request.cell_survey = std::move(survey);
+    } else {
+      request.geo = survey_reference(survey.points, survey.tolerance_m, path, survey.line);
+    }
+    return;
+  }
+  for (const auto& entry : doc) {
+    const std::string key = entry.first.Scalar();
+    if (key != "origin" && key != "heading") {
+      throw InputError(
+          path, entry.first.Mark().line + 1,
+          fmt::format("{}: unknown key (expected {})", escape_for_message(key, 200), kGeoKeys));
+    }
+  }
   const auto origin = doc["origin"];
   if (!origin || !origin.IsSequence() || origin.size() != 3) {
     throw InputError(path, origin ? origin.Mark().line + 1 : 0, "origin: expected [LAT, LON, ALT]");
@@ -202,8 +256,31 @@ io::GeoReference geo_from_yaml(const std::string& path) {
     throw InputError(path, 0, "heading: expected degrees clockwise from north");
   }
   const io::GeoPoint point = geo_point(origin, "origin", path);
-  return io::GeoReference(
+  request.geo.emplace(
       point, yaml_number(heading, "heading", -io::kMaxHeadingDeg, io::kMaxHeadingDeg, path));
+}
+
+// The geo-reference of an export: the request's, or its cell survey's on the plan's frame.
+std::optional<io::GeoReference> export_geo(const ExportRequest& request,
+                                           const io::ExportPlan& plan) {
+  if (!request.cell_survey) return request.geo;
+  const auto& survey = *request.cell_survey;
+  auto points = survey.points;
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (!survey.cells[i]) continue;
+    const grid::Cell c = *survey.cells[i];
+    if (!plan.is_hull(c)) {
+      throw InputError(survey.path, survey.lines[i],
+                       fmt::format("survey[{}].cell: ({}, {}) is not a hull cell of the mission's "
+                                   "{} × {} grid (a surveyed point lies on the hull)",
+                                   i, c.x, c.y, plan.width, plan.height));
+    }
+    const auto s = plan.frame.surface_point(c);
+    points[i].x = s[0];
+    points[i].y = s[1];
+    points[i].z = s[2];
+  }
+  return survey_reference(points, survey.tolerance_m, survey.path, survey.line);
 }
 
 }  // namespace
@@ -243,7 +320,8 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
                          fmt::format("'{}' is not a finish (expected land or rtl)", a.finish));
   }
   r.settings.drone = io::parse_dji_drone(a.drone);
-  for (const auto& text : a.launch) r.settings.launch_sites.push_back(planners::parse_xy(text, "launch"));
+  for (const auto& text : a.launch)
+    r.settings.launch_sites.push_back(planners::parse_xy(text, "launch"));
   if (a.max_waypoints) {
     if (*a.max_waypoints < io::kMinWaypointCap) {
       throw ParameterError("max-waypoints",
@@ -258,7 +336,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
     if (!a.origin.empty() || a.heading) {
       throw ParameterError("geo", "give either --geo FILE or --origin and --heading, not both");
     }
-    r.geo = geo_from_yaml(a.geo_file);
+    geo_from_yaml(a.geo_file, r);
   } else if (!a.origin.empty() || a.heading) {
     if (a.origin.empty())
       throw ParameterError("origin", "--heading needs --origin LAT,LON,ALT too");
@@ -266,7 +344,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
     r.geo = io::GeoReference(io::parse_geo_origin(a.origin), *a.heading);
   }
   for (const auto f : r.formats) {
-    if (io::needs_geo_reference(f) && !r.geo) {
+    if (io::needs_geo_reference(f) && !r.geo && !r.cell_survey) {
       throw ParameterError("origin", fmt::format("the {} format needs a geo-reference: give "
                                                  "--origin LAT,LON,ALT and --heading DEG (or --geo "
                                                  "FILE)",
@@ -290,7 +368,7 @@ namespace {
 std::vector<std::string> declared_names(const ExportRequest& request, int uavs) {
   std::vector<std::string> names;
   for (const auto f : request.formats) {
-    for (auto& n : io::export_file_names(f, uavs, request.geo.has_value())) {
+    for (auto& n : io::export_file_names(f, uavs, request.geo || request.cell_survey)) {
       names.push_back(std::move(n));
     }
   }
@@ -309,10 +387,11 @@ ExportWritten write_export(const nlohmann::json& trace, const std::string& sourc
   const auto plan = io::export_plan(trace, source);
   const auto declared = declared_names(request, static_cast<int>(plan.uavs.size()));
   ExportWritten written;
+  written.geo = export_geo(request, plan);
   std::vector<io::ExportFile> files;
   std::vector<std::string> dropped;
   for (const auto f : request.formats) {
-    for (auto& file : io::export_files(plan, f, request.geo, request.settings)) {
+    for (auto& file : io::export_files(plan, f, written.geo, request.settings)) {
       files.push_back(std::move(file));
     }
     if (!plan.no_fly.empty() && io::drops_no_fly(f)) dropped.emplace_back(io::to_string(f));

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "hullinspect/files/output_set.hpp"
 #include "hullinspect/io/export.hpp"
+#include "hullinspect/io/geo_survey.hpp"
 
 namespace hullinspect::cli {
 
@@ -35,7 +37,8 @@ struct ExportArgs {
 };
 
 /// Adds --format (repeatable, or all), --origin, --heading, --geo, --launch, --max-waypoints,
-/// --firmware, --finish, --drone, --force and the directory option `dir_option` ("--out" for `export`,
+/// --firmware, --finish, --drone, --force and the directory option `dir_option` ("--out" for
+/// `export`,
 /// "--export" for run and plan).
 /// `launch_option`: declare --launch here (the export of a trace); run and plan take the mission's
 /// own --launch sites instead (copy them with take_mission_launch).
@@ -46,12 +49,25 @@ inline void take_mission_launch(ExportArgs& args, const std::vector<std::string>
   if (!args.dir.empty()) args.launch = sites;
 }
 
+/// A --geo survey with a point given as a grid cell (docs/export.md, "Two surveyed points"): the
+/// cell's ship-frame point is the hull's surface at its centre, known only with the mission's
+/// frame, so the geo-reference is computed when the export is written.
+struct CellSurvey {
+  std::array<io::SurveyedPoint, 2> points;         ///< x, y, z filled for `ship:` points only
+  std::array<std::optional<grid::Cell>, 2> cells;  ///< (col, row) of `cell:` points
+  std::array<int, 2> lines{};                      ///< each point's line in the file
+  double tolerance_m = io::kDefaultSurveyToleranceM;
+  std::string path;  ///< the --geo file
+  int line = 0;      ///< the survey's line
+};
+
 /// A checked export request.
 struct ExportRequest {
   std::filesystem::path dir;
   std::vector<io::ExportFormat> formats{kDefaultExportFormat};
   io::ExportSettings settings;
   std::optional<io::GeoReference> geo;
+  std::optional<CellSurvey> cell_survey;  ///< replaces `geo` until the mission's frame is known
   std::string option;    ///< the directory option without dashes ("out", "export"), for messages
   std::string geo_file;  ///< --geo FILE, an input of the command; empty without one
   bool force = false;    ///< write into a directory that already holds files
@@ -75,6 +91,7 @@ void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, 
 struct ExportWritten {
   std::vector<std::string> names;
   std::vector<std::string> notes;
+  std::optional<io::GeoReference> geo;  ///< the geo-reference the files were written with
 };
 
 /// Writes the export of `trace` into the declared outputs (committed by the command); a sortie

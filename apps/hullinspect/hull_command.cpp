@@ -60,11 +60,11 @@ int import(const HullImportArgs& args) {
         "  columns from {:.3f} m (port) to {:.3f} m (starboard) around the "
         "bow; Z0 = {:.3f} m\n",
         metres(g.x0), metres(g.x0 + hull.width() * g.cell_size), metres(g.z0));
-    // The grid closes on itself, but no flight links its ends (docs/model.md "Neighbour flights").
-    if (!args.options.mesh.include.empty()) {
+    // The grid closes on itself: a flight at stand-off links its ends (docs/model.md "Neighbour
+    // flights").
+    if (g.seam) {
       std::cout << "  seam: columns 0 and " << hull.width() - 1
-                << " meet at the transom and are not linked: flights between them go around the "
-                   "bow\n";
+                << " meet at the transom, linked by a flight at stand-off\n";
     }
   } else {
     std::cout << fmt::format(

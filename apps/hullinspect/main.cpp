@@ -101,6 +101,7 @@ int main(int argc, char** argv) {
   cli::add_hull_command(app, action);
   cli::add_export_command(app, action);
   cli::add_plan_command(app, action);
+  cli::add_trace_command(app, action);
   cli::require_exact_numbers(app);
   try {
     app.parse(argc, argv);

@@ -22,6 +22,7 @@
 #include "hullinspect/io/result_json.hpp"
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/world/battery.hpp"
 #include "mission_options.hpp"
 
 namespace hullinspect::cli {
@@ -46,6 +47,29 @@ std::string prior_source(const PlanArgs& args) {
   if (!args.mission.prior.empty()) return "the prior " + args.mission.prior;
   if (args.synthetic) return "a synthetic prior (scenario " + args.mission.scenario + ")";
   return "an empty prior (pure coverage: no corrosion expected)";
+}
+
+// The batteries and sorties of the planned mission, for the pre-flight report's margins.
+io::PreflightBattery planned_battery(const planners::MissionSpec& spec,
+                                     const sim::MissionResult& result) {
+  io::PreflightBattery battery;
+  const auto steps = world::battery_steps(spec.params);
+  if (!steps.limited) return battery;
+  battery.limited = true;
+  battery.endurance_s = world::battery_seconds(spec.params, steps.endurance);
+  battery.reserve_s = world::battery_seconds(spec.params, steps.reserve);
+  battery.plan_end_s = world::battery_seconds(spec.params, result.steps);
+  for (const auto& u : result.uavs) {
+    auto& sorties = battery.sorties.emplace_back();
+    for (const auto& s : u.sorties) {
+      sorties.push_back({world::battery_seconds(spec.params, s.takeoff),
+                         s.landing >= 0
+                             ? std::optional<double>(world::battery_seconds(spec.params, s.landing))
+                             : std::nullopt,
+                         s.site});
+    }
+  }
+  return battery;
 }
 
 int plan(const PlanArgs& args) {
@@ -97,8 +121,9 @@ int plan(const PlanArgs& args) {
   if (export_request) written = write_export(trace, hull.source(), *export_request, outputs);
   if (!args.report_dir.empty()) {
     const auto plan_data = io::export_plan(trace, hull.source());
-    const auto report = io::preflight_report(trace, plan_data, export_request->formats,
-                                             export_request->settings, export_request->geo);
+    const auto report =
+        io::preflight_report(trace, plan_data, export_request->formats, export_request->settings,
+                             written.geo, planned_battery(spec, result));
     outputs.write(report_dir / "preflight.json", report.dump(1) + "\n");
     outputs.write(report_dir / "preflight.md", io::preflight_markdown(report));
     outputs.write(report_dir / "preflight.svg",

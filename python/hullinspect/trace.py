@@ -23,8 +23,10 @@ class Trace:
     """One mission's trace: every UAV's state at every step and what the map and planner did.
 
     DataFrames (built on first use):
-      uavs         t, k, then the trace's uav_fields (x, y, z, transit_left, active, …), in_transit
-                   (bool), active as bool, mode (the planner's last annotation, None before one)
+      uavs         t, k, then the trace's uav_fields (x, y, z, transit_left, active, and with
+                   launch sites airborne, battery_left, away_left), in_transit (bool: changing
+                   plane or away), active and airborne as bool, mode (the planner's last
+                   annotation, None before one)
       map_changes  t, cell, x, y, value (M's new value: 1 clean, 2 corrosion seen, 3 inspected)
       annotations  t, k, mode, target_x, target_y (None when no target), plan ([(x, y), …])
       series       t, inspected, known (the counts behind c(t) and m(t))
@@ -133,6 +135,10 @@ class Trace:
             out["active"] = out["active"].astype(bool)
         if "transit_left" in out:
             out["in_transit"] = out["transit_left"] > 0
+        if "away_left" in out:
+            out["in_transit"] |= out["away_left"] > 0
+        if "airborne" in out:
+            out["airborne"] = out["airborne"].astype(bool)
         # The mode a UAV is in at t: its last annotation at or before t.
         modes = np.full((len(frames), n), None, dtype=object)
         current = [None] * n

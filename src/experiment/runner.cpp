@@ -76,16 +76,16 @@ nlohmann::json open_manifest(const ExperimentPlan& plan, const fs::path& out, bo
     const auto old = read_manifest(out);
     const auto manifest_path = (out / kManifestFile).string();
     if (old.value("fingerprint", "") != manifest["fingerprint"]) {
-      throw InputError(manifest_path, 0,
-                       fmt::format("holds results of a different experiment (config fingerprint {}; "
-                                   "this config has {}): choose another --out",
-                                   old.value("fingerprint", "?"),
-                                   manifest["fingerprint"].get<std::string>()));
+      throw InputError(
+          manifest_path, 0,
+          fmt::format("holds results of a different experiment (config fingerprint {}; "
+                      "this config has {}): choose another --out",
+                      old.value("fingerprint", "?"), manifest["fingerprint"].get<std::string>()));
     }
     if (old.value("shard", "1/1") != shard.text()) {
-      throw InputError(manifest_path, 0,
-                       fmt::format("holds shard {}, not shard {}", old.value("shard", "1/1"),
-                                   shard.text()));
+      throw InputError(
+          manifest_path, 0,
+          fmt::format("holds shard {}, not shard {}", old.value("shard", "1/1"), shard.text()));
     }
     manifest["started"] = old.value("started", manifest["started"].get<std::string>());
     if (old.contains("resumed") && old["resumed"].is_array()) manifest["resumed"] = old["resumed"];
@@ -121,7 +121,8 @@ RunnerSummary run_experiment(const ExperimentPlan& plan, const fs::path& out,
   manifest["status"] = "running";
   manifest["jobs"] = summary.jobs;
   int in_shard = 0;
-  for (int p = 0; p < static_cast<int>(plan.runs().size()); ++p) in_shard += options.shard.contains(p);
+  for (int p = 0; p < static_cast<int>(plan.runs().size()); ++p)
+    in_shard += options.shard.contains(p);
   manifest["runs_in_shard"] = in_shard;
   write_manifest(out, manifest);
 
@@ -168,7 +169,8 @@ RunnerSummary run_experiment(const ExperimentPlan& plan, const fs::path& out,
         const RunKey& run = plan.runs()[static_cast<std::size_t>(pending[i])];
         try {
           const auto start = Clock::now();
-          const auto result = planners::run_mission(plan.mission(run), *config.hull, mission_options);
+          const auto result =
+              planners::run_mission(plan.mission(run), *config.hull, mission_options);
           const double wall = std::chrono::duration<double>(Clock::now() - start).count();
           const RunRecord record = make_record(plan, run, result, wall);
           std::lock_guard guard(write_mutex);
@@ -197,6 +199,7 @@ RunnerSummary run_experiment(const ExperimentPlan& plan, const fs::path& out,
   summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   summary.partitions_computed = cache.computed();
 
+  if (error && options.interrupted && options.interrupted()) std::rethrow_exception(error);
   if (error) {
     manifest["status"] = "failed";
     write_manifest(out, manifest);
@@ -213,8 +216,9 @@ RunnerSummary run_experiment(const ExperimentPlan& plan, const fs::path& out,
         "runs are kept; fix the cause and continue with --resume",
         failed->id, config.scenarios[static_cast<std::size_t>(cell.scenario)].name,
         config.algorithms[static_cast<std::size_t>(cell.algorithm)].label,
-        config.s2[static_cast<std::size_t>(cell.s2)], config.uavs[static_cast<std::size_t>(cell.uavs)],
-        failed->seed, what, summary.resumed + summary.ran));
+        config.s2[static_cast<std::size_t>(cell.s2)],
+        config.uavs[static_cast<std::size_t>(cell.uavs)], failed->seed, what,
+        summary.resumed + summary.ran));
   }
 
   write_final_tables(out, plan, read_stored_runs(out, plan));

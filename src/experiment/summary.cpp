@@ -199,16 +199,17 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
       cell[{p, r.algorithm}] = &r;
       runs = std::max(runs, r.runs);
     }
+    bool any_bound = false;
+    for (const auto& [key, r] : cell) any_bound = any_bound || r->bound_t_c.count > 0;
     for (const bool mission : {false, true}) {
-      out += fmt::format("### {}{} — {} (s), mean ± std over {}\n\n", is_sweep ? "sweep of " : "",
-                         group, mission ? "T_m" : "T_c", plural(runs, "instance"));
+      out += fmt::format("### {}{} — {} (s), mean ± std over {}{}\n\n", is_sweep ? "sweep of " : "",
+                         group, mission ? "T_m" : "T_c", plural(runs, "instance"),
+                         any_bound ? " (×: the mean over the lower bound's)" : "");
       std::vector<std::vector<std::string>> t;
       std::vector<std::string> header;
       if (is_sweep) header.push_back(group);
       header.insert(header.end(), {"s2", "n"});
       header.insert(header.end(), algorithms.begin(), algorithms.end());
-      bool any_bound = false;
-      for (const auto& [key, r] : cell) any_bound = any_bound || r->bound_t_c.count > 0;
       if (any_bound) header.push_back("lower bound");
       t.push_back(header);
       for (const auto& p : params) {
@@ -216,6 +217,15 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
         if (is_sweep) line.push_back(std::get<0>(p));
         line.push_back(std::to_string(std::get<1>(p)));
         line.push_back(std::to_string(std::get<2>(p)));
+        // The bound depends on the instance only: every algorithm's rows hold the same seeds.
+        double bound = 0;
+        for (const auto& a : algorithms) {
+          auto it = cell.find({p, a});
+          if (it == cell.end()) continue;
+          const TimeStats& b = mission ? it->second->bound_t_m : it->second->bound_t_c;
+          if (b.count > 0) bound = b.mean;
+          break;
+        }
         for (const auto& a : algorithms) {
           auto it = cell.find({p, a});
           if (it == cell.end()) {
@@ -223,22 +233,13 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
             continue;
           }
           const SummaryRow& r = *it->second;
-          std::string text = mean_std(mission ? r.t_m : r.t_c);
+          const TimeStats& time = mission ? r.t_m : r.t_c;
+          std::string text = mean_std(time);
+          if (bound > 0 && time.count > 0) text += fmt::format(" (×{:.2f})", time.mean / bound);
           if (r.incomplete > 0) text += fmt::format(" [{} incomplete]", r.incomplete);
           line.push_back(text);
         }
-        if (any_bound) {
-          // The bound depends on the instance only: every algorithm's rows hold the same seeds.
-          std::string text;
-          for (const auto& a : algorithms) {
-            auto it = cell.find({p, a});
-            if (it == cell.end()) continue;
-            const TimeStats& b = mission ? it->second->bound_t_m : it->second->bound_t_c;
-            if (b.count > 0) text = fmt::format("{:.1f}", b.mean);
-            break;
-          }
-          line.push_back(text);
-        }
+        if (any_bound) line.push_back(bound > 0 ? fmt::format("{:.1f}", bound) : std::string());
         t.push_back(line);
       }
       out += table(t) + "\n";

@@ -83,13 +83,11 @@ void DistanceService::search(Grid<int>& out, std::size_t seeds) {
     const int here = out[i];
     // A cell that is not allowed can end a path but never lies inside one.
     if (allowed_[i] == 0 && here != 0) continue;
-    const int x = i % w;
-    const int y = i / w;
+    const Cell at{i % w, i / w};
     for (int d = 0; d < 4; ++d) {
-      const int nx = x + kNeighbourDx[d];
-      const int ny = y + kNeighbourDy[d];
-      if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-      const int j = ny * w + nx;
+      const Cell next = neighbour(at, d, w, h, steps_);
+      if (next == kNoCell) continue;
+      const int j = next.y * w + next.x;
       if (out[j] <= here + 1) continue;
       out[j] = here + 1;
       queue[tail++] = j;
@@ -118,8 +116,8 @@ void DistanceService::search_weighted(Grid<int>& out, std::size_t seeds) {
       if (allowed_[i] == 0 && d != 0) continue;
       const Cell here = allowed_.cell(i);
       for (int n = 0; n < 4; ++n) {
-        const Cell next{here.x + kNeighbourDx[n], here.y + kNeighbourDy[n]};
-        if (next.x < 0 || next.y < 0 || next.x >= w || next.y >= h) continue;
+        const Cell next = neighbour(here, n, w, h, steps_);
+        if (next == kNoCell) continue;
         const int j = allowed_.index(next);
         const int reached = d + steps_.between(here, next);
         if (out[j] <= reached) continue;
@@ -139,8 +137,7 @@ Cell DistanceService::next_step(Cell from, Cell to) {
   if (to.x != from.x) preferred[count++] = {from.x + (to.x > from.x ? 1 : -1), from.y};
   if (to.y != from.y) preferred[count++] = {from.x, from.y + (to.y > from.y ? 1 : -1)};
   if (!searched()) return preferred[0];
-  for (int d = 0; d < 4; ++d)
-    preferred[count++] = {from.x + kNeighbourDx[d], from.y + kNeighbourDy[d]};
+  for (int d = 0; d < 4; ++d) preferred[count++] = neighbour(from, d, width(), height(), steps_);
   const Grid<int>& f = cached_field(allowed_.index(to));
   const int here = f[from];
   if (here >= kUnreachable) return from;

@@ -58,8 +58,8 @@ void DistanceService::distances_to(Cell source, std::span<const Cell> targets, s
       if (allowed_[i] == 0 && d != 0) continue;
       const Cell here = allowed_.cell(i);
       for (int n = 0; n < 4; ++n) {
-        const Cell next{here.x + kNeighbourDx[n], here.y + kNeighbourDy[n]};
-        if (next.x < 0 || next.y < 0 || next.x >= w || next.y >= h) continue;
+        const Cell next = neighbour(here, n, w, h, steps_);
+        if (next == kNoCell) continue;
         const int j = allowed_.index(next);
         const int reached = d + steps_.between(here, next);
         if (near_[j] <= reached) continue;

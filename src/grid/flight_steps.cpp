@@ -16,6 +16,7 @@ int EdgeSteps::longest() const {
   int most = 1;
   for (std::uint8_t s : east.values()) most = std::max<int>(most, s);
   for (std::uint8_t s : north.values()) most = std::max<int>(most, s);
+  for (std::uint8_t s : seam) most = std::max<int>(most, s);
   return most;
 }
 
@@ -25,6 +26,9 @@ EdgeSteps FlightSteps::longer_plane() const {
   for (int i = 0; i < out.east.size(); ++i) {
     out.east[i] = std::max(out.east[i], plane[1].east[i]);
     out.north[i] = std::max(out.north[i], plane[1].north[i]);
+  }
+  for (std::size_t y = 0; y < out.seam.size(); ++y) {
+    out.seam[y] = std::max(out.seam[y], plane[1].seam[y]);
   }
   return out;
 }
@@ -63,8 +67,16 @@ FlightSteps flight_steps(const StandoffPoints& points, double cell_m, double the
         longer = longer || e.east(x, y) > 1 || e.north(x, y) > 1;
       }
     }
+    // The seam: every row's two ends, at the stand-off distance between them.
+    if (points.seam && w > 2) {
+      e.seam.resize(static_cast<std::size_t>(h));
+      for (int y = 0; y < h; ++y) {
+        e.seam[static_cast<std::size_t>(y)] =
+            static_cast<std::uint8_t>(steps(at(0, y, zeta[z]), at(w - 1, y, zeta[z])));
+      }
+    }
   }
-  if (!longer) return {};
+  if (!longer && out.plane[0].seam.empty()) return {};
   return out;
 }
 

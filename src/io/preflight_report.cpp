@@ -28,6 +28,26 @@ double length(const ShipPose& a, const ShipPose& b) {
   return std::hypot(b.x - a.x, b.y - a.y, b.z - a.z);
 }
 
+struct Flight {
+  double distance_m = 0;
+  double time_s = 0;
+};
+
+// The climb from the sortie's home to the first of `waypoints`, every leg, the descent home; the
+// time at the cruise speed plus every hold. Rounded as the report prints them.
+Flight measure(const ExportPlan& plan, const Sortie& s,
+               const std::vector<ExportWaypoint>& waypoints) {
+  double distance = waypoints.empty() ? 0.0 : length(s.home, waypoints.front().pose);
+  double holds = 0;
+  for (std::size_t i = 1; i < waypoints.size(); ++i) {
+    distance += length(waypoints[i - 1].pose, waypoints[i].pose);
+    holds += hold_seconds(plan, waypoints[i], waypoints[i - 1]);
+  }
+  if (!waypoints.empty()) distance += length(waypoints.back().pose, s.home);
+  return {std::round(distance * 100) / 100,
+          std::round((distance / cruise_speed_mps(plan) + holds) * 10) / 10};
+}
+
 int count_rows(const nlohmann::json& rows, char mark) {
   int n = 0;
   if (!rows.is_array()) return 0;
@@ -43,28 +63,25 @@ int count_rows(const nlohmann::json& rows, char mark) {
 nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& plan,
                                 const std::vector<ExportFormat>& formats,
                                 const ExportSettings& settings,
-                                const std::optional<GeoReference>& geo) {
+                                const std::optional<GeoReference>& geo,
+                                const PreflightBattery& battery) {
   using nlohmann::json;
   const auto sorties = exported_sorties(plan, settings);
-  const double speed = cruise_speed_mps(plan);
   json report;
   report["format"] = "hullinspect-preflight";
   report["version"] = 1;
   json rows = json::array();
   json warnings = json::array();
+  struct Smallest {
+    double margin;
+    int uav;
+    int sortie;
+  };
+  std::optional<Smallest> smallest;
   std::vector<std::vector<char>> seen(static_cast<std::size_t>(plan.height),
                                       std::vector<char>(static_cast<std::size_t>(plan.width), 0));
   for (const auto& s : sorties) {
     mark_seen(plan, s.waypoints, seen);
-    // Distance: the climb from home, every leg, the descent home; time: at the cruise speed plus
-    // every hold.
-    double distance = s.waypoints.empty() ? 0.0 : length(s.home, s.waypoints.front().pose);
-    double holds = 0;
-    for (std::size_t i = 1; i < s.waypoints.size(); ++i) {
-      distance += length(s.waypoints[i - 1].pose, s.waypoints[i].pose);
-      holds += hold_seconds(plan, s.waypoints[i], s.waypoints[i - 1]);
-    }
-    if (!s.waypoints.empty()) distance += length(s.waypoints.back().pose, s.home);
     json files = json::object();
     for (const auto f : formats) {
       if (f == ExportFormat::kKml) continue;
@@ -81,19 +98,73 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
     json row = {{"uav", s.uav},
                 {"sortie", s.number},
                 {"launch_site", {s.site.x, s.site.y}},
-                {"launch_site_given", s.given_site},
-                {"waypoints", s.waypoints.size()},
-                {"distance_m", std::round(distance * 100) / 100},
-                {"flight_time_s", std::round((distance / speed + holds) * 10) / 10},
-                // The battery's margin at landing: left empty until the mission models an
-                // endurance (never a made-up number).
-                {"battery_margin_s", nullptr},
-                {"files", files}};
+                {"launch_site_given", s.given_site}};
     if (geo) {
       const auto h = geo->to_wgs84(s.home.x, s.home.y, s.home.z);
       row["home"] = {std::round(h.lat * 1e8) / 1e8, std::round(h.lon * 1e8) / 1e8};
     }
-    rows.push_back(row);
+    const auto uav = static_cast<std::size_t>(s.uav);
+    if (!battery.limited || uav >= battery.sorties.size() || battery.sorties[uav].empty()) {
+      const auto flight = measure(plan, s, s.waypoints);
+      row["waypoints"] = s.waypoints.size();
+      row["distance_m"] = flight.distance_m;
+      row["flight_time_s"] = flight.time_s;
+      row["battery_margin_s"] = nullptr;  // unlimited flight: no battery to run out
+      row["files"] = files;
+      rows.push_back(row);
+      continue;
+    }
+    const auto& planned = battery.sorties[uav];
+    if (planned.size() > 1) {
+      warnings.push_back(fmt::format(
+          "UAV {} flies {} sorties but its mission files hold them as one flight: land and swap "
+          "the battery where the table's sorties end",
+          s.uav, planned.size()));
+    }
+    for (std::size_t n = 0; n < planned.size(); ++n) {
+      const auto& p = planned[n];
+      const double end_s = p.landing_s.value_or(battery.plan_end_s);
+      // The sortie's waypoints: those the UAV's files reach between its take-off and landing.
+      std::vector<ExportWaypoint> flown;
+      for (const auto& w : s.waypoints) {
+        const double t = plan.seconds(w.grid.t);
+        if (t >= p.takeoff_s && t <= end_s) flown.push_back(w);
+      }
+      const double flight_s = end_s - p.takeoff_s;
+      const double margin = battery.endurance_s - flight_s;
+      json r = row;
+      r["sortie"] = n + 1;
+      r["launch_site_index"] = p.site;
+      r["takeoff_s"] = p.takeoff_s;
+      r["landing_s"] = p.landing_s ? json(*p.landing_s) : json(nullptr);
+      r["waypoints"] = flown.size();
+      r["distance_m"] = measure(plan, s, flown).distance_m;
+      r["flight_time_s"] = flight_s;
+      r["battery_margin_s"] = margin;
+      r["files"] = files;
+      if (!p.landing_s) {
+        warnings.push_back(
+            fmt::format("UAV {} sortie {}: still airborne when the plan ends", s.uav, n + 1));
+      }
+      if (margin < battery.reserve_s) {
+        warnings.push_back(fmt::format(
+            "UAV {} sortie {}: battery margin {:.1f} s is below the reserve of {:.1f} s", s.uav,
+            n + 1, margin, battery.reserve_s));
+      }
+      if (!smallest || margin < smallest->margin) smallest = Smallest{margin, s.uav, int(n) + 1};
+      rows.push_back(std::move(r));
+    }
+  }
+  if (battery.limited) {
+    report["battery"] = {{"limited", true},
+                         {"endurance_s", battery.endurance_s},
+                         {"reserve_s", battery.reserve_s},
+                         {"min_margin_s", smallest ? json(smallest->margin) : json(nullptr)},
+                         {"min_margin_uav", smallest ? json(smallest->uav) : json(nullptr)},
+                         {"min_margin_sortie", smallest ? json(smallest->sortie) : json(nullptr)}};
+  } else {
+    report["battery"] = {{"limited", false},
+                         {"note", "unlimited flight (no --endurance): no battery margin"}};
   }
   report["sorties"] = rows;
   // Hull cells no footprint of the exported flights contains.
@@ -127,6 +198,19 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
                       plan.no_fly.size(), fmt::join(dropped, ", ")));
     }
   }
+  // Heights the format means above mean sea level but which are ellipsoidal: no geoid model is
+  // installed (docs/export.md "Altitudes: which frame each file is in").
+  std::vector<std::string> sea_level;
+  for (const auto f : formats) {
+    if (f == ExportFormat::kQgc || f == ExportFormat::kWpl) sea_level.emplace_back(to_string(f));
+  }
+  if (!sea_level.empty()) {
+    warnings.push_back(fmt::format(
+        "{}: the planned home's altitude is its height above the WGS-84 ellipsoid, where the "
+        "format means mean sea level (no geoid model); the waypoints are heights above home, "
+        "which the vehicle takes at arming",
+        fmt::join(sea_level, ", ")));
+  }
   std::vector<std::string> separation_warnings;
   report["separation"] = preflight_separation(trace, plan, separation_warnings);
   for (auto& w : separation_warnings) warnings.push_back(std::move(w));
@@ -146,18 +230,24 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
 
 std::string preflight_markdown(const nlohmann::json& report) {
   std::string md = "# Pre-flight report\n\n## Sorties\n\n";
-  md += "| UAV | sortie | launch site | waypoints | distance (m) | flight time (s) | files |\n";
-  md += "|---|---|---|---|---|---|---|\n";
+  md +=
+      "| UAV | sortie | launch site | waypoints | distance (m) | flight time (s) | battery margin "
+      "(s) | files |\n";
+  md += "|---|---|---|---|---|---|---|---|\n";
   for (const auto& s : report["sorties"]) {
     std::string files;
     for (const auto& [format, parts] : s["files"].items()) {
       files += fmt::format("{}{} {}", files.empty() ? "" : ", ", format, parts.get<int>());
     }
     md += fmt::format(
-        "| {} | {} | {},{}{} | {} | {:.2f} | {:.1f} | {} |\n", s["uav"].get<int>(),
+        "| {} | {} | {},{}{} | {} | {:.2f} | {:.1f} | {} | {} |\n", s["uav"].get<int>(),
         s["sortie"].get<int>(), s["launch_site"][0].get<int>(), s["launch_site"][1].get<int>(),
         s["launch_site_given"].get<bool>() ? "" : " (below its start)", s["waypoints"].get<int>(),
-        s["distance_m"].get<double>(), s["flight_time_s"].get<double>(), files);
+        s["distance_m"].get<double>(), s["flight_time_s"].get<double>(),
+        s["battery_margin_s"].is_null()
+            ? std::string("—")
+            : fmt::format("{:.1f}", s["battery_margin_s"].get<double>()),
+        files);
   }
   const auto& c = report["cells"];
   md += fmt::format(
@@ -175,7 +265,20 @@ std::string preflight_markdown(const nlohmann::json& report) {
         sep["uavs"][1].get<int>(), sep["t_s"].get<double>());
   }
   md += fmt::format("- conflicts counted: {}\n", sep["conflicts"].get<long long>());
-  md += "\n## Battery\n\nBattery margin: not computed (the mission has no endurance).\n";
+  const auto& battery = report["battery"];
+  if (!battery["limited"].get<bool>()) {
+    md += "\n## Battery\n\nBattery margin: none (unlimited flight: the plan has no --endurance).\n";
+  } else {
+    md += fmt::format(
+        "\n## Battery\n\n- endurance {:.1f} s, reserve {:.1f} s\n- the margin of a sortie is the "
+        "endurance less its flight time (take-off to landing)\n",
+        battery["endurance_s"].get<double>(), battery["reserve_s"].get<double>());
+    if (!battery["min_margin_s"].is_null()) {
+      md += fmt::format("- smallest margin: {:.1f} s (UAV {} sortie {})\n",
+                        battery["min_margin_s"].get<double>(), battery["min_margin_uav"].get<int>(),
+                        battery["min_margin_sortie"].get<int>());
+    }
+  }
   md += "\n## Warnings\n\n";
   if (report["warnings"].empty()) md += "None.\n";
   for (const auto& w : report["warnings"]) md += "- " + w.get<std::string>() + "\n";

@@ -21,6 +21,14 @@ std::string seconds_text(const world::MissionParams& params, const std::optional
   return steps ? fmt::format("{} s", params.seconds(*steps)) : std::string("—");
 }
 
+namespace {
+/// time / bound to three decimals; null when the time was not reached or the bound is 0.
+json bound_ratio(const std::optional<int>& time, int bound) {
+  if (!time || bound <= 0) return json(nullptr);
+  return json(std::round(1000.0 * *time / bound) / 1000.0);
+}
+}  // namespace
+
 json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r) {
   const auto total = r.totals();
   json j;
@@ -85,8 +93,15 @@ json result_json(const planners::MissionSpec& spec, const sim::MissionResult& r)
     j["sorties"] = r.sorties();
     j["flight_s"] = world::battery_seconds(spec.params, total.flight_steps);
     j["battery_crashes"] = r.battery_crashes;
-    j["min_battery_s"] =
-        r.min_battery() ? json(world::battery_seconds(spec.params, *r.min_battery())) : json(nullptr);
+    j["min_battery_s"] = r.min_battery()
+                             ? json(world::battery_seconds(spec.params, *r.min_battery()))
+                             : json(nullptr);
+    // The lower bound (docs/model.md §11, with what launch sites and endurance force) beside
+    // T_c and T_m, and their ratios to it.
+    j["bound_T_c"] = seconds_json(spec.params, r.bound_t_c);
+    j["bound_T_m"] = seconds_json(spec.params, r.bound_t_m);
+    j["T_c_ratio"] = bound_ratio(r.t_c, r.bound_t_c);
+    j["T_m_ratio"] = bound_ratio(r.t_m, r.bound_t_m);
   }
   return j;
 }

@@ -30,6 +30,19 @@ double ShipFrame::depth_m(grid::Cell cell) const {
   return spec_.depth[cell];
 }
 
+std::array<double, 3> ShipFrame::surface_point(grid::Cell cell) const {
+  if (unrolled()) {
+    if (!spec_.surface.contains(cell)) {
+      throw InputError(spec_.source, 0,
+                       fmt::format("cell ({}, {}) is outside the unrolled hull's {} × {} grid",
+                                   cell.x, cell.y, spec_.surface.width(), spec_.surface.height()));
+    }
+    return spec_.surface[cell];
+  }
+  return {spec_.x0 + (cell.x + 0.5) * spec_.cell_m, spec_.ys + sign_ * depth_m(cell),
+          spec_.z0 + (cell.y + 0.5) * spec_.cell_m};
+}
+
 ShipPose ShipFrame::pose(grid::Cell cell, int z) const {
   ShipPose p;
   // The camera looks along −normal; a flat side's normal points at the viewer (0, ±1, 0).

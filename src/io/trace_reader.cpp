@@ -17,6 +17,8 @@
 #include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/sim/uav_rules.hpp"
 #include "hullinspect/world/ship_frame_bounds.hpp"
+#include "trace_checker.hpp"
+#include "trace_motion.hpp"
 
 namespace hullinspect::io {
 
@@ -24,78 +26,8 @@ using nlohmann::json;
 
 namespace {
 
-constexpr std::size_t kUavFields = 5;  // x, y, z, transit_left, active
-
-// Checks one trace; every failure names the field, e.g. "frames[3].u[7]: expected 1 or 2".
-class TraceChecker {
- public:
-  explicit TraceChecker(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
-    throw InputError(source_, 0, where + ": " + problem);
-  }
-
-  const json& field(const json& object, const std::string& where, const char* key) const {
-    auto it = object.find(key);
-    if (it == object.end()) fail(where.empty() ? key : where + "." + key, "missing");
-    return *it;
-  }
-
-  std::int64_t integer(const json& v, const std::string& where, std::int64_t lo,
-                       std::int64_t hi) const {
-    if (!v.is_number_integer()) fail(where, "expected an integer");
-    if (v.is_number_unsigned() &&
-        v.get<std::uint64_t>() >
-            static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-      fail(where, fmt::format("{} is outside [{}, {}]", v.dump(), lo, hi));
-    }
-    const auto i = v.get<std::int64_t>();
-    if (i < lo || i > hi) fail(where, fmt::format("{} is outside [{}, {}]", i, lo, hi));
-    return i;
-  }
-
-  const json& array(const json& v, const std::string& where) const {
-    if (!v.is_array()) fail(where, "expected an array");
-    return v;
-  }
-
-  const json& object(const json& v, const std::string& where) const {
-    if (!v.is_object()) fail(where, "expected an object");
-    return v;
-  }
-
-  // `height` strings of `width` characters from `alphabet`.
-  void rows(const json& v, const std::string& where, int width, int height,
-            std::string_view alphabet) const {
-    array(v, where);
-    if (v.size() != static_cast<std::size_t>(height)) {
-      fail(where, fmt::format("expected {} rows (the grid height), got {}", height, v.size()));
-    }
-    for (std::size_t y = 0; y < v.size(); ++y) {
-      const auto at = fmt::format("{}[{}]", where, y);
-      if (!v[y].is_string()) fail(at, "expected a string");
-      const auto& row = v[y].get_ref<const std::string&>();
-      if (row.size() != static_cast<std::size_t>(width)) {
-        fail(at, fmt::format("expected {} characters (the grid width), got {}", width, row.size()));
-      }
-      for (std::size_t x = 0; x < row.size(); ++x) {
-        if (alphabet.find(row[x]) == std::string_view::npos) {
-          fail(at,
-               fmt::format("character {} is '{}', expected one of \"{}\"", x, row[x], alphabet));
-        }
-      }
-    }
-  }
-
-  void cell(const json& v, const std::string& where, int width, int height) const {
-    if (!v.is_array() || v.size() != 2) fail(where, "expected [x, y]");
-    integer(v[0], where + "[0]", 0, width - 1);
-    integer(v[1], where + "[1]", 0, height - 1);
-  }
-
- private:
-  std::string source_;
-};
+using detail::TraceChecker;
+using detail::TraceMission;
 
 // Sorted, distinct flat cell indices inside the grid.
 void check_cell_set(const TraceChecker& check, const json& v, const std::string& where,
@@ -112,8 +44,10 @@ void check_cell_set(const TraceChecker& check, const json& v, const std::string&
 }
 
 // `layers_seen`: the layers whose whole set an earlier frame gave (changes need one).
-void check_frame(const TraceChecker& check, const json& f, std::size_t i, int width, int height,
-                 std::size_t uav_values, std::set<std::string>& layers_seen) {
+void check_frame(const TraceChecker& check, const json& f, std::size_t i, const TraceMission& m,
+                 std::set<std::string>& layers_seen) {
+  const int width = m.width;
+  const int height = m.height;
   const auto where = fmt::format("frames[{}]", i);
   check.object(f, where);
   const auto cells = static_cast<std::int64_t>(width) * height;
@@ -121,15 +55,14 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
                 static_cast<std::int64_t>(i));
 
   const auto& u = check.array(check.field(f, where, "u"), where + ".u");
-  if (u.size() != uav_values) {
-    check.fail(where + ".u", fmt::format("expected {} numbers ({} per UAV), got {}", uav_values,
-                                         kUavFields, u.size()));
+  if (u.size() != m.uavs * m.fields) {
+    check.fail(where + ".u", fmt::format("expected {} numbers ({} per UAV), got {}",
+                                         m.uavs * m.fields, m.fields, u.size()));
   }
-  // Bounds of x, y, z, transit_left, active.
-  const std::array<std::int64_t, kUavFields> lo = {0, 0, 1, 0, 0};
-  const std::array<std::int64_t, kUavFields> hi = {width - 1, height - 1, 2, 1 << 20, 1};
+  const auto bounds = detail::uav_value_bounds(m);
   for (std::size_t j = 0; j < u.size(); ++j) {
-    check.integer(u[j], fmt::format("{}.u[{}]", where, j), lo[j % kUavFields], hi[j % kUavFields]);
+    const auto& [lo, hi] = bounds[j % m.fields];
+    check.integer(u[j], fmt::format("{}.u[{}]", where, j), lo, hi);
   }
 
   const auto& c = check.array(check.field(f, where, "c"), where + ".c");
@@ -141,7 +74,7 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
 
   if (auto p = f.find("p"); p != f.end()) {
     check.object(*p, where + ".p");
-    const auto uavs = static_cast<int>(uav_values / kUavFields);
+    const auto uavs = static_cast<int>(m.uavs);
     for (const auto& [key, a] : p->items()) {
       const auto at = fmt::format("{}.p.{}", where, key);
       int k = -1;
@@ -185,85 +118,6 @@ void check_frame(const TraceChecker& check, const json& f, std::size_t i, int wi
   }
 }
 
-// "[json.exception.parse_error.101] parse error at line 3, column 1: syntax error …" → the part
-// after the location, on one line.
-
-}  // namespace
-
-// The model's motion rules (sim/uav_rules.hpp) over every UAV of every frame, and no UAV on a
-// no-fly position ('#' in `no_fly`, already checked against the grid). Frames are checked.
-// A trace does not record a UAV's flight to a distant neighbour (docs/model.md "Neighbour
-// flights"): after a move of k steps in `flights`, the UAV is checked to stay put for k − 1 frames.
-void check_motion(const TraceChecker& check, const json& frames, int plane_change_steps,
-                  const json* no_fly, bool away_unrecorded, const grid::FlightSteps& flights) {
-  const auto state = [](const json& u, std::size_t k) {
-    sim::UavState s;
-    s.pos = {u[kUavFields * k].get<int>(), u[kUavFields * k + 1].get<int>()};
-    s.z = u[kUavFields * k + 2].get<int>();
-    s.transit_left = u[kUavFields * k + 3].get<int>();
-    s.failed = u[kUavFields * k + 4].get<int>() == 0;
-    return s;
-  };
-  const std::size_t uavs = frames[0]["u"].size() / kUavFields;
-  std::vector<int> flight_left(uavs, 0);  // per UAV, after the previous frame
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const auto& u = frames[i]["u"];
-    for (std::size_t k = 0; k < uavs; ++k) {
-      const auto where = fmt::format("frames[{}].u", i);
-      sim::UavState now = state(u, k);
-      if (auto broken = sim::state_violation(now, plane_change_steps)) {
-        check.fail(where, fmt::format("UAV {} {}", k, *broken));
-      }
-      if (no_fly != nullptr) {
-        const auto& row =
-            (*no_fly)[static_cast<std::size_t>(now.pos.y)].get_ref<const std::string&>();
-        if (row[static_cast<std::size_t>(now.pos.x)] == '#') {
-          check.fail(where, fmt::format("UAV {} is on the no-fly position ({}, {})", k, now.pos.x,
-                                        now.pos.y));
-        }
-      }
-      if (i == 0) continue;
-      sim::UavState before = state(frames[i - 1]["u"], k);
-      // A trace of a mission with launch sites does not record when a UAV is away at its site
-      // (docs/trace-format.md): such a step is checked as the simulator flies it.
-      if (away_unrecorded) before.away_left = 1;
-      before.flight_left = flight_left[k];
-      if (now.failed || before.flight_left > 0) {
-        now.flight_left = before.flight_left - (now.failed ? 0 : 1);
-      } else if (!away_unrecorded && grid::manhattan(before.pos, now.pos) == 1) {
-        now.flight_left = flights.between(before.pos, now.pos, before.z) - 1;
-      }
-      flight_left[k] = now.flight_left;
-      if (auto broken = sim::step_violation(before, now, plane_change_steps, flights)) {
-        check.fail(where, fmt::format("UAV {} {} (from frame {})", k, *broken, i - 1));
-      }
-    }
-  }
-}
-
-// The neighbour flights of a trace of an unrolled hull, from its checked `ship_frame`, grid, camera
-// and footprint by the simulator's own function over the same numbers; empty for any other hull.
-grid::FlightSteps trace_flights(const json& trace, int width, int height) {
-  const auto frame = trace.find("ship_frame");
-  if (frame == trace.end() || (*frame)["side"] != "both") return {};
-  grid::StandoffPoints points;
-  points.point = grid::Grid<std::array<double, 3>>(width, height);
-  points.normal = grid::Grid<std::array<double, 3>>(width, height);
-  const json& surface = (*frame)["surface"];
-  const json& normal = (*frame)["normal"];
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const json& p = surface[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
-      const json& n = normal[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
-      points.point(x, y) = {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
-      points.normal(x, y) = {n[0].get<double>(), n[1].get<double>(), n[2].get<double>()};
-    }
-  }
-  const double theta = trace.contains("camera") ? trace["camera"]["theta_deg"].get<double>() : 90.0;
-  return grid::flight_steps(points, trace["grid"]["cell_size_m"].get<double>(), theta,
-                            trace["footprint"][0].get<int>(), trace["footprint"][1].get<int>());
-}
-
 // The optional `ship_frame` of a hull imported from a mesh: origin [X0, Z0], side_plane_y, side,
 // and `height` rows of `width` depths (metres ≥ 0) and unit normals [nx, ny, nz]; on an unrolled
 // hull (side "both") surface points [X, Y, Z] instead of depths.
@@ -303,6 +157,14 @@ void check_ship_frame(const TraceChecker& check, const json& frame, int width, i
       for (std::size_t x = 0; x < row.size(); ++x) cell(row[x], fmt::format("{}[{}]", at, x));
     }
   };
+  if (const auto seam = frame.find("seam"); seam != frame.end()) {
+    if (!seam->is_boolean()) check.fail("ship_frame.seam", "expected true or false");
+    if (*seam == true && (side != "both" || width < 3)) {
+      check.fail("ship_frame.seam",
+                 "expected only on an unrolled hull (side both) of 3 or more "
+                 "columns");
+    }
+  }
   if (side == "both") {
     // An unrolled hull: per cell the surface point [X, Y, Z] a UAV there stands off from.
     grid_rows("surface", [&](const json& v, const std::string& at) {
@@ -324,6 +186,8 @@ void check_ship_frame(const TraceChecker& check, const json& frame, int width, i
   });
 }
 
+}  // namespace
+
 void validate_trace(const json& trace, const std::string& source) {
   const TraceChecker check(source);
   check.object(trace, "trace");
@@ -332,7 +196,8 @@ void validate_trace(const json& trace, const std::string& source) {
     check.fail("format", fmt::format("expected \"{}\" (not a hullinspect trace?)", kTraceFormat));
   }
   const auto& version = check.field(trace, "", "version");
-  // Version 1 is version 2 without layer changes, so both are read.
+  // Version 1 is version 2 without layer changes and version 2 is version 3 of the paper's model
+  // (docs/trace-format.md "Compatibility"), so all three are read.
   if (!version.is_number_integer() || version.get<int>() < 1 ||
       version.get<int>() > kTraceVersion) {
     check.fail("version",
@@ -386,23 +251,14 @@ void validate_trace(const json& trace, const std::string& source) {
     check.rows(trace["unreachable"], "unreachable", width, height, ".dx");
   }
 
-  const auto& frames = check.array(check.field(trace, "", "frames"), "frames");
-  if (frames.empty()) check.fail("frames", "expected at least frame 0 (t = 0)");
-  const auto& u0 = check.array(check.field(check.object(frames[0], "frames[0]"), "frames[0]", "u"),
-                               "frames[0].u");
-  if (u0.empty() || u0.size() % kUavFields != 0) {
-    check.fail("frames[0].u",
-               fmt::format("expected {} numbers per UAV, got {} in all", kUavFields, u0.size()));
-  }
+  const TraceMission mission =
+      detail::trace_mission(check, trace, version.get<int>(), width, height, plane_change_steps);
+  const auto& frames = trace["frames"];
   std::set<std::string> layers_seen;
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    check_frame(check, frames[i], i, width, height, u0.size(), layers_seen);
+    check_frame(check, frames[i], i, mission, layers_seen);
   }
-  const bool away_unrecorded = trace.contains("parameters") && trace["parameters"].is_object() &&
-                               trace["parameters"].contains("launch");
-  check_motion(check, frames, plane_change_steps,
-               trace.contains("no_fly") ? &trace["no_fly"] : nullptr, away_unrecorded,
-               trace_flights(trace, width, height));
+  const auto counts = detail::check_motion(check, frames, mission);
 
   const auto last = static_cast<std::int64_t>(frames.size()) - 1;
   const auto& series = check.object(check.field(trace, "", "series"), "series");
@@ -432,6 +288,18 @@ void validate_trace(const json& trace, const std::string& source) {
                            "redundant_observations"}) {
     check.integer(check.field(result, "result", name), std::string("result.") + name, 0,
                   std::numeric_limits<std::int64_t>::max());
+  }
+  detail::check_counts(check, result, mission, counts);
+  // With launch sites the mission ends when every working UAV has landed (docs/model.md §12).
+  if (mission.physical() && result["complete"].get<bool>()) {
+    const auto& u = frames.back()["u"];
+    for (std::size_t k = 0; k < mission.uavs; ++k) {
+      const std::size_t o = mission.fields * k;
+      if (u[o + 4] == 1 && (u[o + 5] == 1 || u[o + 7] != 0)) {
+        check.fail("result.complete",
+                   fmt::format("true, but UAV {} has not landed in the last frame", k));
+      }
+    }
   }
 }
 

@@ -65,6 +65,8 @@ json ship_frame(const world::HullGeometry& g) {
                 {"side", world::to_string(g.side)},
                 {"normal", std::move(normal)}};
   frame[unrolled ? "surface" : "depth"] = std::move(placement);
+  // A grid that closes on itself: its seam is a neighbour flight the trace checker replays.
+  if (g.seam) frame["seam"] = true;
   return frame;
 }
 
@@ -72,7 +74,9 @@ char matrix_symbol(std::int8_t v) {
   return v < 0 ? '.' : static_cast<char>('0' + v);
 }
 
-json uav_states(const sim::Simulator& sim) {
+// `physical`: the mission has launch sites, so each UAV also records whether it is airborne, its
+// battery and its steps away (kPhysicalUavFields); the paper's model keeps the five fields.
+json uav_states(const sim::Simulator& sim, bool physical) {
   json u = json::array();
   for (const auto& s : sim.uavs()) {
     u.push_back(s.pos.x);
@@ -80,8 +84,30 @@ json uav_states(const sim::Simulator& sim) {
     u.push_back(s.z);
     u.push_back(s.transit_left);
     u.push_back(s.failed ? 0 : 1);
+    if (!physical) continue;
+    u.push_back(s.airborne ? 1 : 0);
+    u.push_back(s.battery_left);
+    u.push_back(s.away_left);
   }
   return u;
+}
+
+// The rules of the physical mission a reader checks the frames against (docs/trace-format.md):
+// the launch sites and each UAV's, the legs' steps, the battery in steps and the separation.
+void physical_mission(json& trace, const sim::Simulator& sim) {
+  if (const auto& legs = sim.launch_legs(); !legs.empty()) {
+    json sites = json::array();
+    for (const auto& c : legs.sites) sites.push_back({c.x, c.y});
+    trace["launch"] = {{"sites", std::move(sites)},
+                       {"site_of", legs.site_of},
+                       {"takeoff_steps", legs.takeoff_steps},
+                       {"transfer_steps", legs.transfer_steps}};
+  }
+  if (const auto& b = sim.battery(); b.limited) {
+    trace["battery"] = {
+        {"endurance_steps", b.endurance}, {"reserve_steps", b.reserve}, {"swap_steps", b.swap}};
+  }
+  if (sim.params().separation > 0) trace["separation"] = sim.params().separation;
 }
 
 }  // namespace
@@ -143,7 +169,7 @@ json TraceRecorder::frame(const sim::Simulator& sim, const planners::Planner& pl
   json f;
   frame_index_ = sim.time();
   f["t"] = sim.time();
-  f["u"] = uav_states(sim);
+  f["u"] = uav_states(sim, physical_);
   json changes = json::array();
   for (int i : sim.changed_cells()) {
     changes.push_back(i);
@@ -167,6 +193,8 @@ void TraceRecorder::on_start(const sim::Simulator& sim, const planners::Planner&
   // A step's seconds with --speed (docs/trace-format.md); absent: one second, the paper's model.
   if (sim.params().speed_m_s) trace_["step_seconds"] = sim.params().step_seconds();
   trace_["footprint"] = {sim.params().s1, sim.params().s2};
+  physical_ = !sim.launch_legs().empty();
+  physical_mission(trace_, sim);
   // The aperture places the planes in metres (stand-off ζ_z, docs/export.md).
   trace_["camera"] = {{"theta_deg", sim.params().theta_deg}};
   // A hull from a mesh: its surface stands out from the side plane by depth(x, y), which exports
@@ -220,7 +248,7 @@ void TraceRecorder::on_step(const sim::Simulator& sim, const planners::Planner& 
 
 json TraceRecorder::finish(const sim::MissionResult& result) const {
   json t = trace_;
-  t["uav_fields"] = {"x", "y", "z", "transit_left", "active"};
+  t["uav_fields"] = physical_ ? json(kPhysicalUavFields) : json(kPaperUavFields);
   t["frames"] = steps_;
   t["series"] = {{"inspected", result.inspected_series}, {"known", result.known_series}};
   json r;
@@ -237,6 +265,12 @@ json TraceRecorder::finish(const sim::MissionResult& result) const {
   r["plane_changes"] = total.plane_changes;
   r["hovers"] = total.hovers;
   r["redundant_observations"] = result.redundant_observations;
+  // Only a mission with launch sites flies sorties, and only one with a battery can crash.
+  if (physical_) {
+    r["sorties"] = result.sorties();
+    r["flight_steps"] = total.flight_steps;
+  }
+  if (trace_.contains("battery")) r["battery_crashes"] = result.battery_crashes;
   // Only a mission with a separation D measures it (docs/trace-format.md).
   if (result.min_separation) {
     r["separation_conflicts"] = result.separation_conflicts;

@@ -25,17 +25,20 @@ bool parse_waypoint_action(std::string_view text, WaypointAction& action) {
 
 std::vector<std::vector<GridState>> trace_states(const nlohmann::json& trace) {
   const auto& frames = trace.at("frames");
-  const std::size_t uavs = frames.at(0).at("u").size() / 5;
+  // Values per UAV: the paper's five, eight with launch sites (docs/trace-format.md).
+  const std::size_t fields = trace.contains("uav_fields") ? trace["uav_fields"].size() : 5;
+  const std::size_t uavs = frames.at(0).at("u").size() / fields;
   std::vector<std::vector<GridState>> states(uavs);
   for (auto& s : states) s.reserve(frames.size());
   for (const auto& f : frames) {
     const auto& u = f.at("u");
     for (std::size_t k = 0; k < uavs; ++k) {
+      const std::size_t o = fields * k;
       GridState s;
-      s.pos = {u[5 * k].get<int>(), u[5 * k + 1].get<int>()};
-      s.z = u[5 * k + 2].get<int>();
-      s.in_transit = u[5 * k + 3].get<int>() > 0;
-      s.active = u[5 * k + 4].get<int>() != 0;
+      s.pos = {u[o].get<int>(), u[o + 1].get<int>()};
+      s.z = u[o + 2].get<int>();
+      s.in_transit = u[o + 3].get<int>() > 0;
+      s.active = u[o + 4].get<int>() != 0;
       states[k].push_back(s);
     }
   }

@@ -36,10 +36,10 @@ grid::Grid<int> seen_components(const world::HullMask& hull, const grid::Grid<in
 
 // Gives every hull cell without an owner the owner of the nearest owned cell over hull cells
 // (breadth-first from the owned cells in index order, so ties are deterministic and each region
-// stays as connected as it was). Calls give(i, k) for each.
+// stays as connected as it was; across the seam of `flights` too). Calls give(i, k) for each.
 template <class Give>
 void attach_unowned(const world::HullMask& hull, const grid::Grid<std::int16_t>& owner,
-                    Give&& give) {
+                    const grid::EdgeSteps& flights, Give&& give) {
   std::vector<int> queue;
   for (int i : hull.cells()) {
     if (owner[i] >= 0) queue.push_back(i);
@@ -48,8 +48,8 @@ void attach_unowned(const world::HullMask& hull, const grid::Grid<std::int16_t>&
     const grid::Cell at = hull.mask().cell(queue[head]);
     const int k = owner[queue[head]];
     for (int d = 0; d < 4; ++d) {
-      const grid::Cell c{at.x + grid::kNeighbourDx[d], at.y + grid::kNeighbourDy[d]};
-      if (!hull.mask().contains(c) || !hull.is_hull(c) || owner[c] >= 0) continue;
+      const grid::Cell c = grid::neighbour(at, d, hull.width(), hull.height(), flights);
+      if (c == grid::kNoCell || !hull.is_hull(c) || owner[c] >= 0) continue;
       give(hull.mask().index(c), k);
       queue.push_back(hull.mask().index(c));
     }
@@ -214,7 +214,7 @@ Partition partition_per_flight_component(const PartitionRequest& request,
     }
   }
   // Cells no one sees (excluded from the metrics) still need an owner.
-  attach_unowned(hull, out.owner, [&](int i, int k) {
+  attach_unowned(hull, out.owner, request.flights, [&](int i, int k) {
     give(i, k);
     out.desired_weight[static_cast<std::size_t>(k)] += weight(i);
   });

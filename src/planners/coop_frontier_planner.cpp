@@ -252,7 +252,7 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
       }
       if (cell) {
         plan.target = *cell;
-        actions[k] = sim::step_towards(u.pos, step_to(id, u.pos, *cell, 1));
+        actions[k] = sim::move_to_neighbour(u.pos, step_to(id, u.pos, *cell, 1));
         continue;
       }
       plan.mode = Mode::kExplore;
@@ -275,7 +275,8 @@ void CoopFrontierPlanner::decide(const sim::PlannerView& view, std::span<Action>
     const UavPlan& plan = uavs_[k];
     if (plan.mode == Mode::kExplore && plan.has_target() && !u.failed && !u.in_transit() &&
         u.z == 2) {
-      actions[k] = sim::step_towards(u.pos, step_to(static_cast<int>(k), u.pos, plan.target, 2));
+      actions[k] =
+          sim::move_to_neighbour(u.pos, step_to(static_cast<int>(k), u.pos, plan.target, 2));
     }
     uavs_[k].changing_plane = u.in_transit() || actions[k] == Action::kChangePlane;
   }

@@ -77,7 +77,8 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   }
 
   DirectPartitionSource direct;
-  grid::DistanceService distances = world::make_distance_service(sim.reachability(), sim.flight_steps());
+  grid::DistanceService distances =
+      world::make_distance_service(sim.reachability(), sim.flight_steps());
   PlannerContext context{hull,
                          params,
                          instance.prior,
@@ -98,13 +99,20 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   std::optional<sim::Deconfliction> deconfliction;
   if (params.separation > 0 && params.deconflict) {
     deconfliction.emplace(params.separation, params.uavs, hull.width(), hull.height(),
-                          params.no_fly.get());
+                          params.no_fly.get(), &sim.flight_steps().plane[0]);
   }
   std::optional<sim::SortieLayer> sorties;
   if (sim.battery().limited) sorties.emplace(sim);
+  std::vector<int> planned_returns;
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
-    if (sorties) sorties->before_step(sim);
+    if (sorties) {
+      planned_returns.clear();
+      t0 = Clock::now();
+      planner.returns(sim.view(), planned_returns);
+      planner_seconds += seconds_since(t0);
+      sorties->before_step(sim, planned_returns);
+    }
     t0 = Clock::now();
     planner.decide(sim.view(), actions);
     planner_seconds += seconds_since(t0);

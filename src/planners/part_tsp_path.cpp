@@ -45,7 +45,7 @@ sim::Action SegmentPath::next_action(grid::Cell pos) const {
   if (distances_->has_long_flights() && next_ % 2 == 1) {
     return sim::step_towards(pos, waypoints_[next_]);
   }
-  return sim::step_towards(pos, distances_->next_step(pos, waypoints_[next_]));
+  return sim::move_to_neighbour(pos, distances_->next_step(pos, waypoints_[next_]));
 }
 
 }  // namespace hullinspect::planners::part_tsp

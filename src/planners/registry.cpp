@@ -106,6 +106,9 @@ Params<SweepInspectOptions> sweep_inspect_params() {
           },
           "the sweep's bands of s2 cells: rows (flown along the hull), columns (flown up "
           "and down its height) or auto (per region, whichever is the shorter flight)")
+      .flag("planned-returns", &SweepInspectOptions::planned_returns,
+            "with batteries, end a sortie where that is cheapest along the sweep (false: where "
+            "the sortie layer sends the UAV home)")
       .nested(
           "partitioner", &SweepInspectOptions::partitioner_options,
           [](const SweepInspectOptions& o, const OptionMap& m) {

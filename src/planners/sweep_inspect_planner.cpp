@@ -37,7 +37,8 @@ bool SweepInspectPlanner::reachable(int k, int i, std::uint8_t bit) const {
 }
 
 sim::Action SweepInspectPlanner::step(int k, grid::Cell pos, grid::Cell to) const {
-  return sim::step_towards(pos, uav_distances_[static_cast<std::size_t>(k)]->next_step(pos, to));
+  return sim::move_to_neighbour(pos,
+                                uav_distances_[static_cast<std::size_t>(k)]->next_step(pos, to));
 }
 
 void SweepInspectPlanner::start(const PlannerContext& context) {

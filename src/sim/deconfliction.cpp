@@ -21,8 +21,13 @@ int sign(int v) {
 }  // namespace
 
 Deconfliction::Deconfliction(int separation, int uavs, int width, int height,
-                             const grid::Grid<std::uint8_t>* no_fly)
-    : d_(separation), width_(width), height_(height), no_fly_(no_fly), patience_(separation + 1) {
+                             const grid::Grid<std::uint8_t>* no_fly, const grid::EdgeSteps* flights)
+    : d_(separation),
+      width_(width),
+      height_(height),
+      no_fly_(no_fly),
+      flights_(flights),
+      patience_(separation + 1) {
   const auto n = static_cast<std::size_t>(uavs);
   desire_.resize(n);
   next_.resize(n);
@@ -111,7 +116,9 @@ void Deconfliction::adjust(std::span<const UavState> uavs, std::span<Action> act
     const auto uk = static_cast<std::size_t>(k);
     const UavState& u = uavs[uk];
     const bool fixed = u.failed || u.in_transit();
-    desire_[uk] = fixed ? u.pos : moved(u.pos, actions[uk]);
+    desire_[uk] = fixed                 ? u.pos
+                  : flights_ == nullptr ? moved(u.pos, actions[uk])
+                                        : moved(u.pos, actions[uk], width_, height_, *flights_);
     settled_[uk] = 0;
     order_[uk] = k;
   }

@@ -58,7 +58,7 @@ LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t
   long long sortie_legs = 0;
   if (!params.launch_sites.empty()) {
     const auto reach_map = world::compute_reachability(hull, params.no_fly.get(), s1, s2, starts);
-    const auto legs = world::plan_launch_legs(params, reach_map, starts);
+    const auto legs = world::plan_launch_legs(params, hull, reach_map, starts);
     outbound = legs.outbound;
     for (const int o : outbound) outbound_total += o;
     landing = legs.takeoff_steps + legs.transfer_steps;

@@ -52,7 +52,7 @@ Simulator::Simulator(const world::HullMask& hull, const world::Instance& instanc
     uavs_[static_cast<std::size_t>(k)] =
         UavState{starts[static_cast<std::size_t>(k)], params.start_z, 0, false};
   }
-  legs_ = world::plan_launch_legs(params, reach_, starts);
+  legs_ = world::plan_launch_legs(params, reach_, starts, flights_.plane[1]);
   battery_ = world::battery_steps(params);
   world::check_endurance_reaches(params, hull, reach_, legs_);
   if (!legs_.empty()) {
@@ -177,7 +177,7 @@ void Simulator::step(std::span<const Action> actions) {
         if (u.transit_left == 0) u.z = 3 - u.z;
         break;
       default: {
-        const grid::Cell next = moved(u.pos, a);
+        const grid::Cell next = moved(u.pos, a, map_.width(), map_.height(), flights_.plane[0]);
         if (!map_.contains(next)) {
           throw LogicError(
               fmt::format("UAV {} at ({}, {}) was told to move {} off the {} × {} grid at "

@@ -66,7 +66,10 @@ std::optional<std::string> step_violation(const UavState& before, const UavState
     if (!unchanged) return std::string("moved or changed plane while failed");
     return std::nullopt;
   }
-  const int moved = grid::manhattan(before.pos, after.pos);
+  // Cells apart: a move across the seam (grid::adjacent) is one.
+  const int moved = grid::adjacent(before.pos, after.pos, flights.plane[0])
+                        ? 1
+                        : grid::manhattan(before.pos, after.pos);
   // Away at its launch site (on the ground, taking off, flying out or home, landing): the
   // simulator flies it along its leg, one cell a step at most, its plane following the flight.
   if (before.away_left > 0 || after.away_left > 0) {

@@ -63,7 +63,7 @@ void validate_battery(const MissionParams& p, const HullMask& hull) {
   }
   const auto starts = start_cells(p, hull);
   const auto reach = compute_reachability(hull, p.no_fly.get(), p.s1, p.s2, starts);
-  check_endurance_reaches(p, hull, reach, plan_launch_legs(p, reach, starts));
+  check_endurance_reaches(p, hull, reach, plan_launch_legs(p, hull, reach, starts));
 }
 
 void check_endurance_reaches(const MissionParams& p, const HullMask& hull,
@@ -99,8 +99,9 @@ void check_endurance_reaches(const MissionParams& p, const HullMask& hull,
                   "and come back: that needs at least {} s (the flight both ways down to plane 1, "
                   "a reserve of "
                   "{} s and a margin of {} s)",
-                  battery_seconds(p, b.endurance), cell.x, cell.y, s.x, s.y, battery_seconds(p, need),
-                  battery_seconds(p, b.reserve), battery_seconds(p, sortie_margin_steps(p) + 1)));
+                  battery_seconds(p, b.endurance), cell.x, cell.y, s.x, s.y,
+                  battery_seconds(p, need), battery_seconds(p, b.reserve),
+                  battery_seconds(p, sortie_margin_steps(p) + 1)));
 }
 
 }  // namespace hullinspect::world

@@ -127,6 +127,11 @@ void validate(const HullGeometry& g, const HullMask& mask, const std::string& so
   } else if (g.surface.size() != 0) {
     fail(source, "surface", "is only for an unrolled hull (side both)");
   }
+  if (g.seam && !g.unrolled()) fail(source, "seam", "is only for an unrolled hull (side both)");
+  if (g.seam && mask.width() < 3) {
+    fail(source, "seam",
+         fmt::format("needs a grid at least 3 columns wide (got {})", mask.width()));
+  }
   for (int y = 0; y < mask.height(); ++y) {
     for (int x = 0; x < mask.width(); ++x) {
       const float d = g.depth(x, y);
@@ -266,6 +271,10 @@ HullMask parse_hull_json(std::string_view bytes, const std::string& source) {
     if (!it->is_string()) fail(source, "mesh", "expected a string");
     g.mesh = it->get<std::string>();
   }
+  if (const auto it = doc.find("seam"); it != doc.end()) {
+    if (!it->is_boolean()) fail(source, "seam", "expected true or false");
+    g.seam = it->get<bool>();
+  }
   g.depth = rows<float>(doc, "depth", width, height, source, [&](const json& v, int x, int y) {
     return cell_number(v, "depth", x, y, source);
   });
@@ -341,6 +350,7 @@ std::string to_hull_json(const HullMask& hull) {
       surface.push_back(std::move(row));
     }
     doc["surface"] = std::move(surface);
+    doc["seam"] = g->seam;
   }
   return doc.dump() + "\n";
 }

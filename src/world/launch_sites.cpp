@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/grid/distance_service.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::world {
 
@@ -69,22 +72,33 @@ std::vector<grid::Cell> LaunchLegs::path_home(int uav, grid::Cell from) const {
   std::vector<grid::Cell> path;
   grid::Cell c = from;
   while (d[c] > 0) {
-    const grid::Cell next[] = {{c.x - 1, c.y}, {c.x + 1, c.y}, {c.x, c.y - 1}, {c.x, c.y + 1}};
-    for (const grid::Cell n : next) {
-      if (d.contains(n) && d[n] == d[c] - 1) {
+    int steps = 1;
+    for (const int dir : {1, 0, 3, 2}) {  // west, east, south, north (grid::kNeighbourDx order)
+      const grid::Cell n = grid::neighbour(c, dir, d.width(), d.height(), flights);
+      if (n == grid::kNoCell) continue;
+      const int flight = flights.between(c, n);
+      if (d[n] == d[c] - flight) {
         c = n;
+        steps = flight;
         break;
       }
     }
-    path.push_back(c);
+    path.insert(path.end(), static_cast<std::size_t>(steps), c);
   }
   return path;
 }
 
-LaunchLegs plan_launch_legs(const MissionParams& p, const Reachability& reach,
+LaunchLegs plan_launch_legs(const MissionParams& p, const HullMask& hull, const Reachability& reach,
                             std::span<const grid::Cell> starts) {
+  if (p.launch_sites.empty()) return {};
+  return plan_launch_legs(p, reach, starts, neighbour_flights(hull, p).plane[1]);
+}
+
+LaunchLegs plan_launch_legs(const MissionParams& p, const Reachability& reach,
+                            std::span<const grid::Cell> starts, const grid::EdgeSteps& flights) {
   LaunchLegs legs;
   if (p.launch_sites.empty()) return legs;
+  legs.flights = flights;
   legs.sites = p.launch_sites;
   legs.plane_change_steps = p.plane_change_steps();
   legs.takeoff_steps =
@@ -96,10 +110,21 @@ LaunchLegs plan_launch_legs(const MissionParams& p, const Reachability& reach,
   grid::Grid<std::uint8_t> passable = reach.flyable;
   for (const grid::Cell s : legs.sites) passable[s] = 1;
   grid::BfsScratch scratch;
+  // With neighbour flights longer than a step (an unrolled hull), the weighted search of the
+  // distance service; a position no UAV may fly is unreachable, as in the breadth-first search.
+  std::optional<grid::DistanceService> weighted;
+  if (!flights.empty()) weighted.emplace(passable, flights, /*cached_fields=*/1);
   for (const grid::Cell s : legs.sites) {
     grid::Grid<int> d;
-    const int source = passable.index(s.x, s.y);
-    grid::bfs_distances(passable, std::span<const int>(&source, 1), d, scratch);
+    if (weighted) {
+      d = weighted->field(s);
+      for (int i = 0; i < d.size(); ++i) {
+        if (passable[i] == 0) d[i] = grid::kUnreachable;
+      }
+    } else {
+      const int source = passable.index(s.x, s.y);
+      grid::bfs_distances(passable, std::span<const int>(&source, 1), d, scratch);
+    }
     legs.flight_home.push_back(std::move(d));
   }
   for (std::size_t k = 0; k < starts.size(); ++k) {

@@ -412,6 +412,9 @@ MeshImport unroll_mesh(std::span<const MeshTriangle> triangles, const MeshImport
 
   HullGeometry g = detail::empty_geometry(opt, source, u0, z0, width, height);
   g.side_plane_y = mesh.centre_y();
+  // With the transom the cut is unrolled all round, so each row's two ends meet at the stern's
+  // centre line: the grid closes on itself and a flight links the seam.
+  g.seam = opt.include_transom && width >= 3;
   g.surface = grid::Grid<Point3>(width, height, Point3{});
   grid::Grid<std::uint8_t> is_hull(width, height, 0);
   grid::Grid<double> area(width, height, 0.0);  // surface area of the covered samples, m²

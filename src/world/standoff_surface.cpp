@@ -69,6 +69,7 @@ grid::StandoffPoints standoff_points(const HullGeometry& g) {
     out.point[i] = {rounded(p.x, 1e4), rounded(p.y, 1e4), rounded(p.z, 1e4)};
     out.normal[i] = {rounded(n.x, 1e6), rounded(n.y, 1e6), rounded(n.z, 1e6)};
   }
+  out.seam = g.seam;
   return out;
 }
 

@@ -75,8 +75,9 @@ TEST(HullImport, WritesAnUnrolledHullThatRunAccepts) {
   fs::remove_all(dir);
 }
 
-// With the transom the grid closes at a seam that no flight links: the import says so.
-TEST(HullImport, SaysTheTransomSeamIsNotLinked) {
+// With the transom the grid closes at a seam that a flight links: the import says so, and the
+// hull file records it (a hull without the transom has no seam).
+TEST(HullImport, SaysTheTransomSeamIsLinked) {
   const auto dir = make_temp_dir("hull-import-transom");
   const std::string stl = wigley_stl(WigleyHull{}).string();
   const auto both = run_cli({"hull", "import", stl, "--sides", "both", "--out", dir + "/both"});
@@ -88,10 +89,11 @@ TEST(HullImport, SaysTheTransomSeamIsNotLinked) {
   const auto json = nlohmann::json::parse(std::ifstream(dir + "/closed.json"));
   const int last = json["width"].get<int>() - 1;
   EXPECT_NE(r.out.find("  seam: columns 0 and " + std::to_string(last) +
-                       " meet at the transom and are not linked: flights between them go around "
-                       "the bow\n"),
+                       " meet at the transom, linked by a flight at stand-off\n"),
             std::string::npos)
       << r.out;
+  EXPECT_EQ(json["seam"], true);
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(dir + "/both.json"))["seam"], false);
   fs::remove_all(dir);
 }
 

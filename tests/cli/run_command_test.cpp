@@ -126,6 +126,25 @@ TEST(RunCommand, JsonHasEveryDocumentedField) {
   EXPECT_LE(j["T_c"].get<int>(), j["T_m"].get<int>());
 }
 
+TEST(RunCommand, JsonWithLaunchSitesHasTheBoundAndTheRatios) {
+  const auto r = run_cli(
+      {"run", "--json", "--uavs", "4", "--seed", "5", "--launch", "115,0", "--endurance", "400"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("bound_T_c"));
+  ASSERT_TRUE(j.contains("bound_T_m"));
+  const double t_c = j["T_c"].get<double>(), t_m = j["T_m"].get<double>();
+  const double b_c = j["bound_T_c"].get<double>(), b_m = j["bound_T_m"].get<double>();
+  EXPECT_GT(b_c, 0);
+  EXPECT_LE(b_c, t_c);
+  EXPECT_LE(b_m, t_m);
+  EXPECT_NEAR(j["T_c_ratio"].get<double>(), t_c / b_c, 5e-4);
+  EXPECT_NEAR(j["T_m_ratio"].get<double>(), t_m / b_m, 5e-4);
+  // Without launch sites the keys stay as they were.
+  const auto plain = nlohmann::json::parse(run_cli({"run", "--json", "--seed", "5"}).out);
+  EXPECT_FALSE(plain.contains("bound_T_m"));
+}
+
 TEST(RunCommand, TimeLimitReportsIncompleteWithoutNumbers) {
   const auto r = run_cli({"run", "--json", "--time-limit", "50"});
   EXPECT_EQ(r.status, 3);

@@ -186,6 +186,71 @@ TEST_F(FlightFiles, DjiKmzFollowsWpmlAndTheTrace) {
   }
 }
 
+// Heights (docs/export.md "Altitudes: which frame each file is in"): every file says which
+// frame its heights are in, and the absolute heights are the home point's ellipsoidal height. The
+// launch site 0,0 lies at the grid's bottom edge (Z0 = 0 for a mask hull), at the origin's height
+// of 3 m.
+TEST_F(FlightFiles, EveryFileDeclaresTheFrameOfItsHeights) {
+  const auto out =
+      export_to("heights", {"--format", "all", "--launch", "0,0", "--max-waypoints", "100000"});
+  constexpr double kHomeHeight = 3.0;
+  const auto qgc = nlohmann::json::parse(io::read_file(out + "/uav0.plan"));
+  EXPECT_NEAR(qgc["mission"]["plannedHomePosition"][2].get<double>(), kHomeHeight, 1e-3);
+  int positioned = 0;
+  for (const auto& item : qgc["mission"]["items"]) {
+    const int frame = item["frame"].get<int>();
+    EXPECT_TRUE(frame == 2 || frame == 3) << item.dump();  // no command, or above home
+    if (frame != 3) continue;
+    ++positioned;
+    EXPECT_EQ(item["AltitudeMode"], 1) << item.dump();  // relative to home
+    EXPECT_EQ(item["Altitude"], item["params"][6]) << item.dump();
+  }
+  EXPECT_GT(positioned, 10);
+  const auto wpl = lines_of(io::read_file(out + "/uav0.waypoints"));
+  ASSERT_GT(wpl.size(), 3u);
+  const auto home = split(wpl[1], '\t');
+  EXPECT_EQ(home[2], "0");  // the home line: an absolute height
+  EXPECT_NEAR(std::stod(home[10]), kHomeHeight, 1e-3);
+  for (std::size_t i = 2; i < wpl.size(); ++i) {
+    const auto f = split(wpl[i], '\t');
+    EXPECT_TRUE(f[2] == "2" || f[2] == "3") << wpl[i];
+  }
+  const auto litchi = lines_of(io::read_file(out + "/uav0.litchi.csv"));
+  for (std::size_t i = 1; i < litchi.size(); ++i) {
+    EXPECT_EQ(split(litchi[i], ',')[38], "0") << litchi[i];  // above the take-off point
+  }
+  const auto kmz = unzip(out + "/uav0.kmz");
+  for (const char* entry : {"wpmz/template.kml", "wpmz/waylines.wpml"}) {
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_string(kmz.at(entry).c_str())) << entry;
+    const auto folder = doc.child("kml").child("Document").child("Folder");
+    const bool waylines = std::string(entry) == "wpmz/waylines.wpml";
+    const auto mode = waylines
+                          ? folder.child("wpml:executeHeightMode")
+                          : folder.child("wpml:waylineCoordinateSysParam").child("wpml:heightMode");
+    EXPECT_STREQ(mode.text().as_string(), "relativeToStartPoint") << entry;
+    if (!waylines) {
+      const auto ref = split(doc.child("kml")
+                                 .child("Document")
+                                 .child("wpml:missionConfig")
+                                 .child("wpml:takeOffRefPoint")
+                                 .text()
+                                 .as_string(),
+                             ',');
+      ASSERT_EQ(ref.size(), 3u);
+      EXPECT_NEAR(std::stod(ref[2]), kHomeHeight, 1e-3);
+    }
+  }
+  pugi::xml_document kml;
+  ASSERT_TRUE(kml.load_file((out + "/mission.kml").c_str()));
+  int modes = 0;
+  for (const auto& node : kml.select_nodes("//altitudeMode")) {
+    EXPECT_STREQ(node.node().text().as_string(), "relativeToGround");
+    ++modes;
+  }
+  EXPECT_GT(modes, 0);
+}
+
 TEST_F(FlightFiles, LitchiColumnByColumn) {
   const auto out = export_to("litchi", {"--format", "litchi", "--max-waypoints", "1000"});
   const auto p = plan();
@@ -463,6 +528,10 @@ TEST(PreflightReport, SortiesCellsAndWarningsMatchTheFiles) {
   EXPECT_EQ(report["cells"]["unseen"], 0);
   const auto warnings = report["warnings"].dump();
   EXPECT_NE(warnings.find("exceed the litchi cap of 9"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("qgc: the planned home's altitude is its height above the WGS-84 "
+                          "ellipsoid"),
+            std::string::npos)
+      << warnings;
   EXPECT_NE(warnings.find("35 no-fly positions are not in the litchi, qgc files"),
             std::string::npos)
       << warnings;
@@ -511,7 +580,8 @@ TEST(PreflightReport, SeparationIsTheSmallestGapOfTheTrace) {
     for (const auto& s : report["sorties"]) EXPECT_TRUE(s["battery_margin_s"].is_null());
     const auto md = io::read_file(dir + "/report/preflight.md");
     EXPECT_NE(md.find("## Separation"), std::string::npos);
-    EXPECT_NE(md.find("Battery margin: not computed"), std::string::npos);
+    EXPECT_NE(md.find("Battery margin: none (unlimited flight"), std::string::npos);
+    EXPECT_EQ(report["battery"]["limited"], false);
     fs::remove_all(dir);
   }
 }

@@ -84,6 +84,16 @@ Grid<int> relaxed(const Grid<std::uint8_t>& allowed, const EdgeSteps& steps, Cel
           changed = true;
         }
       }
+      // The seam, written out on its own: a row's two ends are neighbours where it is linked.
+      const int last = d.width() - 1;
+      if (steps.seam_links(c.y) && (c.x == 0 || c.x == last)) {
+        const Cell n{c.x == 0 ? last : 0, c.y};
+        const int via = d[i] + steps.seam[static_cast<std::size_t>(c.y)];
+        if (via < d[n]) {
+          d[n] = via;
+          changed = true;
+        }
+      }
     }
   }
   return d;
@@ -95,11 +105,18 @@ TEST(FlightSteps, TheDistanceServiceAddsUpTheFlightsOfItsShortestPaths) {
     Lcg rng{seed};
     const int w = 9, h = 6;
     Grid<std::uint8_t> allowed(w, h, 1);
-    EdgeSteps steps{Grid<std::uint8_t>(w, h, 1), Grid<std::uint8_t>(w, h, 1)};
+    EdgeSteps steps{Grid<std::uint8_t>(w, h, 1), Grid<std::uint8_t>(w, h, 1), {}};
     for (int i = 0; i < allowed.size(); ++i) {
       if (seed % 2 == 0 && rng.below(100) < 15) allowed[i] = 0;
       if (rng.below(4) == 0) steps.east[i] = static_cast<std::uint8_t>(2 + rng.below(6));
       if (rng.below(4) == 0) steps.north[i] = static_cast<std::uint8_t>(2 + rng.below(6));
+    }
+    // From the third seed on the grid closes on itself: most rows linked across the seam.
+    if (seed >= 3) {
+      steps.seam.resize(static_cast<std::size_t>(h));
+      for (auto& seam : steps.seam) {
+        seam = static_cast<std::uint8_t>(rng.below(4) == 0 ? 0 : 1 + rng.below(5));
+      }
     }
     DistanceService service(allowed, steps);
     ASSERT_TRUE(service.searched());
@@ -129,7 +146,7 @@ TEST(FlightSteps, TheDistanceServiceAddsUpTheFlightsOfItsShortestPaths) {
 
 TEST(FlightSteps, ALongFlightIsFlownAroundWhenThatIsShorter) {
   // Two rows; in the lower one (1, 0) → (2, 0) takes 5 steps: the path climbs to the upper row.
-  EdgeSteps steps{Grid<std::uint8_t>(4, 2, 1), Grid<std::uint8_t>(4, 2, 1)};
+  EdgeSteps steps{Grid<std::uint8_t>(4, 2, 1), Grid<std::uint8_t>(4, 2, 1), {}};
   steps.east(1, 0) = 5;
   DistanceService service(Grid<std::uint8_t>(4, 2, 1), steps);
   EXPECT_EQ(service.distance({0, 0}, {3, 0}), 5);  // up, three east, down
@@ -191,6 +208,52 @@ TEST(FlightSteps, DistancesToAFewTargetsEqualTheFieldsWithoutCachingOne) {
     EXPECT_EQ(got[0], field[targets[0]]);
     EXPECT_EQ(got[1], field[targets[1]]);
   }
+}
+
+// A ring: four positions in a row around a square of side 1 m, the first and last facing each
+// other across the seam one cell apart at the surface.
+StandoffPoints ring(bool seam) {
+  StandoffPoints p;
+  p.point = Grid<std::array<double, 3>>(4, 1);
+  p.normal = Grid<std::array<double, 3>>(4, 1);
+  p.point(0, 0) = {0.0, 0.5, 0.0};
+  p.point(1, 0) = {0.5, 1.0, 0.0};
+  p.point(2, 0) = {1.0, 0.5, 0.0};
+  p.point(3, 0) = {0.5, 0.0, 0.0};
+  p.normal(0, 0) = {-1.0, 0.0, 0.0};
+  p.normal(1, 0) = {0.0, 1.0, 0.0};
+  p.normal(2, 0) = {1.0, 0.0, 0.0};
+  p.normal(3, 0) = {0.0, -1.0, 0.0};
+  p.seam = seam;
+  return p;
+}
+
+TEST(FlightSteps, TheSeamIsAFlightAtItsStandOffLength) {
+  // θ = 90°, s = 2: ζ = 1 m. From (0.5 − 1, 0.5) facing −x to (0.5, −1) facing −y: √(1.5² + 1.5²).
+  const FlightSteps f = flight_steps(ring(true), 1.0, 90.0, 2, 2);
+  ASSERT_TRUE(f.has_seam());
+  const int seam = flight_steps_for(std::hypot(1.5, 1.5));
+  EXPECT_EQ(f.between({0, 0}, {3, 0}, 1), seam);
+  EXPECT_EQ(f.between({3, 0}, {0, 0}, 2), seam);
+  EXPECT_EQ(f.between({1, 0}, {2, 0}, 1), seam);  // a corner like the seam's
+  // The seam's neighbours: west of column 0 is column 3 and east of column 3 is column 0.
+  const EdgeSteps& e = f.plane[0];
+  EXPECT_EQ(neighbour({0, 0}, 1, 4, 1, e), (Cell{3, 0}));
+  EXPECT_EQ(neighbour({3, 0}, 0, 4, 1, e), (Cell{0, 0}));
+  EXPECT_EQ(neighbour({0, 0}, 2, 4, 1, e), kNoCell);  // no row above
+  EXPECT_TRUE(adjacent({0, 0}, {3, 0}, e));
+  EXPECT_FALSE(adjacent({0, 0}, {2, 0}, e));
+  // Around the ring the other way takes three flights: the service takes the seam.
+  DistanceService service(Grid<std::uint8_t>(4, 1, 1), f.longer_plane());
+  EXPECT_EQ(service.distance({0, 0}, {3, 0}), seam);
+  EXPECT_EQ(service.next_step({0, 0}, {3, 0}), (Cell{3, 0}));
+  // Without the seam the same points link nothing across, and the way round is the only one.
+  const FlightSteps open = flight_steps(ring(false), 1.0, 90.0, 2, 2);
+  EXPECT_FALSE(open.has_seam());
+  EXPECT_EQ(neighbour({0, 0}, 1, 4, 1, open.plane[0]), kNoCell);
+  EXPECT_FALSE(adjacent({0, 0}, {3, 0}, open.plane[0]));
+  DistanceService around(Grid<std::uint8_t>(4, 1, 1), open.longer_plane());
+  EXPECT_EQ(around.distance({0, 0}, {3, 0}), 3 * seam);
 }
 
 }  // namespace

@@ -28,16 +28,21 @@ namespace {
 
 using nlohmann::json;
 
-// A lawnmower mission on `hull`, recorded.
-json record_lawnmower(const world::HullMask& hull, const world::MissionParams& params) {
+// A mission of `algorithm` on `hull`, recorded.
+json record_mission(const world::HullMask& hull, const world::MissionParams& params,
+                    const std::string& algorithm) {
   const auto instance =
       world::generate_instance(hull, world::CorrosionParams::homogeneous(hull.width(), 0.01, 5), 5);
-  auto planner = planners::make_planner("lawnmower");
-  TraceRecorder recorder(instance, json{{"algorithm", "lawnmower"}});
+  auto planner = planners::make_planner(algorithm);
+  TraceRecorder recorder(instance, json{{"algorithm", algorithm}});
   planners::MissionOptions options;
   options.observers.push_back(&recorder);
   const auto result = planners::run_mission(hull, instance, params, *planner, options);
   return recorder.finish(result);
+}
+
+json record_lawnmower(const world::HullMask& hull, const world::MissionParams& params) {
+  return record_mission(hull, params, "lawnmower");
 }
 
 // A lawnmower mission of 4 UAVs on the default hull, recorded.
@@ -133,10 +138,10 @@ TEST(TraceReader, ReadsAFileAndNamesItOnFailure) {
 TEST(TraceReader, NamesTheDamagedField) {
   EXPECT_EQ(problem_after([](json& t) { t["format"] = "something-else"; }),
             "mission.json: format: expected \"hullinspect-trace\" (not a hullinspect trace?)");
-  EXPECT_EQ(problem_after([](json& t) { t["version"] = 3; }),
-            "mission.json: version: 3 is not supported (this hullinspect reads versions 1 to 2)");
+  EXPECT_EQ(problem_after([](json& t) { t["version"] = 4; }),
+            "mission.json: version: 4 is not supported (this hullinspect reads versions 1 to 3)");
   EXPECT_EQ(problem_after([](json& t) { t["version"] = 0; }),
-            "mission.json: version: 0 is not supported (this hullinspect reads versions 1 to 2)");
+            "mission.json: version: 0 is not supported (this hullinspect reads versions 1 to 3)");
   EXPECT_EQ(problem_after([](json& t) { t.erase("frames"); }), "mission.json: frames: missing");
   EXPECT_EQ(problem_after([](json& t) { t["grid"]["width"] = 0; }),
             "mission.json: grid.width: 0 is outside [1, 32768]");
@@ -365,6 +370,46 @@ TEST(TraceReader, AUavStaysPutWhileItFliesToADistantNeighbour) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr(fmt::format(
                               "frames[{}].u: UAV {} moved or changed plane with", at + 1, uav)));
   }
+}
+
+// A hull closed at its seam (the Wigley stern with --include transom): a recorded move across the
+// seam is one neighbour flight, which the reader replays from `ship_frame.seam`.
+TEST(TraceReader, AMoveAcrossTheSeamIsANeighbourFlight) {
+  world::MeshImportOptions o;
+  o.side = world::HullSide::both;
+  o.include_transom = true;
+  o.cell_size = 1.0;
+  const world::HullMask hull =
+      world::import_mesh_file(testing::wigley_stl(testing::WigleyHull{}), o).hull;
+  world::MissionParams params = unrolled_params();
+  params.uavs = 4;
+  const int w = hull.width();
+  // The first registered planner whose UAVs cross the seam.
+  for (const auto& info : planners::planner_registry()) {
+    json trace = record_mission(hull, params, info.name);
+    ASSERT_TRUE(trace["ship_frame"].value("seam", false)) << info.name;
+    const auto& frames = trace["frames"];
+    const std::size_t uavs = frames[0]["u"].size() / 5;
+    std::size_t at = 0;
+    for (std::size_t i = 1; i < frames.size() && at == 0; ++i) {
+      for (std::size_t k = 0; k < uavs; ++k) {
+        const int dx = frames[i]["u"][5 * k].get<int>() - frames[i - 1]["u"][5 * k].get<int>();
+        if (std::abs(dx) == w - 1) at = i;
+      }
+    }
+    if (at == 0) continue;
+    EXPECT_NO_THROW(validate_trace(trace, "mission.json")) << info.name;
+    // Without the link the same move is a jump across the grid.
+    trace["ship_frame"].erase("seam");
+    try {
+      validate_trace(trace, "mission.json");
+      ADD_FAILURE() << "accepted a move across an unlinked seam";
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr(fmt::format("moved {} cells in one step", w - 1)));
+    }
+    return;
+  }
+  FAIL() << "no planner crossed the seam: the test proves nothing";
 }
 
 }  // namespace

@@ -2,6 +2,11 @@
 // generated maps and with the user's own truth, under the shared MissionChecker.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
@@ -59,30 +64,74 @@ struct LongFlights final : MissionObserver {
   }
 };
 
+// Every registered planner's mission on `hull` (`uavs` UAVs, the imperfect scenario) completes
+// under the shared MissionChecker; `watch` observes each mission and `after(name)` runs after it.
+void every_registered_planner_completes(const world::HullMask& hull, int uavs,
+                                        MissionObserver& watch,
+                                        const std::function<void(const std::string&)>& after) {
+  for (const auto& info : planner_registry()) {
+    SCOPED_TRACE(info.name);
+    MissionSpec spec;
+    spec.algorithm = info.name;
+    spec.params.uavs = uavs;
+    spec.params.cell_size_m = hull.geometry()->cell_size;
+    spec.seed = 5;
+    spec.corrosion = world::scenario("imperfect").corrosion(hull.width());
+    testing::MissionChecker checker;
+    MissionOptions options;
+    options.observers = {&checker, &watch};
+    const auto r = run_mission(spec, hull, options);
+    EXPECT_TRUE(r.complete);
+    EXPECT_TRUE(checker.ok());
+    EXPECT_EQ(r.hull_cells, hull.cell_count());
+    after(info.name);
+  }
+}
+
 TEST(MeshHullMissions, EveryRegisteredPlannerFliesTheUnrolledHullsRealFlights) {
   world::MeshImportOptions o;
   o.side = world::HullSide::both;
   o.cell_size = 1.0;
   const world::HullMask hull =
       world::import_mesh_file(testing::wigley_stl(testing::WigleyHull{}), o).hull;
-  for (const auto& info : planner_registry()) {
-    SCOPED_TRACE(info.name);
-    MissionSpec spec;
-    spec.algorithm = info.name;
-    spec.params.uavs = 3;
-    spec.params.cell_size_m = hull.geometry()->cell_size;
-    spec.seed = 5;
-    spec.corrosion = world::scenario("imperfect").corrosion(hull.width());
-    testing::MissionChecker checker;
-    LongFlights flights;
-    MissionOptions options;
-    options.observers = {&checker, &flights};
-    const auto r = run_mission(spec, hull, options);
-    EXPECT_TRUE(r.complete);
-    EXPECT_TRUE(checker.ok());
+  LongFlights flights;
+  every_registered_planner_completes(hull, 3, flights, [&](const std::string& name) {
     // Around the bow the UAVs cannot avoid flights longer than one step.
-    EXPECT_GT(flights.steps, 0);
+    EXPECT_GT(flights.steps, 0) << name;
+    flights.steps = 0;
+  });
+}
+
+// Counts the moves across the seam of a grid that closes on itself (a row's two ends).
+struct SeamCrossings final : MissionObserver {
+  std::vector<grid::Cell> last;
+  long long moves = 0;
+  void on_start(const sim::Simulator& sim, const Planner&) override {
+    last.clear();
+    for (const sim::UavState& u : sim.uavs()) last.push_back(u.pos);
   }
+  void on_step(const sim::Simulator& sim, const Planner&) override {
+    const int w = sim.map().width();
+    for (std::size_t k = 0; k < last.size(); ++k) {
+      const grid::Cell now = sim.uavs()[k].pos;
+      if (now.y == last[k].y && std::abs(now.x - last[k].x) == w - 1) ++moves;
+      last[k] = now;
+    }
+  }
+};
+
+TEST(MeshHullMissions, EveryRegisteredPlannerCompletesOnAHullClosedAtItsSeam) {
+  world::MeshImportOptions o;
+  o.side = world::HullSide::both;
+  o.include_transom = true;  // the Wigley stern is a point: the grid closes there
+  o.cell_size = 1.0;
+  const world::HullMask hull =
+      world::import_mesh_file(testing::wigley_stl(testing::WigleyHull{}), o).hull;
+  ASSERT_TRUE(hull.geometry()->seam);
+  SeamCrossings seam;
+  every_registered_planner_completes(hull, 4, seam, [](const std::string&) {});
+  // The planners that follow the distance service's paths take the short way across the stern.
+  EXPECT_GT(seam.moves, 0);
 }
 
 TEST(MeshHullMissions, EveryPlannerCompletesOnTheDtc) {

@@ -66,6 +66,25 @@ class Traces(unittest.TestCase):
         self.assertEqual(kept.trace.data["frames"], self.trace.data["frames"])
         self.assertIsNone(hullinspect.run_mission(seed=3).trace)
 
+    def test_uavs_frame_of_a_mission_with_launch_sites(self):
+        # With launch sites each UAV's state also says whether it is airborne, its battery and
+        # its steps away from the hull; a UAV away is in transit (it cannot act).
+        path = os.path.join(self.tmp.name, "sorties.json")
+        done = cli("run", "-n", "2", "--seed", "2", "--launch", "105,0", "--launch", "125,0",
+                   "--endurance", "400", "--swap-time", "30", "--trace", path)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        uavs = hullinspect.read_trace(path).uavs
+        for column in ("airborne", "battery_left", "away_left"):
+            self.assertIn(column, uavs.columns)
+        self.assertEqual(uavs["airborne"].dtype, bool)
+        away = uavs["away_left"] > 0
+        self.assertTrue(away.any())
+        self.assertTrue(uavs.loc[away, "in_transit"].all())
+        on_hull = uavs.loc[~away]
+        self.assertTrue((on_hull["in_transit"] == (on_hull["transit_left"] > 0)).all())
+        self.assertTrue((~uavs["airborne"]).any())
+        self.assertTrue(uavs["battery_left"].between(0, 400).all())
+
     def test_uavs_frame_has_one_row_per_uav_and_step(self):
         uavs = self.trace.uavs
         steps = self.result.counters["steps"]
@@ -284,12 +303,29 @@ class InputChecks(unittest.TestCase):
     def test_ctrl_c_stops_an_experiment_whose_planner_sleeps(self):
         with tempfile.TemporaryDirectory() as tmp:
             started = os.path.join(tmp, "started")
+            # decide() also records the threads run_experiment started that take SIGINT: the
+            # kernel may hand Ctrl-C to any of them, and then this sleep would not wake.
             script = textwrap.dedent(f"""
-                import signal, time, hullinspect
+                import os, signal, time, hullinspect
                 signal.signal(signal.SIGINT, signal.default_int_handler)
+                before = set(os.listdir("/proc/self/task"))
+                def taking_sigint(tids):
+                    taking = 0
+                    for tid in tids:
+                        try:
+                            with open(f"/proc/self/task/{{tid}}/status") as f:
+                                blocked = next(int(line.split()[1], 16) for line in f
+                                               if line.startswith("SigBlk:"))
+                        except (OSError, StopIteration):
+                            continue
+                        taking += not blocked & (1 << (signal.SIGINT - 1))
+                    return taking
                 class Sleepy(hullinspect.Planner):
                     def decide(self, view):
-                        open({started!r}, "w").close()
+                        new = set(os.listdir("/proc/self/task")) - before
+                        with open({started!r} + ".tmp", "w") as f:
+                            f.write(f"{{len(new)}} {{taking_sigint(new)}}")
+                        os.replace({started!r} + ".tmp", {started!r})
                         time.sleep(60)
                         return ["hover"] * len(view.uavs)
                 hullinspect.register_planner("sleepy", Sleepy)
@@ -306,6 +342,10 @@ class InputChecks(unittest.TestCase):
                 while not os.path.exists(started) and time.monotonic() < deadline:
                     time.sleep(0.05)
                 self.assertTrue(os.path.exists(started), "decide() never ran")
+                with open(started) as f:
+                    threads, taking = map(int, f.read().split())
+                self.assertGreaterEqual(threads, 2)  # the serving worker and the jobs' threads
+                self.assertEqual(taking, 0)
                 child.send_signal(signal.SIGINT)
                 # The sleep lasts 60 s; the interrupt must end the process long before.
                 out, err = child.communicate(timeout=20)
@@ -315,8 +355,9 @@ class InputChecks(unittest.TestCase):
                     child.communicate()
             self.assertEqual(child.returncode, 0, err)
             self.assertEqual(out, "interrupted\n")
+            # As a CLI killed by Ctrl-C leaves it: running, its journals ready for resume=True.
             with open(os.path.join(tmp, "r", "manifest.json")) as f:
-                self.assertEqual(json.load(f)["status"], "failed")
+                self.assertEqual(json.load(f)["status"], "running")
 
 
 if __name__ == "__main__":

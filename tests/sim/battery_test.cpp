@@ -104,6 +104,41 @@ TEST(Battery, ASortieReturnLandsSwapsAndFliesBackToWhereItLeftOff) {
   EXPECT_THROW(sim.return_for_swap(1), LogicError);
 }
 
+TEST(Battery, TheSortieLayerSendsHomeTheUavsAPlannerSendsHome) {
+  Strip w;
+  Simulator sim(w.hull, w.instance, w.params);
+  SortieLayer layer(sim);
+  const std::vector<Action> hover = {Action::kHover};
+  const std::vector<int> uav0 = {0};
+  // On the ground before its first take-off: no UAV there to send home.
+  EXPECT_THROW(layer.before_step(sim, uav0), LogicError);
+  while (sim.uavs()[0].away_left > 0) sim.step(hover);
+  const std::vector<int> unknown = {1};
+  EXPECT_THROW(layer.before_step(sim, unknown), LogicError);
+  // Full battery, at its start cell: the layer alone would not send it home; its planner does.
+  EXPECT_FALSE(sim.return_rule().due(0, sim.uavs()[0]));
+  layer.before_step(sim, uav0);
+  EXPECT_GT(sim.uavs()[0].away_left, 0);
+  EXPECT_EQ(layer.planned_returns(), 1);
+  EXPECT_EQ(layer.returns(), 0);
+  // Already away: not again.
+  EXPECT_THROW(layer.before_step(sim, uav0), LogicError);
+}
+
+TEST(Battery, TheReturnRuleIsTheFlightHomeTheReserveAndTheMargin) {
+  Strip w;
+  Simulator sim(w.hull, w.instance, w.params);
+  const ReturnRule rule = sim.return_rule();
+  ASSERT_TRUE(rule.limited());
+  // From (5, 2) on plane 2: flight 7 and landing 1; on plane 1 a climb more. Reserve 5, margin
+  // 2 u_z + 1 = 3.
+  EXPECT_EQ(rule.flight_home(0, {5, 2}, 2), 8);
+  EXPECT_EQ(rule.battery_needed(0, {5, 2}, 2), 16);
+  EXPECT_EQ(rule.battery_needed(0, {5, 2}, 1), 17);
+  EXPECT_EQ(sim.view().returns.battery_needed(0, {5, 2}, 2), 16);
+  EXPECT_FALSE(ReturnRule{}.limited());
+}
+
 TEST(Battery, TheSortieLayerSendsAUavHomeWithTheReserveLeft) {
   Strip w;
   Simulator sim(w.hull, w.instance, w.params);

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iterator>
 
+#include <nlohmann/json.hpp>
+
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
@@ -79,6 +81,44 @@ TEST(MeshUnroll, TheTransomClosesTheGridAroundTheStern) {
   EXPECT_NEAR(g.surface(0, 0).y, 0.25, 1e-5);
   EXPECT_NEAR(g.surface(95, 0).y, -0.25, 1e-5);
   EXPECT_NEAR(g.normal(0, 0).x, -1, 1e-6);
+  // Closed on itself: the hull records that its two ends are neighbours across the seam, and
+  // its file keeps it.
+  EXPECT_TRUE(g.seam);
+  EXPECT_FALSE(project_mesh(box(0, 20, -2, 2, 0, 3), both(), "box").hull.geometry()->seam);
+  EXPECT_TRUE(parse_hull_json(to_hull_json(m.hull), "box.json").geometry()->seam);
+}
+
+TEST(MeshUnroll, TheSeamFieldIsOptionalAndOnlyForAClosedUnrolledHull) {
+  MeshImportOptions o = both();
+  o.include_transom = true;
+  const std::string text = to_hull_json(project_mesh(box(0, 20, -2, 2, 0, 3), o, "box").hull);
+  // A file written before the field existed: not linked.
+  auto doc = nlohmann::json::parse(text);
+  doc.erase("seam");
+  EXPECT_FALSE(parse_hull_json(doc.dump(), "old.json").geometry()->seam);
+  doc["seam"] = "yes";
+  EXPECT_THROW(
+      {
+        try {
+          parse_hull_json(doc.dump(), "bad.json");
+        } catch (const InputError& e) {
+          EXPECT_STREQ(e.what(), "bad.json: seam: expected true or false");
+          throw;
+        }
+      },
+      InputError);
+  // A side's hull has no seam to link.
+  MeshImportOptions side;
+  side.cell_size = 0.5;
+  auto one_side =
+      nlohmann::json::parse(to_hull_json(project_mesh(box(0, 20, -2, 2, 0, 3), side, "box").hull));
+  one_side["seam"] = true;
+  try {
+    parse_hull_json(one_side.dump(), "side.json");
+    ADD_FAILURE() << "accepted a seam on one side's hull";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "side.json: seam: is only for an unrolled hull (side both)");
+  }
 }
 
 TEST(MeshUnroll, WigleyHullKeepsItsAnalyticSurfaceArea) {

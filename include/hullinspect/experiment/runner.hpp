@@ -13,10 +13,10 @@
 namespace hullinspect::experiment {
 
 struct Progress {
-  int total = 0;         ///< runs of this shard
-  int done = 0;          ///< finished, including those found when resuming
-  int resumed = 0;       ///< found finished when the runner started
-  double elapsed = 0;    ///< seconds since this invocation started running missions
+  int total = 0;       ///< runs of this shard
+  int done = 0;        ///< finished, including those found when resuming
+  int resumed = 0;     ///< found finished when the runner started
+  double elapsed = 0;  ///< seconds since this invocation started running missions
 };
 
 /// The most worker threads an experiment may ask for.
@@ -31,6 +31,10 @@ struct RunnerOptions {
   std::function<void(const Progress&)> on_progress;
   /// Notices (repairs made when resuming), serialised.
   std::function<void(const std::string&)> on_note;
+  /// True once the caller has stopped the experiment (Ctrl-C in Python's run_experiment): the
+  /// first error is then rethrown as it is and the manifest stays `running`, as a command killed
+  /// by the signal leaves it.
+  std::function<bool()> interrupted;
 };
 
 struct RunnerSummary {

@@ -41,8 +41,9 @@ std::string summary_csv(const std::vector<SummaryRow>& rows);
 
 /// Markdown: per scenario, a T_c table and a T_m table with one row per (s2, n) and one column per
 /// algorithm; per sweep the same with one row per (swept value, s2, n) ("mean ± std", "[k
-/// incomplete]" when some missions did not complete). Columns are padded so the text also reads
-/// well in a terminal.
+/// incomplete]" when some missions did not complete), and, where runs.csv has the lower bound, a
+/// "lower bound" column and each mean's ratio to it ("(×r)"). Columns are padded so the text also
+/// reads well in a terminal.
 std::string summary_markdown(const std::vector<SummaryRow>& rows);
 
 }  // namespace hullinspect::experiment

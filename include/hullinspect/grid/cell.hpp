@@ -27,6 +27,9 @@ constexpr int chebyshev(Cell a, Cell b) {
   return dx > dy ? dx : dy;
 }
 
+/// A cell that is none: returned when no answer exists.
+inline constexpr Cell kNoCell{-1, -1};
+
 /// The four neighbour offsets in a fixed order: east, west, north (up), south (down).
 inline constexpr int kNeighbourDx[4] = {1, -1, 0, 0};
 inline constexpr int kNeighbourDy[4] = {0, 0, 1, -1};

@@ -25,9 +25,6 @@
 
 namespace hullinspect::grid {
 
-/// A cell that is none: returned when no answer exists.
-inline constexpr Cell kNoCell{-1, -1};
-
 class DistanceService {
  public:
   /// How many single-source fields are kept (least recently used is replaced).

@@ -59,6 +59,9 @@ class ShipFrame {
   /// coordinate is not finite or lies beyond ±world::kMaxShipFrameM (a cell size, θ or origin
   /// that no export can represent), so no writer ever sees such a number.
   ShipPose pose(grid::Cell cell, int z) const;
+  /// The hull's surface at the centre of `cell` (no stand-off): x, y, z in metres. The cell must
+  /// lie on the grid (unrolled: throws InputError(spec.source) when it does not).
+  std::array<double, 3> surface_point(grid::Cell cell) const;
   /// ζ_z in metres.
   double standoff_m(int z) const;
   /// depth(x, y) in metres (0 without a mesh).

@@ -21,7 +21,8 @@ inline constexpr int kLayerKeyframeInterval = 128;
 
 class TraceRecorder final : public planners::MissionObserver, private planners::AnnotationSink {
  public:
-  /// `parameters` is copied into the trace as given (algorithm, options, seed, instance parameters).
+  /// `parameters` is copied into the trace as given (algorithm, options, seed, instance
+  /// parameters).
   TraceRecorder(const world::Instance& instance, nlohmann::json parameters);
 
   void on_start(const sim::Simulator& sim, const planners::Planner& planner) override;
@@ -31,7 +32,8 @@ class TraceRecorder final : public planners::MissionObserver, private planners::
   nlohmann::json finish(const sim::MissionResult& result) const;
 
  private:
-  void uav(int k, std::string_view mode, grid::Cell target, std::span<const grid::Cell> plan) override;
+  void uav(int k, std::string_view mode, grid::Cell target,
+           std::span<const grid::Cell> plan) override;
   void cells(std::string_view layer, std::span<const int> indices) override;
   nlohmann::json frame(const sim::Simulator& sim, const planners::Planner& planner);
 
@@ -50,6 +52,7 @@ class TraceRecorder final : public planners::MissionObserver, private planners::
   nlohmann::json pending_uavs_;
   nlohmann::json pending_layers_;
   int frame_index_ = 0;
+  bool physical_ = false;  // launch sites: the frames carry kPhysicalUavFields
 };
 
 }  // namespace hullinspect::io

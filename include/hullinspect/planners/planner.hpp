@@ -89,6 +89,12 @@ class Planner {
   virtual void start(const PlannerContext& context) = 0;
   /// The main hook: fills one action per UAV from the view at time t.
   virtual void decide(const sim::PlannerView& view, std::span<sim::Action> actions) = 0;
+  /// UAVs the planner sends home for a battery swap before this step's decision (docs/model.md,
+  /// "Batteries and sorties"), appended to `uavs`: only working UAVs airborne on the hull, and
+  /// only when view.returns.limited(). Called before decide(); the sortie layer then sends home,
+  /// as its safety net, any other UAV whose battery is at ReturnRule::battery_needed. The
+  /// default plans none: the layer alone decides.
+  virtual void returns(const sim::PlannerView& /*view*/, std::vector<int>& /*uavs*/) {}
   /// True only for oracle planners (name "oracle-…"): run_mission then hands them the truth C.
   virtual bool sees_truth() const { return false; }
   /// True when every UAV that has not failed will only hover from now on, whatever it senses: the

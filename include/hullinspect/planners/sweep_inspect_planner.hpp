@@ -46,6 +46,9 @@ struct SweepInspectOptions {
   /// "columns" (s2 columns, flown up and down the hull's height) or "auto" (per region and
   /// re-plan, the shorter flight; the band partition's z = 2 sweeps fly its columns).
   std::string strips = "auto";
+  /// With batteries, a sweeping UAV ends its sortie where that is cheapest along its sweep
+  /// (sweep_returns.hpp) instead of where the sortie layer would send it home.
+  bool planned_returns = true;
 };
 
 class SweepInspectPlanner final : public Planner {
@@ -53,6 +56,7 @@ class SweepInspectPlanner final : public Planner {
   explicit SweepInspectPlanner(SweepInspectOptions options) : options_(std::move(options)) {}
   void start(const PlannerContext& context) override;
   void decide(const sim::PlannerView& view, std::span<sim::Action> actions) override;
+  void returns(const sim::PlannerView& view, std::vector<int>& uavs) override;
   bool idle(const sim::PlannerView& view) const override;
   const partition::Partition* partition() const override { return partition_.get(); }
   void annotate(AnnotationSink& sink) const override;
@@ -297,7 +301,8 @@ class SweepInspectPlanner final : public Planner {
   PriorTourSplitter tours_;              // the prior tours' estimates and splits
   std::vector<grid::Cell> tour_points_;  // scratch of next_of_tour
   std::vector<int> split_cells_;
-  std::vector<int> tail_walk_;  // scratch of split_sweep_tail: walk lengths along a sweep
+  std::vector<grid::Cell> return_route_;  // scratch of returns(): a UAV's route ahead
+  std::vector<int> tail_walk_;            // scratch of split_sweep_tail: walk lengths along a sweep
   // Scratch of inspection_viewpoint: work cells per position of the window around the inspection,
   // and their 2D prefix sums (one more row and column).
   std::vector<int> view_work_;

@@ -25,7 +25,7 @@ class WaypointFollower {
     while (next_ < waypoints_.size() && waypoints_[next_] == pos) ++next_;
     if (next_ >= waypoints_.size()) return sim::Action::kHover;
     if (distances_ == nullptr) return sim::step_towards(pos, waypoints_[next_]);
-    return sim::step_towards(pos, distances_->next_step(pos, waypoints_[next_]));
+    return sim::move_to_neighbour(pos, distances_->next_step(pos, waypoints_[next_]));
   }
   /// Drops the next `count` waypoints not yet reached.
   void skip(std::size_t count) { next_ = std::min(waypoints_.size(), next_ + count); }

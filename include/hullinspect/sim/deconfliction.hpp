@@ -16,9 +16,10 @@ namespace hullinspect::sim {
 class Deconfliction {
  public:
   /// `no_fly` (may be null) is the mission's no-fly mask of a width × height grid; side-steps never
-  /// enter it. D >= 1.
+  /// enter it. `flights` (may be null) are the mission's neighbour flights, whose seam a move may
+  /// cross. D >= 1.
   Deconfliction(int separation, int uavs, int width, int height,
-                const grid::Grid<std::uint8_t>* no_fly);
+                const grid::Grid<std::uint8_t>* no_fly, const grid::EdgeSteps* flights = nullptr);
 
   /// Rewrites `actions` (one per UAV, as the planner gave them) so that, if the UAVs are pairwise
   /// at least D apart now, they still are after the step and no two exchange cells. Allocates
@@ -39,6 +40,7 @@ class Deconfliction {
   int width_;
   int height_;
   const grid::Grid<std::uint8_t>* no_fly_;
+  const grid::EdgeSteps* flights_;
   int patience_;  // steps a UAV waits before it takes precedence
 
   std::span<const UavState> uavs_;

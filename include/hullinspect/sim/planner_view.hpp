@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hullinspect/grid/grid.hpp"
+#include "hullinspect/sim/return_rule.hpp"
 #include "hullinspect/sim/types.hpp"
 
 namespace hullinspect::sim {
@@ -29,9 +30,13 @@ class SensingLog {
 struct PlannerView {
   int time = 0;
   std::span<const UavState> uavs;
-  const grid::Grid<std::int8_t>& map;   ///< M (eq. 2), shared knowledge of the fleet
-  const grid::Grid<std::uint8_t>& seen; ///< kSeenAtZ2 | kSeenAtZ1 per cell
-  const SensingLog& sensed;             ///< this step's readings, per UAV
+  const grid::Grid<std::int8_t>& map;    ///< M (eq. 2), shared knowledge of the fleet
+  const grid::Grid<std::uint8_t>& seen;  ///< kSeenAtZ2 | kSeenAtZ1 per cell
+  const SensingLog& sensed;              ///< this step's readings, per UAV
+  /// When the sortie layer sends a UAV home (each UAV's battery left is UavState::battery_left):
+  /// read by planners that plan their own returns (Planner::returns). Not limited() in the
+  /// paper's model.
+  ReturnRule returns{};
 };
 
 }  // namespace hullinspect::sim

@@ -10,6 +10,7 @@
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/sim/mission_result.hpp"
 #include "hullinspect/sim/planner_view.hpp"
+#include "hullinspect/sim/return_rule.hpp"
 #include "hullinspect/sim/types.hpp"
 #include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/hull.hpp"
@@ -75,7 +76,9 @@ class Simulator {
   bool no_fly(grid::Cell c) const { return params_.no_fly && (*params_.no_fly)[c] != 0; }
 
   /// What the UAVs know — the only thing planners see.
-  PlannerView view() const { return {time_, uavs_, map_, seen_, log_}; }
+  PlannerView view() const { return {time_, uavs_, map_, seen_, log_, return_rule()}; }
+  /// When the sortie layer sends a UAV home (not limited() without a battery or launch sites).
+  ReturnRule return_rule() const { return {legs_, battery_, world::sortie_margin_steps(params_)}; }
   std::span<const UavState> uavs() const { return uavs_; }
   const grid::Grid<std::int8_t>& map() const { return map_; }
   /// Flat indices of the cells whose M changed in the last step (or at t = 0).

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "hullinspect/grid/cell.hpp"
+#include "hullinspect/grid/flight_steps.hpp"
 
 namespace hullinspect::sim {
 
@@ -36,6 +37,13 @@ std::string_view to_string(Action a);
 Action step_towards(grid::Cell from, grid::Cell to);
 /// `c` moved by `a` (unchanged for hover and plane change).
 grid::Cell moved(grid::Cell c, Action a);
+/// `c` moved by `a` on a width × height grid with the neighbour flights `steps`: across a linked
+/// seam (grid::neighbour) west of column 0 is column W − 1 and east of W − 1 is column 0. A move
+/// off the grid elsewhere is returned off the grid, for the caller to refuse.
+grid::Cell moved(grid::Cell c, Action a, int width, int height, const grid::EdgeSteps& steps);
+/// The move from `from` to `next`, one of its 4-neighbours on the grid (grid::neighbour): across
+/// the seam, towards the column at the other end of the row; otherwise step_towards(from, next).
+Action move_to_neighbour(grid::Cell from, grid::Cell next);
 
 struct UavState {
   grid::Cell pos;

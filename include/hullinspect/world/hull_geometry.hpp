@@ -77,6 +77,10 @@ struct HullGeometry {
   /// (negative: port is left of the bow, starboard right), depth is 0 (the grid lies on the
   /// surface) and side_plane_y is the centre plane the columns are measured from.
   grid::Grid<Point3> surface;
+  /// Unrolled hulls only: the grid closes on itself around the stern (the transom unrolled), so
+  /// every row's first and last columns are neighbours across the seam, linked by a flight at
+  /// stand-off (docs/hulls.md "Neighbours"). The hull file's optional `seam` (absent: false).
+  bool seam = false;
 
   bool unrolled() const { return side == HullSide::both; }
 

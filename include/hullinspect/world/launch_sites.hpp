@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hullinspect/grid/cell.hpp"
+#include "hullinspect/grid/flight_steps.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/mission_params.hpp"
@@ -36,21 +37,32 @@ struct LaunchLegs {
   int transfer_steps = 0;     ///< the quay or deck beyond the grid, each way
   int plane_change_steps = 1;
   std::vector<grid::Grid<int>> flight_home;  ///< per site: flight steps from each position to it
+  /// The neighbour flights of plane 2, where the legs are flown (empty: one step each).
+  grid::EdgeSteps flights;
 
   bool empty() const { return sites.empty(); }
   /// Steps from `u`'s position and plane until it has landed at its site and been carried off the
   /// grid: climb to plane 2 (finishing a plane change first), fly home, descend, transfer.
   int homeward_steps(int uav, grid::Cell pos, int z, int transit_left) const;
   /// The positions of `uav`'s shortest flight from `from` to its site, one per step (`from`
-  /// excluded, the site included; neighbours tried west, east, south, north).
+  /// excluded, the site included; neighbours tried west, east, south, north). A neighbour flight
+  /// of k steps is its position k times: the UAV is there at once and in transit for the rest, as
+  /// on the hull (docs/model.md "Neighbour flights").
   std::vector<grid::Cell> path_home(int uav, grid::Cell from) const;
 };
 
 /// Assigns each UAV the launch site nearest in flight to its start cell (ties: the site given
 /// first) and times its outbound leg: transfer, take-off, the flight to its start cell on plane 2,
-/// and the descent when the mission starts on plane 1. Throws ParameterError naming "launch" when
-/// a site cannot reach the hull in flight (no-fly zones cut it off).
+/// and the descent when the mission starts on plane 1. Flights between neighbours take their
+/// steps in `flights` (plane 2's of world::neighbour_flights: an unrolled hull's stand-off
+/// lengths; empty: one step each). Throws ParameterError naming "launch" when a site cannot reach
+/// the hull in flight (no-fly zones cut it off).
 LaunchLegs plan_launch_legs(const MissionParams& params, const Reachability& reach,
-                            std::span<const grid::Cell> starts);
+                            std::span<const grid::Cell> starts,
+                            const grid::EdgeSteps& flights = {});
+/// plan_launch_legs with the flights of `hull`'s plane 2 (world::neighbour_flights): what the
+/// simulator flies, for the lower bound and the battery checks.
+LaunchLegs plan_launch_legs(const MissionParams& params, const HullMask& hull,
+                            const Reachability& reach, std::span<const grid::Cell> starts);
 
 }  // namespace hullinspect::world
