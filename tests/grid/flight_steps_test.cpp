@@ -169,7 +169,10 @@ TEST(FlightSteps, DistancesToAFewTargetsEqualTheFieldsWithoutCachingOne) {
     const int w = 5 + rng.below(20), h = 3 + rng.below(12);
     Grid<std::uint8_t> allowed(w, h, 1);
     EdgeSteps steps;
-    if (seed % 4 != 0) steps = {Grid<std::uint8_t>(w, h, 1), Grid<std::uint8_t>(w, h, 1)};
+    if (seed % 4 != 0) {
+      steps.east = Grid<std::uint8_t>(w, h, 1);
+      steps.north = Grid<std::uint8_t>(w, h, 1);
+    }
     for (int i = 0; i < allowed.size(); ++i) {
       if (seed % 2 == 0 && rng.below(100) < 20) allowed[i] = 0;
       if (!steps.empty() && rng.below(4) == 0) {
