@@ -4,6 +4,7 @@ namespace hullinspect::planners {
 
 void IndexedCellSet::reset(int width, int height) {
   width_ = width;
+  height_ = height;
   const auto cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   slot_.assign(cells, -1);
   indices_.clear();

@@ -17,8 +17,9 @@ bool FrontierSet::is_frontier(const grid::Grid<std::int8_t>& map, int index) {
 
 void FrontierSet::reset(const grid::Grid<std::int8_t>& map) {
   set_.reset(map.width(), map.height());
+  joined_.clear();
   for (int i = 0; i < map.size(); ++i) {
-    if (is_frontier(map, i)) set_.insert(i);
+    if (is_frontier(map, i)) insert(i);
   }
 }
 
@@ -29,8 +30,19 @@ void FrontierSet::on_known(int index, const grid::Grid<std::int8_t>& map) {
     const int x = c.x + grid::kNeighbourDx[d];
     const int y = c.y + grid::kNeighbourDy[d];
     // An unknown neighbour is a hull cell (non-hull cells are −1) and now touches a known cell.
-    if (map.contains(x, y) && map(x, y) == sim::kUnknown) set_.insert(map.index(x, y));
+    if (map.contains(x, y) && map(x, y) == sim::kUnknown) insert(map.index(x, y));
   }
+}
+
+void FrontierSet::insert(int index) {
+  if (set_.contains(index)) return;
+  set_.insert(index);
+  joined_.push_back(index);
+}
+
+void FrontierSet::take_joined(std::vector<int>& out) {
+  out.clear();
+  out.swap(joined_);
 }
 
 }  // namespace hullinspect::planners

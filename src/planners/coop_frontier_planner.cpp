@@ -1,10 +1,18 @@
 #include "hullinspect/planners/coop_frontier_planner.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "hullinspect/planners/coop_frontier_utilities.hpp"
 
 namespace hullinspect::planners {
 
 using sim::Action;
+
+namespace {
+/// Levels of the d_HP floor: farther than this, a frontier's prior term is below α / 64.
+constexpr int kFloorLevels = 64;
+}  // namespace
 
 void CoopFrontierPlanner::start(const PlannerContext& context) {
   const auto& prior = context.prior;
@@ -34,6 +42,7 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   known_.assign(static_cast<std::size_t>(prior.size()), 0);
   prior_field_.reset(w, h, distances_);
   detected_field_.reset(w, h, distances_);
+  prior_floor_.reset(prior.size(), kFloorLevels);
   corrosion_left_.reset(w, h);
   for (int i = 0; i < prior.size(); ++i) {
     if (prior[i] < 0) {
@@ -56,8 +65,8 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   assigner_.configure(options_.beta, context.params.s2, w + h);
   assigner_.set_distances(distances_);
   assigner_.reserve(prior.size(), n);
-  utility_.clear();
-  utility_.reserve(static_cast<std::size_t>(prior.size()));
+  joined_.clear();
+  joined_.reserve(static_cast<std::size_t>(prior.size()));
   held_.clear();
   held_.reserve(static_cast<std::size_t>(n));
   needing_pos_.clear();
@@ -154,23 +163,26 @@ std::optional<grid::Cell> CoopFrontierPlanner::claim_nearest_free(int uav, grid:
   return best;
 }
 
+int CoopFrontierPlanner::prior_floor() {
+  frontiers_.take_joined(joined_);
+  for (const int i : joined_) prior_floor_.add(i);
+  if (prior_field_.empty()) return grid::kUnreachable;  // the term is 0 for every frontier
+  return prior_floor_.lowest([&](int i) { return frontiers_.contains(i); },
+                             [&](int i) { return prior_field_.distance(i); });
+}
+
 void CoopFrontierPlanner::assign_frontiers() {
   // A term with zero weight needs no field (α = 1, the tuned default, never reads d_C).
   const bool use_prior = options_.alpha > 0.0;
   const bool use_detected = options_.alpha < 1.0;
   if (use_prior) prior_field_.refresh();
   if (use_detected) detected_field_.refresh();
-  const auto indices = frontiers_.indices();
-  utility_.resize(indices.size());
-  for (std::size_t j = 0; j < indices.size(); ++j) {
-    const int i = indices[j];
-    utility_[j] =
-        options_.base_utility +
-        frontier_utility(options_.alpha, use_prior ? prior_field_.distance(i) : grid::kUnreachable,
-                         use_detected ? detected_field_.distance(i) : grid::kUnreachable);
-  }
+  const FieldUtilities utilities(
+      options_.alpha, options_.base_utility, frontiers_.indices(), width_,
+      use_prior ? &prior_field_ : nullptr, use_detected ? &detected_field_ : nullptr,
+      use_prior ? prior_floor() : grid::kUnreachable, !distances_->searched());
   if (flights_.split()) assigner_.set_robot_distances(needing_distances_, half2_);
-  assigner_.assign(frontiers_.cells(), utility_, held_, needing_pos_,
+  assigner_.assign(frontiers_.members(), utilities, held_, needing_pos_,
                    std::span<int>(chosen_).first(needing_pos_.size()));
   const auto cells = frontiers_.cells();
   for (std::size_t r = 0; r < needing_uav_.size(); ++r) {

@@ -25,11 +25,12 @@ void EndCosts::assign(const SegmentTsp& problem) {
   at[static_cast<std::size_t>(2 * g_)] = problem.start;
   for (int a = 0; a < stride_; ++a) {
     if (problem.distances != nullptr && problem.distances->searched()) {
-      // One field per row: distances are symmetric, and the service caches fields per source.
-      const grid::Grid<int>& field = problem.distances->field(at[static_cast<std::size_t>(a)]);
-      for (int b = 0; b < stride_; ++b) {
-        cost_[static_cast<std::size_t>(a * stride_ + b)] = field[at[static_cast<std::size_t>(b)]];
-      }
+      // One search per row, ended at the farthest end: on a large grid the ends lie in a small
+      // part of it, and no field of the service's cache (the UAVs' next steps) is evicted.
+      problem.distances->distances_to(
+          at[static_cast<std::size_t>(a)], at,
+          std::span<int>(cost_).subspan(static_cast<std::size_t>(a * stride_),
+                                        static_cast<std::size_t>(stride_)));
       continue;
     }
     for (int b = 0; b < stride_; ++b) {

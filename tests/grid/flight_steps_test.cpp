@@ -159,6 +159,60 @@ TEST(FlightSteps, ALongFlightIsFlownAroundWhenThatIsShorter) {
   EXPECT_EQ(plain.searches(), 0);
 }
 
+// distances_to() gives the reference distances to a few targets, with and without no-fly
+// positions and long flights, from sources with and without a cached field, runs no whole-grid
+// search of its own and leaves the cache as it was.
+TEST(FlightSteps, DistancesToAFewTargetsEqualTheFieldsWithoutCachingOne) {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    SCOPED_TRACE(seed);
+    Lcg rng{seed};
+    const int w = 5 + rng.below(20), h = 3 + rng.below(12);
+    Grid<std::uint8_t> allowed(w, h, 1);
+    EdgeSteps steps;
+    if (seed % 4 != 0) {
+      steps.east = Grid<std::uint8_t>(w, h, 1);
+      steps.north = Grid<std::uint8_t>(w, h, 1);
+    }
+    for (int i = 0; i < allowed.size(); ++i) {
+      if (seed % 2 == 0 && rng.below(100) < 20) allowed[i] = 0;
+      if (!steps.empty() && rng.below(4) == 0) {
+        steps.east[i] = static_cast<std::uint8_t>(2 + rng.below(6));
+      }
+      if (!steps.empty() && rng.below(4) == 0) {
+        steps.north[i] = static_cast<std::uint8_t>(2 + rng.below(6));
+      }
+    }
+    DistanceService service(allowed, steps);
+    if (!service.searched()) continue;
+    for (int s = 0; s < allowed.size(); s += 3) {
+      const Cell source = allowed.cell(s);
+      const Grid<int> expected = relaxed(allowed, steps, source);
+      std::vector<Cell> targets;
+      for (int t = 0, count = 1 + rng.below(6); t < count; ++t) {
+        targets.push_back(allowed.cell(rng.below(allowed.size())));
+      }
+      targets.push_back(targets.front());  // a target twice
+      std::vector<int> got(targets.size(), -1);
+      const long long searches = service.searches();
+      service.distances_to(source, targets, got);
+      EXPECT_EQ(service.searches(), searches);
+      for (std::size_t t = 0; t < targets.size(); ++t) {
+        EXPECT_EQ(got[t], expected[targets[t]])
+            << "from (" << source.x << ", " << source.y << ") to (" << targets[t].x << ", "
+            << targets[t].y << ")";
+      }
+    }
+    // From a source whose field is cached, the field is read.
+    const Cell source = allowed.cell(0);
+    const Grid<int> field = service.field(source);
+    const std::vector<Cell> targets{allowed.cell(allowed.size() - 1), allowed.cell(w)};
+    std::vector<int> got(2);
+    service.distances_to(source, targets, got);
+    EXPECT_EQ(got[0], field[targets[0]]);
+    EXPECT_EQ(got[1], field[targets[1]]);
+  }
+}
+
 // A ring: four positions in a row around a square of side 1 m, the first and last facing each
 // other across the seam one cell apart at the surface.
 StandoffPoints ring(bool seam) {

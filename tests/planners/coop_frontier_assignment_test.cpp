@@ -3,12 +3,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
 
 #include "hullinspect/grid/distance.hpp"
 #include "hullinspect/planners/coop_frontier_assignment.hpp"
+#include "hullinspect/planners/coop_frontier_fields.hpp"
+#include "hullinspect/planners/coop_frontier_utilities.hpp"
 #include "hullinspect/world/random.hpp"
 
 namespace hullinspect::planners {
@@ -233,6 +236,165 @@ TEST(CoopFrontierAssigner, MatchesTheLiteralGreedyOnRandomInputs) {
     std::vector<int> chosen(robots.size());
     a.configure(beta, s2, w + h);
     a.assign(frontiers, utility, held, robots, chosen);
+    ASSERT_EQ(chosen, reference_assignment(frontiers, utility, held, robots, beta, s2))
+        << "trial " << trial;
+  }
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
+
+namespace hullinspect::planners {
+namespace {
+
+class VectorUtilities final : public FrontierUtilities {
+ public:
+  VectorUtilities(const std::vector<double>& values, double ceiling)
+      : values_(values), ceiling_(ceiling) {}
+  double utility(int position) const override {
+    ++reads;
+    return values_[static_cast<std::size_t>(position)];
+  }
+  double score_ceiling(Cell, int m, double beta) const override {
+    return ceiling_ + beta / std::max(1, m);
+  }
+  mutable int reads = 0;
+
+ private:
+  const std::vector<double>& values_;
+  double ceiling_;
+};
+
+// The ring search over a frontier set gives the pairs of the literal greedy, with a tight ceiling
+// (the largest utility) and with a loose one, on grids where the rings stop early and where they
+// fall back to a scan.
+TEST(CoopFrontierAssigner, RingSearchMatchesTheLiteralGreedy) {
+  world::RandomStream rng(1234, 0);
+  FrontierAssigner a;
+  for (int trial = 0; trial < 600; ++trial) {
+    const int w = 5 + static_cast<int>(rng.below(80));
+    const int h = 3 + static_cast<int>(rng.below(40));
+    const int s2 = trial % 2 == 0 ? 7 : 11;
+    const double beta = trial % 7 == 0 ? 0.0 : 0.5 * static_cast<double>(1 + rng.below(10));
+    IndexedCellSet set;
+    set.reset(w, h);
+    const int wanted = 1 + static_cast<int>(rng.below(trial % 4 == 0 ? 400 : 60));
+    for (int k = 0; k < wanted; ++k) set.insert(static_cast<int>(rng.below(w * h)));
+    const std::vector<grid::Cell> frontiers(set.cells().begin(), set.cells().end());
+    std::vector<double> utility(frontiers.size());
+    double largest = 0;
+    for (double& u : utility) {
+      // Coarse values so equal scores (tie-breaks) occur often.
+      u = trial % 3 == 0 ? 0.5 : 0.5 + 0.25 * static_cast<double>(rng.below(5));
+      largest = std::max(largest, u);
+    }
+    std::vector<grid::Cell> held(rng.below(4));
+    for (auto& c : held) {
+      c = {static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+           static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+    }
+    std::vector<grid::Cell> robots(1 + rng.below(8));
+    for (auto& c : robots) {
+      c = {static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+           static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+    }
+    const std::vector<int> expected =
+        reference_assignment(frontiers, utility, held, robots, beta, s2);
+    a.configure(beta, s2, w + h);
+    const double ceiling = trial % 5 == 0 ? largest + 1.0 : largest;
+    const VectorUtilities utilities(utility, ceiling);
+    std::vector<int> chosen(robots.size());
+    a.assign(set, utilities, held, robots, chosen);
+    ASSERT_EQ(chosen, expected) << "trial " << trial;
+    const std::vector<FrontierAssigner::Pick> ring_picks(a.picks().begin(), a.picks().end());
+    a.assign(frontiers, utility, held, robots, chosen);
+    ASSERT_EQ(ring_picks.size(), a.picks().size()) << "trial " << trial;
+    for (std::size_t p = 0; p < ring_picks.size(); ++p) {
+      EXPECT_EQ(ring_picks[p].score, a.picks()[p].score) << "trial " << trial << " pick " << p;
+    }
+  }
+}
+
+// Near the robot the rings stop long before F is read: one robot beside a frontier, β = 4, on a
+// grid with a long frontier far away reads only the utilities close by.
+TEST(CoopFrontierAssigner, RingSearchReadsOnlyNearbyUtilities) {
+  IndexedCellSet set;
+  set.reset(400, 50);
+  for (int x = 0; x < 400; ++x) set.insert(49 * 400 + x);  // the top row
+  set.insert(10 * 400 + 10);                               // (10, 10)
+  const std::vector<double> utility(static_cast<std::size_t>(set.size()), 0.5);
+  const VectorUtilities utilities(utility, 1.5);
+  FrontierAssigner a;
+  a.configure(4.0, 7, 450);
+  const std::array<Cell, 1> robots{Cell{10, 9}};
+  std::array<int, 1> chosen{};
+  a.assign(set, utilities, {}, robots, chosen);
+  EXPECT_EQ(set.cells()[static_cast<std::size_t>(chosen[0])], (Cell{10, 10}));
+  EXPECT_EQ(utilities.reads, 1);
+  // A loose ceiling only widens the search: same choice, still no scan of the top row.
+  const VectorUtilities loose(utility, 3.0);
+  a.assign(set, loose, {}, robots, chosen);
+  EXPECT_EQ(set.cells()[static_cast<std::size_t>(chosen[0])], (Cell{10, 10}));
+  EXPECT_EQ(loose.reads, 1);
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
+
+namespace hullinspect::planners {
+namespace {
+
+// The planner's utilities (eq. 13 from the d_HP and d_C fields) and their bound — the floor of
+// d_HP over F and the triangle inequality around each robot — give the ring search the pairs of
+// the literal greedy.
+TEST(CoopFrontierAssigner, RingSearchWithTheFieldBoundMatchesTheLiteralGreedy) {
+  world::RandomStream rng(77, 0);
+  FrontierAssigner a;
+  for (int trial = 0; trial < 500; ++trial) {
+    const int w = 5 + static_cast<int>(rng.below(90));
+    const int h = 3 + static_cast<int>(rng.below(40));
+    const int s2 = trial % 2 == 0 ? 7 : 11;
+    const double beta = trial % 9 == 0 ? 0.0 : static_cast<double>(1 + rng.below(8));
+    const double alpha = trial % 4 == 0 ? 0.5 : 1.0;
+    const double base = trial % 3 == 0 ? 0.0 : 0.5;
+    SourceDistanceField prior;
+    SourceDistanceField detected;
+    prior.reset(w, h, nullptr, 0);
+    detected.reset(w, h, nullptr, 0);
+    for (int k = static_cast<int>(rng.below(12)); k > 0; --k) {
+      prior.set(static_cast<int>(rng.below(static_cast<std::uint64_t>(w * h))), true);
+    }
+    for (int k = static_cast<int>(rng.below(4)); k > 0; --k) {
+      detected.set(static_cast<int>(rng.below(static_cast<std::uint64_t>(w * h))), true);
+    }
+    IndexedCellSet set;
+    set.reset(w, h);
+    for (int k = 1 + static_cast<int>(rng.below(trial % 4 == 1 ? 500 : 80)); k > 0; --k) {
+      set.insert(static_cast<int>(rng.below(static_cast<std::uint64_t>(w * h))));
+    }
+    int floor = prior.empty() ? grid::kUnreachable : 63;
+    for (const int i : set.indices()) floor = std::min(floor, prior.distance(i));
+    if (floor > 0 && floor < grid::kUnreachable && trial % 5 == 0) floor -= 1;  // a loose floor
+    const FieldUtilities utilities(alpha, base, set.indices(), w, &prior,
+                                   alpha < 1.0 ? &detected : nullptr, floor, true);
+    const std::vector<grid::Cell> frontiers(set.cells().begin(), set.cells().end());
+    std::vector<double> utility(frontiers.size());
+    for (std::size_t j = 0; j < utility.size(); ++j) {
+      utility[j] = utilities.utility(static_cast<int>(j));
+    }
+    std::vector<grid::Cell> held(rng.below(4));
+    for (auto& c : held) {
+      c = {static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+           static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+    }
+    std::vector<grid::Cell> robots(1 + rng.below(8));
+    for (auto& c : robots) {
+      c = {static_cast<int>(rng.below(static_cast<std::uint64_t>(w))),
+           static_cast<int>(rng.below(static_cast<std::uint64_t>(h)))};
+    }
+    a.configure(beta, s2, w + h);
+    std::vector<int> chosen(robots.size());
+    a.assign(set, utilities, held, robots, chosen);
     ASSERT_EQ(chosen, reference_assignment(frontiers, utility, held, robots, beta, s2))
         << "trial " << trial;
   }

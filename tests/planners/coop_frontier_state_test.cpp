@@ -1,6 +1,6 @@
 // The incremental state behind Coop-Frontier: the Manhattan distance transform against brute force,
-// the lazily refreshed source fields, the indexed cell set and the frontier set against its
-// definition.
+// the lazily refreshed source fields, the floor of d_HP over a changing set, the indexed cell set
+// and the frontier set against its definition.
 
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 #include "hullinspect/grid/distance.hpp"
 #include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/planners/coop_frontier_cell_set.hpp"
+#include "hullinspect/planners/coop_frontier_distance_floor.hpp"
 #include "hullinspect/planners/coop_frontier_fields.hpp"
 #include "hullinspect/planners/coop_frontier_frontiers.hpp"
 #include "hullinspect/sim/types.hpp"
@@ -201,6 +202,53 @@ TEST(FrontierSet, IncrementalUpdatesMatchTheDefinition) {
       for (int i : got) ASSERT_TRUE(f.contains(i));
     }
     EXPECT_TRUE(f.empty());
+  }
+}
+
+}  // namespace
+}  // namespace hullinspect::planners
+
+namespace hullinspect::planners {
+namespace {
+
+// The floor equals the least (capped) current distance over the members whenever distances only
+// grow, through joins, departures and growth, whatever was read before.
+TEST(DistanceFloor, EqualsTheLeastCurrentDistanceOfTheMembers) {
+  world::RandomStream rng(5, 0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int cells = 1 + static_cast<int>(rng.below(300));
+    const int levels = 2 + static_cast<int>(rng.below(20));
+    std::vector<int> distance(static_cast<std::size_t>(cells));
+    for (int& d : distance) d = static_cast<int>(rng.below(10));
+    std::vector<unsigned char> member(static_cast<std::size_t>(cells), 0);
+    std::vector<unsigned char> ever(static_cast<std::size_t>(cells), 0);
+    DistanceFloor floor;
+    floor.reset(cells, levels);
+    for (int step = 0; step < 80; ++step) {
+      for (int c = static_cast<int>(rng.below(6)); c > 0; --c) {  // joins: each cell once
+        const int i = static_cast<int>(rng.below(static_cast<std::uint64_t>(cells)));
+        if (ever[static_cast<std::size_t>(i)]) continue;
+        ever[static_cast<std::size_t>(i)] = member[static_cast<std::size_t>(i)] = 1;
+        floor.add(i);
+      }
+      for (int c = static_cast<int>(rng.below(3)); c > 0; --c) {  // departures
+        member[rng.below(static_cast<std::uint64_t>(cells))] = 0;
+      }
+      for (int c = static_cast<int>(rng.below(20)); c > 0; --c) {  // distances grow
+        int& d = distance[rng.below(static_cast<std::uint64_t>(cells))];
+        if (d == grid::kUnreachable) continue;
+        d = rng.below(4) == 0 ? grid::kUnreachable : d + 1 + static_cast<int>(rng.below(3));
+      }
+      int expected = levels - 1;
+      for (int i = 0; i < cells; ++i) {
+        if (member[static_cast<std::size_t>(i)]) {
+          expected = std::min(expected, distance[static_cast<std::size_t>(i)]);
+        }
+      }
+      const int got = floor.lowest([&](int i) { return member[static_cast<std::size_t>(i)] != 0; },
+                                   [&](int i) { return distance[static_cast<std::size_t>(i)]; });
+      ASSERT_EQ(got, expected) << "trial " << trial << " step " << step;
+    }
   }
 }
 

@@ -78,6 +78,12 @@ class DistanceService {
   /// appended (or from == to).
   bool append_path(Cell from, Cell to, std::vector<Cell>& out);
 
+  /// distance(source, targets[t]) into out[t] for every t: from `source`'s cached field when it
+  /// has one, else by a search from `source` that stops once every target is settled and caches
+  /// nothing, so its cost follows how far the targets are rather than the grid's size, and it
+  /// evicts no cached field.
+  void distances_to(Cell source, std::span<const Cell> targets, std::span<int> out);
+
   /// Distance from every cell to the nearest cell with sources != 0 (same path rule). O(cells) and
   /// allocation-free once `out` has the grid's size; kUnreachable everywhere without sources.
   void distances_from(const Grid<std::uint8_t>& sources, Grid<int>& out);
@@ -113,6 +119,12 @@ class DistanceService {
   EdgeSteps steps_;
   int longest_flight_ = 1;
   std::vector<std::vector<int>> buckets_;  // search_weighted's queue: distance mod (longest + 1)
+  // distances_to(): distances reached (kUnreachable elsewhere), which cells it set, and per cell
+  // 1 for a target not settled yet, 2 for one settled; all restored before it returns.
+  Grid<int> near_;
+  std::vector<int> touched_;
+  std::vector<std::uint8_t> target_state_;
+  std::vector<int> targets_marked_;
 };
 
 /// Exact Manhattan (4-neighbour, obstacle-free) distance from every cell to the nearest cell with

@@ -7,6 +7,7 @@
 
 #include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/distance_service.hpp"
+#include "hullinspect/planners/coop_frontier_cell_set.hpp"
 
 namespace hullinspect::planners {
 
@@ -18,6 +19,16 @@ double frontier_utility(double alpha, int d_hp, int d_c);
 
 /// P(d) of eq. 17: d / (2·s2) for d < 2·s2, else 1.
 double utility_reduction(double d, int s2);
+
+/// U_f of the frontier at a position of the frontier set, read only for the frontiers an
+/// assignment looks at.
+class FrontierUtilities {
+ public:
+  virtual ~FrontierUtilities() = default;
+  virtual double utility(int position) const = 0;
+  /// ≥ U_f + β / max(1, d) for every frontier at a Manhattan distance d ≥ m from `at`.
+  virtual double score_ceiling(grid::Cell at, int m, double beta) const = 0;
+};
 
 /// The greedy assignment of eqs. 15–17. Reusable: after the first calls it allocates nothing.
 class FrontierAssigner {
@@ -57,16 +68,41 @@ class FrontierAssigner {
   void assign(std::span<const grid::Cell> frontiers, std::span<const double> utility,
               std::span<const grid::Cell> held, std::span<const grid::Cell> robots,
               std::span<int> chosen);
+  /// The same assignment (the same pairs, ties and scores) over the frontier set `frontiers`
+  /// (positions as in its cells()), reading U_f only where needed: a robot's best frontier is
+  /// searched in rings of growing Manhattan distance m around it, and the search stops at the
+  /// ring from which even utilities.score_ceiling(robot, m, β) (≥ any U_f + β / d(r, f) there:
+  /// shortest flights are no shorter than the Manhattan distance) is below the best score found, or
+  /// falls back to a scan of F once the rings have covered more than half as many cells as F
+  /// holds. The cost then follows the frontiers near the robot rather than |F|. Robots with their
+  /// own distance services (set_robot_distances) scan F. reduced_utility() is not filled.
+  void assign(const IndexedCellSet& frontiers, const FrontierUtilities& utilities,
+              std::span<const grid::Cell> held, std::span<const grid::Cell> robots,
+              std::span<int> chosen);
 
   /// The pairs of the last assign() in the order they were chosen.
   std::span<const Pick> picks() const { return picks_; }
-  /// U(f|f_1…f_m) of every frontier after the last assign() (all picks applied).
+  /// U(f|f_1…f_m) of every frontier after the last assign() of utilities given as a span (all
+  /// picks applied).
   std::span<const double> reduced_utility() const { return reduced_; }
 
  private:
-  void reduce_around(std::span<const grid::Cell> frontiers, grid::Cell assigned);
+  /// The greedy rounds over the frontiers of the current call (frontiers_, utilities_, held_).
+  void run(std::span<const grid::Cell> robots, std::span<int> chosen);
+  /// U(f|f_1…f_m) of the frontier at `position` under the picks so far: U_f times P for every
+  /// held target and then every pick, in that order (as if each had been applied to all of F).
+  double reduced(int position);
   /// The best frontier of one robot under the current reduced utilities (ties: lowest (y, x)).
-  Pick best_for(std::span<const grid::Cell> frontiers, int robot, grid::Cell at) const;
+  Pick best_for(int robot, grid::Cell at);
+  /// best_for() by a scan of every frontier.
+  Pick scan(int robot, grid::Cell at, grid::DistanceService* distances,
+            const grid::Grid<int>* field);
+  /// best_for() by rings of growing Manhattan distance around `at` (frontiers given as a set).
+  Pick rings(int robot, grid::Cell at, const grid::Grid<int>* field);
+  /// The score of (robot, frontier at position j, flight distance d) against `best`.
+  void consider(Pick& best, int robot, int j, std::size_t d);
+  /// P(‖a − b‖) of eq. 17 (1 beyond its radius).
+  double reduction(grid::Cell a, grid::Cell b) const;
 
   double beta_ = 1.0;
   int s2_ = 7;
@@ -75,7 +111,17 @@ class FrontierAssigner {
   int robot_half_ = 0;
   std::vector<double> travel_term_;  // β / max(1, d) for d = 0 … max_distance
   std::vector<double> reduction_;    // P(√q) for squared distances q < (2·s2)²
+  // The current call.
+  std::span<const grid::Cell> frontiers_;
+  const IndexedCellSet* set_ = nullptr;  // null: scan
+  const FrontierUtilities* utilities_ = nullptr;
+  std::span<const grid::Cell> held_;
+  // Per frontier position, computed when first read in a call: stamp_ = epoch_, the reduced value
+  // and how many picks it has had.
   std::vector<double> reduced_;
+  std::vector<unsigned> stamp_;
+  std::vector<std::size_t> applied_;
+  unsigned epoch_ = 0;
   std::vector<unsigned char> assigned_;
   std::vector<Pick> picks_;
   std::vector<Pick> best_;  // per robot

@@ -16,6 +16,11 @@ class IndexedCellSet {
   void reset(int width, int height);
 
   bool contains(int index) const { return slot_[static_cast<std::size_t>(index)] >= 0; }
+  /// The member's position in indices() and cells(), or −1 when `index` is not a member.
+  int position(int index) const { return slot_[static_cast<std::size_t>(index)]; }
+  /// The grid the set was reset for.
+  int width() const { return width_; }
+  int height() const { return height_; }
   /// Adds the cell; no-op when present.
   void insert(int index);
   /// Removes the cell (the last one takes its slot); no-op when absent.
@@ -29,6 +34,7 @@ class IndexedCellSet {
 
  private:
   int width_ = 0;
+  int height_ = 0;
   std::vector<int> slot_;  // per cell: position in indices_, or -1
   std::vector<int> indices_;
   std::vector<grid::Cell> cells_;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/planners/coop_frontier_cell_set.hpp"
@@ -25,12 +26,20 @@ class FrontierSet {
   bool empty() const { return set_.empty(); }
   std::span<const int> indices() const { return set_.indices(); }
   std::span<const grid::Cell> cells() const { return set_.cells(); }
+  /// F as a set with positions (for searches around a cell).
+  const IndexedCellSet& members() const { return set_; }
+  /// Cells that joined F since the last take_joined() (or reset(), which lists every member):
+  /// moved into `out`, which is cleared first.
+  void take_joined(std::vector<int>& out);
 
   /// Whether `index` belongs in F according to `map` (the definition, for resets and tests).
   static bool is_frontier(const grid::Grid<std::int8_t>& map, int index);
 
  private:
+  void insert(int index);
+
   IndexedCellSet set_;
+  std::vector<int> joined_;
 };
 
 }  // namespace hullinspect::planners

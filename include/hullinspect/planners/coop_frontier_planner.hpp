@@ -11,6 +11,7 @@
 #include "hullinspect/planners/coop_frontier_assignment.hpp"
 #include "hullinspect/planners/coop_frontier_cell_set.hpp"
 #include "hullinspect/planners/coop_frontier_claims.hpp"
+#include "hullinspect/planners/coop_frontier_distance_floor.hpp"
 #include "hullinspect/planners/coop_frontier_fields.hpp"
 #include "hullinspect/planners/coop_frontier_frontiers.hpp"
 #include "hullinspect/planners/flight_distances.hpp"
@@ -84,6 +85,8 @@ class CoopFrontierPlanner final : public Planner {
   bool claim_detections(int uav, const sim::PlannerView& view);
   std::optional<grid::Cell> claim_nearest_free(int uav, grid::Cell pos);
   void assign_frontiers();
+  /// A lower bound on d_HP over F (grid::kUnreachable when no prior cell is left unseen).
+  int prior_floor();
   void start_end_game(const sim::PlannerView& view, std::span<sim::Action> actions);
 
   CoopFrontierOptions options_;
@@ -106,12 +109,13 @@ class CoopFrontierPlanner final : public Planner {
   FrontierSet frontiers_;               // F
   SourceDistanceField prior_field_;     // prior corrosion not yet seen by any UAV → d_HP
   SourceDistanceField detected_field_;  // detected (seen, M = 2) and not inspected → d_C
+  DistanceFloor prior_floor_;           // a lower bound on d_HP over F
   IndexedCellSet corrosion_left_;       // every cell with M = 2 (end game)
   InspectionClaims claims_;
 
   // Per-step scratch, reserved in start().
   FrontierAssigner assigner_;
-  std::vector<double> utility_;
+  std::vector<int> joined_;  // cells that joined F since the last assignment
   std::vector<grid::Cell> held_;
   std::vector<grid::Cell> needing_pos_;
   std::vector<int> needing_uav_;

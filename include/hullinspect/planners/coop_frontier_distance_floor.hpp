@@ -1,0 +1,60 @@
+#pragma once
+// A lower bound on d_HP over the frontier set F, kept without reading every frontier cell: it
+// bounds the largest frontier utility U_f from above, which lets the assignment stop searching
+// around a UAV once nothing farther away can score higher (coop_frontier_assignment.hpp).
+//
+// d_HP of a cell never decreases during a mission (the prior's cells only leave their set when
+// seen), so a d_HP read earlier is still a lower bound later. Cells are kept in buckets by the
+// last value read for them; the bound reads again only cells of the lowest bucket, moving each up
+// until one is still that near. A cell is read again only when it is in the lowest bucket, so the
+// work follows the changes, not |F| per query.
+
+#include <algorithm>
+#include <vector>
+
+namespace hullinspect::planners {
+
+class DistanceFloor {
+ public:
+  /// No cells, for a grid of `cells` cells; distances at or above `levels − 1` share the top
+  /// bucket (its bound is levels − 1).
+  void reset(int cells, int levels);
+  /// A cell that joined F, not read yet: it sits in bucket 0 until the next lowest().
+  void add(int index);
+
+  /// The largest d such that every cell of F has d_HP ≥ d, capped at levels − 1 (levels − 1 when F
+  /// is empty). `in_set(index)` says whether a cell added earlier is still in F; `distance(index)`
+  /// is its d_HP now (any value ≥ levels − 1, grid::kUnreachable included, means far).
+  template <class InSet, class Distance>
+  int lowest(InSet in_set, Distance distance) {
+    while (low_ < static_cast<int>(buckets_.size())) {
+      std::vector<int>& bucket = buckets_[static_cast<std::size_t>(low_)];
+      while (!bucket.empty()) {
+        const int index = bucket.back();
+        int& level = level_[static_cast<std::size_t>(index)];
+        if (level != low_ || !in_set(index)) {  // moved up already, or left F
+          bucket.pop_back();
+          if (level == low_) level = -1;
+          continue;
+        }
+        const int d = std::min(distance(index), top());
+        if (d <= low_) return low_;
+        bucket.pop_back();
+        level = d;
+        buckets_[static_cast<std::size_t>(d)].push_back(index);
+      }
+      if (low_ == top()) return low_;
+      ++low_;
+    }
+    return 0;
+  }
+
+ private:
+  int top() const { return static_cast<int>(buckets_.size()) - 1; }
+
+  std::vector<std::vector<int>> buckets_;  // [d]: cells whose last read d_HP was d (capped)
+  std::vector<int> level_;                 // per cell: its bucket, or −1 when not kept
+  int low_ = 0;                            // no kept cell sits in a bucket below this one
+};
+
+}  // namespace hullinspect::planners
