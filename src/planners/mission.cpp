@@ -100,7 +100,7 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
                           params.no_fly.get(), &sim.flight_steps().plane[0]);
   }
   std::optional<sim::SortieLayer> sorties;
-  if (sim.battery().limited) sorties.emplace(sim);
+  if (sim.battery().limited) sorties.emplace();
   std::vector<int> planned_returns;
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);

@@ -189,9 +189,8 @@ void Deconfliction::adjust(const Simulator& sim, std::span<Action> actions) {
       desire_air_[uk] = u.airborne ? 1 : 0;
     } else {
       kind_[uk] = Kind::kWorking;
-      desire_[uk] = flights_ == nullptr
-                        ? moved(u.pos, actions[uk])
-                        : moved(u.pos, actions[uk], width_, height_, *flights_);
+      desire_[uk] = flights_ == nullptr ? moved(u.pos, actions[uk])
+                                        : moved(u.pos, actions[uk], width_, height_, *flights_);
       desire_air_[uk] = 1;
     }
     if (kind_[uk] == Kind::kFixed) {

@@ -6,8 +6,6 @@
 
 namespace hullinspect::sim {
 
-SortieLayer::SortieLayer(const Simulator& /*sim*/) {}
-
 void SortieLayer::before_step(Simulator& sim, std::span<const int> planned) {
   const ReturnRule rule = sim.return_rule();
   if (!rule.limited()) {

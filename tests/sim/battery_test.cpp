@@ -107,7 +107,7 @@ TEST(Battery, ASortieReturnLandsSwapsAndFliesBackToWhereItLeftOff) {
 TEST(Battery, TheSortieLayerSendsHomeTheUavsAPlannerSendsHome) {
   Strip w;
   Simulator sim(w.hull, w.instance, w.params);
-  SortieLayer layer(sim);
+  SortieLayer layer;
   const std::vector<Action> hover = {Action::kHover};
   const std::vector<int> uav0 = {0};
   // On the ground before its first take-off: no UAV there to send home.
@@ -142,7 +142,7 @@ TEST(Battery, TheReturnRuleIsTheFlightHomeTheReserveAndTheMargin) {
 TEST(Battery, TheSortieLayerSendsAUavHomeWithTheReserveLeft) {
   Strip w;
   Simulator sim(w.hull, w.instance, w.params);
-  SortieLayer layer(sim);
+  SortieLayer layer;
   const std::vector<Action> east = {Action::kEast};
   const std::vector<Action> hover = {Action::kHover};
   while (sim.time() < 300) {

@@ -14,9 +14,6 @@ namespace hullinspect::sim {
 
 class SortieLayer {
  public:
-  /// For the mission of `sim` (whose battery is limited and which has launch sites).
-  explicit SortieLayer(const Simulator& sim);
-
   /// Sends home the UAVs `planned` that their planner sends home, then those whose battery has
   /// reached their flight home plus the reserve and the margin. Call before the planner decides
   /// the step. Throws LogicError for a planned UAV that cannot be sent home (failed, on the
