@@ -457,7 +457,7 @@ TEST(ExperimentConfigHull, NamesAreTheCliHullNames) {
   EXPECT_EQ(c.hull->source(), world::default_hull().source());
   EXPECT_EQ(c.hull_cells, world::default_hull().cell_count());
   std::string why;
-  if (!testing::installed_dtc(why)) GTEST_SKIP() << "the DTC is not installed (" << why << ")";
+  if (!hullinspect::testing::installed_dtc(why)) GTEST_SKIP() << "the DTC is not installed (" << why << ")";
   const auto dtc = parse("hull: dtc\n");
   const world::HullMask cli = world::load_hull("dtc");
   EXPECT_EQ(dtc.hull->source(), "dtc");
