@@ -18,6 +18,7 @@ bool FrontierSet::is_frontier(const grid::Grid<std::int8_t>& map, int index) {
 void FrontierSet::reset(const grid::Grid<std::int8_t>& map) {
   set_.reset(map.width(), map.height());
   joined_.clear();
+  joined_.reserve(static_cast<std::size_t>(map.size()));  // the step loop allocates nothing
   for (int i = 0; i < map.size(); ++i) {
     if (is_frontier(map, i)) insert(i);
   }
@@ -41,8 +42,9 @@ void FrontierSet::insert(int index) {
 }
 
 void FrontierSet::take_joined(std::vector<int>& out) {
-  out.clear();
-  out.swap(joined_);
+  // A copy, not a swap: both buffers keep the capacity they were given.
+  out.assign(joined_.begin(), joined_.end());
+  joined_.clear();
 }
 
 }  // namespace hullinspect::planners

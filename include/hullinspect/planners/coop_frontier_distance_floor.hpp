@@ -27,21 +27,14 @@ class DistanceFloor {
   /// is its d_HP now (any value ≥ levels − 1, grid::kUnreachable included, means far).
   template <class InSet, class Distance>
   int lowest(InSet in_set, Distance distance) {
-    while (low_ < static_cast<int>(buckets_.size())) {
-      std::vector<int>& bucket = buckets_[static_cast<std::size_t>(low_)];
-      while (!bucket.empty()) {
-        const int index = bucket.back();
-        int& level = level_[static_cast<std::size_t>(index)];
-        if (level != low_ || !in_set(index)) {  // moved up already, or left F
-          bucket.pop_back();
-          if (level == low_) level = -1;
-          continue;
-        }
+    while (low_ <= top()) {
+      while (head_[static_cast<std::size_t>(low_)] >= 0) {
+        const int index = head_[static_cast<std::size_t>(low_)];
+        unlink(index);
+        if (!in_set(index)) continue;  // left F
         const int d = std::min(distance(index), top());
+        link(index, std::max(d, low_));
         if (d <= low_) return low_;
-        bucket.pop_back();
-        level = d;
-        buckets_[static_cast<std::size_t>(d)].push_back(index);
       }
       if (low_ == top()) return low_;
       ++low_;
@@ -50,11 +43,17 @@ class DistanceFloor {
   }
 
  private:
-  int top() const { return static_cast<int>(buckets_.size()) - 1; }
+  int top() const { return static_cast<int>(head_.size()) - 1; }
+  // Buckets are intrusive doubly linked lists over the cells, so that keeping them allocates
+  // nothing once reset (the planner's step loop allocates nothing).
+  void link(int index, int level);
+  void unlink(int index);
 
-  std::vector<std::vector<int>> buckets_;  // [d]: cells whose last read d_HP was d (capped)
-  std::vector<int> level_;                 // per cell: its bucket, or −1 when not kept
-  int low_ = 0;                            // no kept cell sits in a bucket below this one
+  std::vector<int> head_;   // [d]: the first cell whose last read d_HP was d (capped), or −1
+  std::vector<int> next_;   // per cell: the next cell of its bucket, or −1
+  std::vector<int> prev_;   // per cell: the previous cell of its bucket, or −1
+  std::vector<int> level_;  // per cell: its bucket, or −1 when not kept
+  int low_ = 0;             // no kept cell sits in a bucket below this one
 };
 
 }  // namespace hullinspect::planners
