@@ -28,7 +28,8 @@ int check_trace(const std::string& path) {
   if (r.contains("sorties"))
     summary += fmt::format(", {}", plural(r["sorties"].get<long long>(), "sortie"));
   if (r.contains("battery_crashes")) summary += ", no battery crash";
-  if (r.contains("separation_conflicts")) {
+  // Versions before 3 count conflicts without recording the D they were counted at.
+  if (r.contains("separation_conflicts") && trace.contains("separation")) {
     summary += fmt::format(", no two UAVs closer than {}",
                            plural(trace["separation"].get<long long>(), "cell"));
   }

@@ -102,6 +102,7 @@ std::vector<Sortie> cut_sorties(const ExportPlan& plan, const std::vector<grid::
   const auto& states = plan.states[k];
   const auto same = [&plan](grid::Cell a, grid::Cell b) { return plan.frame.same_surface(a, b); };
   std::vector<Sortie> out;
+  if (states.empty()) return out;  // a UAV with no recorded state flew no sortie
   for (std::size_t n = 0; n < flown.size(); ++n) {
     const auto& f = flown[n];
     if (f.site < 0 || static_cast<std::size_t>(f.site) >= sites.size()) {

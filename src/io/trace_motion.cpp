@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "hullinspect/core/plural.hpp"
 #include "hullinspect/io/trace_reader.hpp"
@@ -146,7 +147,7 @@ TraceMission trace_mission(const TraceChecker& check, const json& trace, int ver
     read_battery(check, *battery, m);
   }
   if (auto d = trace.find("separation"); d != trace.end()) {
-    m.separation = static_cast<int>(check.integer(*d, "separation", 1, std::max(width, height)));
+    m.separation = static_cast<int>(check.integer(*d, "separation", 1, std::int64_t{1} << 30));
   }
   return m;
 }

@@ -272,9 +272,10 @@ json TraceRecorder::finish(const sim::MissionResult& result) const {
   }
   if (trace_.contains("battery")) r["battery_crashes"] = result.battery_crashes;
   // Only a mission with a separation D measures it (docs/trace-format.md).
-  if (result.min_separation) {
+  // min_separation only once two UAVs have been airborne together.
+  if (trace_.contains("separation")) {
     r["separation_conflicts"] = result.separation_conflicts;
-    r["min_separation"] = *result.min_separation;
+    if (result.min_separation) r["min_separation"] = *result.min_separation;
   }
   t["result"] = std::move(r);
   return t;

@@ -142,7 +142,10 @@ FrontierAssigner::Pick FrontierAssigner::best_for(int robot, grid::Cell at) {
       robot_distances_.empty() ? distances_ : robot_distances_[static_cast<std::size_t>(robot)];
   const grid::Grid<int>* field =
       distances != nullptr && distances->searched() ? &distances->field(at) : nullptr;
-  if (set_ != nullptr && robot_distances_.empty()) return rings(robot, at, field);
+  // The rings' bound takes a flight to be no shorter than the Manhattan distance, which a linked
+  // seam breaks: such a hull is scanned.
+  const bool seam = distances != nullptr && !distances->flight_table().seam.empty();
+  if (set_ != nullptr && robot_distances_.empty() && !seam) return rings(robot, at, field);
   return scan(robot, at, distances, field);
 }
 

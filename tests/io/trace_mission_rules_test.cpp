@@ -122,6 +122,18 @@ TEST(TraceMissionRules, TheRecordedTraceKeepsThemAll) {
   EXPECT_GT(lawnmower_trace()["result"]["sorties"].get<int>(), 2);
 }
 
+// Two UAVs on one site at D = 2 with a time limit before the second takes off: the separation
+// is counted (no conflict) but never measured, and the trace still reads and keeps the rules.
+TEST(TraceMissionRules, NoTwoUavsAirborneTogetherHasNoSmallestSeparation) {
+  auto spec = battery_mission("lawnmower", 2, 2);
+  spec.params.launch_sites.resize(1);
+  spec.params.time_limit = 2;
+  const json trace = testing::recorded_trace(spec, world::default_hull());
+  EXPECT_EQ(trace["result"]["separation_conflicts"], 0);
+  EXPECT_FALSE(trace["result"].contains("min_separation"));
+  EXPECT_TRUE(testing::trace_keeps_the_rules(trace));
+}
+
 TEST(TraceMissionRules, ABatteryBelowZeroWhileAirborne) {
   const json& t = lawnmower_trace();
   const auto i =

@@ -13,8 +13,9 @@ namespace hullinspect::planners {
 namespace {
 
 TEST(SeparationStandoff, PartTspFourUavsAtThreeCompletes) {
-  // Without the lead, UAV 0 (westward along the top row) and UAV 1 (northward up column 57) gave
-  // each other precedence in turn from t = 430 on, forever.
+  // UAV 0 (westward along the top row) and UAV 1 (northward up column 57) must pass each other
+  // in a corner with less than D of room: a precedence that ends at the first move would pass
+  // between them forever.
   const auto& hull = world::default_hull();
   MissionSpec spec;
   spec.algorithm = "part-tsp";

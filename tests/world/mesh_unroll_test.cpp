@@ -92,7 +92,7 @@ TEST(MeshUnroll, TheSeamFieldIsOptionalAndOnlyForAClosedUnrolledHull) {
   MeshImportOptions o = both();
   o.include_transom = true;
   const std::string text = to_hull_json(project_mesh(box(0, 20, -2, 2, 0, 3), o, "box").hull);
-  // A file written before the field existed: not linked.
+  // A hull file without the field: not linked.
   auto doc = nlohmann::json::parse(text);
   doc.erase("seam");
   EXPECT_FALSE(parse_hull_json(doc.dump(), "old.json").geometry()->seam);

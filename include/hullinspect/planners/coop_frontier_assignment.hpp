@@ -75,7 +75,8 @@ class FrontierAssigner {
   /// shortest flights are no shorter than the Manhattan distance) is below the best score found, or
   /// falls back to a scan of F once the rings have covered more than half as many cells as F
   /// holds. The cost then follows the frontiers near the robot rather than |F|. Robots with their
-  /// own distance services (set_robot_distances) scan F. reduced_utility() is not filled.
+  /// own distance services (set_robot_distances), and hulls whose seam is linked (a flight across
+  /// it is shorter than the Manhattan distance), scan F. reduced_utility() is not filled.
   void assign(const IndexedCellSet& frontiers, const FrontierUtilities& utilities,
               std::span<const grid::Cell> held, std::span<const grid::Cell> robots,
               std::span<int> chosen);
