@@ -15,6 +15,10 @@ void SweepInspectPlanner::returns(const sim::PlannerView& view, std::vector<int>
     const Uav& p = uavs_[k];
     if (u.failed || !u.airborne || u.in_transit() || u.battery_left < 0) continue;
     if (p.mode != Mode::kSweep && p.mode != Mode::kReturn) continue;
+    // Most steps are far from a sortie's end: the route is built only near it.
+    if (!near_sortie_end({static_cast<int>(k), u.pos, u.z, u.battery_left, {}}, view.returns)) {
+      continue;
+    }
     return_route_.clear();
     if (p.mode == Mode::kReturn) return_route_.push_back(p.resume);
     const auto ahead = p.sweep.remaining();

@@ -14,12 +14,17 @@ double unused_battery_weight(const SortieRoute& route, const sim::ReturnRule& ru
   return static_cast<double>(round_trip + b.swap) / std::max(1, work);
 }
 
-bool end_sortie_now(const SortieRoute& route, const sim::ReturnRule& rule,
-                    grid::DistanceService& flights) {
+bool near_sortie_end(const SortieRoute& route, const sim::ReturnRule& rule) {
   if (!rule.limited() || route.battery_left < 0) return false;
   const int need_now = rule.battery_needed(route.uav, route.pos, route.z);
+  return route.battery_left - need_now <= rule.battery().endurance / 3;
+}
+
+bool end_sortie_now(const SortieRoute& route, const sim::ReturnRule& rule,
+                    grid::DistanceService& flights) {
+  if (!near_sortie_end(route, rule)) return false;
+  const int need_now = rule.battery_needed(route.uav, route.pos, route.z);
   if (route.battery_left < need_now) return true;  // the layer's point: now
-  if (route.battery_left - need_now > rule.battery().endurance / 3) return false;
   const double weight = unused_battery_weight(route, rule);
   const auto cost = [&](grid::Cell c, int battery) {
     const int need = rule.battery_needed(route.uav, c, route.z);

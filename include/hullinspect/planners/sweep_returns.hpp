@@ -37,4 +37,8 @@ double unused_battery_weight(const SortieRoute& route, const sim::ReturnRule& ru
 bool end_sortie_now(const SortieRoute& route, const sim::ReturnRule& rule,
                     grid::DistanceService& flights);
 
+/// False when end_sortie_now() is false whatever the route: the battery is not limited, or its
+/// unused part exceeds a third of the endurance. Lets a caller skip building the route.
+bool near_sortie_end(const SortieRoute& route, const sim::ReturnRule& rule);
+
 }  // namespace hullinspect::planners
