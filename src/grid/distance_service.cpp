@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "weighted_relax.hpp"
+
 namespace hullinspect::grid {
 
 DistanceService::DistanceService(int width, int height)
@@ -96,8 +98,6 @@ void DistanceService::search(Grid<int>& out, std::size_t seeds) {
 }
 
 void DistanceService::search_weighted(Grid<int>& out, std::size_t seeds) {
-  const int w = width();
-  const int h = height();
   // Every flight takes 1 … longest steps, so the distances waiting to be settled span fewer than
   // longest + 1 values: one bucket per value modulo that.
   const int span = longest_flight_ + 1;
@@ -114,17 +114,7 @@ void DistanceService::search_weighted(Grid<int>& out, std::size_t seeds) {
       if (out[i] != d) continue;  // settled earlier at a shorter distance
       // A cell that is not allowed can end a path but never lies inside one.
       if (allowed_[i] == 0 && d != 0) continue;
-      const Cell here = allowed_.cell(i);
-      for (int n = 0; n < 4; ++n) {
-        const Cell next = neighbour(here, n, w, h, steps_);
-        if (next == kNoCell) continue;
-        const int j = allowed_.index(next);
-        const int reached = d + steps_.between(here, next);
-        if (out[j] <= reached) continue;
-        out[j] = reached;
-        buckets_[static_cast<std::size_t>(reached % span)].push_back(j);
-        ++pending;
-      }
+      pending += detail::relax_flights(i, d, allowed_, steps_, out, buckets_, [](int) {});
     }
     bucket.clear();
   }

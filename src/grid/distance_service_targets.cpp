@@ -3,6 +3,8 @@
 
 #include "hullinspect/grid/distance_service.hpp"
 
+#include "weighted_relax.hpp"
+
 namespace hullinspect::grid {
 
 void DistanceService::distances_to(Cell source, std::span<const Cell> targets, std::span<int> out) {
@@ -32,8 +34,6 @@ void DistanceService::distances_to(Cell source, std::span<const Cell> targets, s
   }
   // The search of search() and search_weighted() (Dial's buckets; one-step flights without a
   // table), ended when the last target is settled: settled distances are final.
-  const int w = width();
-  const int h = height();
   const int span = longest_flight_ + 1;
   buckets_.resize(static_cast<std::size_t>(span));
   for (auto& b : buckets_) b.clear();
@@ -56,18 +56,8 @@ void DistanceService::distances_to(Cell source, std::span<const Cell> targets, s
       }
       // A cell that is not allowed can end a path but never lies inside one.
       if (allowed_[i] == 0 && d != 0) continue;
-      const Cell here = allowed_.cell(i);
-      for (int n = 0; n < 4; ++n) {
-        const Cell next = neighbour(here, n, w, h, steps_);
-        if (next == kNoCell) continue;
-        const int j = allowed_.index(next);
-        const int reached = d + steps_.between(here, next);
-        if (near_[j] <= reached) continue;
-        if (near_[j] == kUnreachable) touched_.push_back(j);
-        near_[j] = reached;
-        buckets_[static_cast<std::size_t>(reached % span)].push_back(j);
-        ++pending;
-      }
+      pending += detail::relax_flights(i, d, allowed_, steps_, near_, buckets_,
+                                       [this](int j) { touched_.push_back(j); });
     }
     bucket.clear();
   }
