@@ -157,7 +157,7 @@ TEST(CoopFrontierAssigner, NoFrontiersLeavesRobotsUnassigned) {
   std::array<int, 2> chosen{5, 5};
   FrontierAssigner a;
   a.configure(1.0, 7, 100);
-  a.assign({}, {}, {}, robots, chosen);
+  a.assign(std::span<const Cell>{}, std::span<const double>{}, {}, robots, chosen);
   EXPECT_EQ(chosen[0], -1);
   EXPECT_EQ(chosen[1], -1);
   EXPECT_TRUE(a.picks().empty());
