@@ -102,6 +102,8 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   std::optional<sim::SortieLayer> sorties;
   if (sim.battery().limited) sorties.emplace();
   std::vector<int> planned_returns;
+  planned_returns.reserve(
+      static_cast<std::size_t>(params.uavs));  // the step loop allocates nothing
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
     if (sorties) {
