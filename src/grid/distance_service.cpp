@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "step_choice.hpp"
 #include "weighted_relax.hpp"
 
 namespace hullinspect::grid {
@@ -122,20 +123,11 @@ void DistanceService::search_weighted(Grid<int>& out, std::size_t seeds) {
 
 Cell DistanceService::next_step(Cell from, Cell to) {
   if (from == to) return from;
-  Cell preferred[6];
-  int count = 0;
-  if (to.x != from.x) preferred[count++] = {from.x + (to.x > from.x ? 1 : -1), from.y};
-  if (to.y != from.y) preferred[count++] = {from.x, from.y + (to.y > from.y ? 1 : -1)};
-  if (!searched()) return preferred[0];
-  for (int d = 0; d < 4; ++d) preferred[count++] = neighbour(from, d, width(), height(), steps_);
-  const Grid<int>& f = cached_field(allowed_.index(to));
-  const int here = f[from];
-  if (here >= kUnreachable) return from;
-  for (int i = 0; i < count; ++i) {
-    const Cell n = preferred[i];
-    if (allowed(n) && f[n] == here - steps_.between(from, n)) return n;
+  if (!searched()) {
+    return to.x != from.x ? Cell{from.x + (to.x > from.x ? 1 : -1), from.y}
+                          : Cell{from.x, from.y + (to.y > from.y ? 1 : -1)};
   }
-  return from;
+  return detail::step_on_field(from, to, allowed_, steps_, cached_field(allowed_.index(to)));
 }
 
 bool DistanceService::append_path(Cell from, Cell to, std::vector<Cell>& out) {

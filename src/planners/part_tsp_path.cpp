@@ -37,7 +37,7 @@ void SegmentPath::advance(grid::Cell pos) {
   while (next_ < waypoints_.size() && waypoints_[next_] == pos) ++next_;
 }
 
-sim::Action SegmentPath::next_action(grid::Cell pos) const {
+sim::Action SegmentPath::next_action(grid::Cell pos) {
   if (finished()) return sim::Action::kHover;
   if (distances_ == nullptr) return sim::step_towards(pos, waypoints_[next_]);
   // Along a segment (towards its exit, an odd waypoint) straight, through any long neighbour
@@ -45,7 +45,7 @@ sim::Action SegmentPath::next_action(grid::Cell pos) const {
   if (distances_->has_long_flights() && next_ % 2 == 1) {
     return sim::step_towards(pos, waypoints_[next_]);
   }
-  return sim::move_to_neighbour(pos, distances_->next_step(pos, waypoints_[next_]));
+  return sim::move_to_neighbour(pos, towards_.next_step(pos, waypoints_[next_]));
 }
 
 }  // namespace hullinspect::planners::part_tsp

@@ -252,7 +252,11 @@ void PartTspPlanner::make_plan(int k, grid::Cell pos, int z) {
   if (segments_.size() == 1) {
     // One segment: the optimal open path enters at the nearer end (the left one on a tie).
     const auto& [left, right] = ends_.front();
-    order_.push_back(tsp::Visit{0, distances.distance(pos, right) < distances.distance(pos, left)});
+    // Distances are symmetric: a search from `pos` that stops at the two ends answers.
+    const grid::Cell both[2] = {left, right};
+    int to_end[2];
+    distances.distances_to(pos, both, to_end);
+    order_.push_back(tsp::Visit{0, to_end[1] < to_end[0]});
   } else if (segments_.size() > 1) {
     problem_.start = pos;
     problem_.segments.clear();

@@ -12,6 +12,7 @@
 
 #include "hullinspect/grid/cell.hpp"
 #include "hullinspect/grid/distance_service.hpp"
+#include "hullinspect/grid/target_search.hpp"
 #include "hullinspect/planners/part_tsp_segments.hpp"
 #include "hullinspect/sim/types.hpp"
 #include "hullinspect/tsp/segment_tsp.hpp"
@@ -32,14 +33,18 @@ class SegmentPath {
               std::span<const tsp::Visit> order);
   void clear();
   /// The service whose paths to follow; null: the Manhattan rule.
-  void set_distances(grid::DistanceService* distances) { distances_ = distances; }
+  void set_distances(grid::DistanceService* distances) {
+    distances_ = distances;
+    towards_.bind(distances);
+  }
 
   /// Passes over the waypoints already reached at `pos`.
   void advance(grid::Cell pos);
   /// Every waypoint reached (call advance() first).
   bool finished() const { return next_ >= waypoints_.size(); }
-  /// The move towards the next waypoint; kHover when finished.
-  sim::Action next_action(grid::Cell pos) const;
+  /// The move towards the next waypoint; kHover when finished. The service's shortest flight,
+  /// searched from the waypoint only as far as `pos` (its answer is the service's next_step).
+  sim::Action next_action(grid::Cell pos);
 
   /// The visit the UAV heads for or is flying (valid while not finished).
   const PlannedVisit& current_visit() const { return visits_[next_ / 2]; }
@@ -62,6 +67,7 @@ class SegmentPath {
   std::size_t next_ = 0;
   std::vector<std::uint8_t> used_;  // scratch: segments already in the order
   grid::DistanceService* distances_ = nullptr;
+  grid::TargetSearch towards_;  // towards the next waypoint, kept while it stays the same
 };
 
 }  // namespace hullinspect::planners::part_tsp
