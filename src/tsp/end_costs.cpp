@@ -20,7 +20,6 @@ void EndCosts::assign(const SegmentTsp& problem) {
     const Segment& s = problem.segments[static_cast<std::size_t>(l)];
     at[static_cast<std::size_t>(2 * l)] = s.first;
     at[static_cast<std::size_t>(2 * l + 1)] = s.second;
-    segment_total_ += node_distance(problem, s.first, s.second);
   }
   at[static_cast<std::size_t>(2 * g_)] = problem.start;
   for (int a = 0; a < stride_; ++a) {
@@ -38,6 +37,9 @@ void EndCosts::assign(const SegmentTsp& problem) {
           grid::manhattan(at[static_cast<std::size_t>(a)], at[static_cast<std::size_t>(b)]);
     }
   }
+  // The segments' own lengths from the table (distances are symmetric), not from one whole-grid
+  // field per segment.
+  for (int l = 0; l < g_; ++l) segment_total_ += (*this)(2 * l, 2 * l + 1);
 }
 
 long long EndCosts::length(std::span<const int> entries) const {
@@ -50,16 +52,31 @@ long long EndCosts::length(std::span<const int> entries) const {
   return total;
 }
 
-TspSolution make_solution(const SegmentTsp& problem, std::span<const int> entries, bool optimal,
-                          std::chrono::steady_clock::time_point started) {
+namespace {
+TspSolution solution_of(std::span<const int> entries, long long length, bool optimal,
+                        std::chrono::steady_clock::time_point started) {
   TspSolution solution;
   solution.order.reserve(entries.size());
   for (int e : entries) solution.order.push_back(visit_of_entry(e));
-  solution.length = tour_length(problem, solution.order);
+  solution.length = length;
   solution.optimal = optimal;
   if (optimal) solution.lower_bound = solution.length;
   solution.seconds = seconds_since(started);
   return solution;
+}
+}  // namespace
+
+TspSolution make_solution(const SegmentTsp& problem, std::span<const int> entries, bool optimal,
+                          std::chrono::steady_clock::time_point started) {
+  std::vector<Visit> order;
+  order.reserve(entries.size());
+  for (int e : entries) order.push_back(visit_of_entry(e));
+  return solution_of(entries, tour_length(problem, order), optimal, started);
+}
+
+TspSolution make_solution(const EndCosts& costs, std::span<const int> entries, bool optimal,
+                          std::chrono::steady_clock::time_point started) {
+  return solution_of(entries, costs.length(entries), optimal, started);
 }
 
 long long simple_lower_bound(const EndCosts& costs) {

@@ -1,8 +1,8 @@
 #pragma once
-// Internal to the TSP solvers: the problem's costs (node_distance) between the UAV and the 2g segment ends, in the
-// numbering the solvers share. End 2l is segment l's `first`, end 2l+1 its `second`; a visit that
-// enters segment l by end e leaves by end e ^ 1, so a tour is a sequence of entry ends. Index 2g is
-// the UAV. Coordinates are grid cells, so every cost fits an int.
+// Internal to the TSP solvers: the problem's costs (node_distance) between the UAV and the 2g
+// segment ends, in the numbering the solvers share. End 2l is segment l's `first`, end 2l+1 its
+// `second`; a visit that enters segment l by end e leaves by end e ^ 1, so a tour is a sequence of
+// entry ends. Index 2g is the UAV. Coordinates are grid cells, so every cost fits an int.
 
 #include <chrono>
 #include <span>
@@ -48,6 +48,9 @@ inline Visit visit_of_entry(int entry) {
 
 /// The solution for a sequence of entry ends; `seconds` measured from `started`.
 TspSolution make_solution(const SegmentTsp& problem, std::span<const int> entries, bool optimal,
+                          std::chrono::steady_clock::time_point started);
+/// The same, its length read from the table `costs` of the problem (no distance computed again).
+TspSolution make_solution(const EndCosts& costs, std::span<const int> entries, bool optimal,
                           std::chrono::steady_clock::time_point started);
 
 /// A lower bound on every tour's length, O(g²): the segments, the cheapest first leg from the UAV,

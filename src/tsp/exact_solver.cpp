@@ -51,12 +51,12 @@ TspSolution ExactSolver::solve(const SegmentTsp& problem) {
   costs_->assign(problem);
   if (g <= std::max(options_.dp_max_segments, 1)) {
     dp_->solve(*costs_, entries_);
-    return detail::make_solution(problem, entries_, true, started);
+    return detail::make_solution(*costs_, entries_, true, started);
   }
   long long length = search_->run(*costs_, options_.kicks, kSearchSeed, entries_);
   const long long simple_bound = detail::simple_lower_bound(*costs_);
   auto unproven = [&](long long bound, bool fallback) {
-    TspSolution s = detail::make_solution(problem, entries_, bound >= length, started);
+    TspSolution s = detail::make_solution(*costs_, entries_, bound >= length, started);
     s.lower_bound = std::min(bound, s.length);
     s.fallback = fallback;
     return s;
@@ -70,7 +70,7 @@ TspSolution ExactSolver::solve(const SegmentTsp& problem) {
   }
   const auto stats =
       branch_and_cut_->solve(*costs_, entries_, length, deadline, options_.work_budget * 1e6);
-  if (stats.optimal) return detail::make_solution(problem, entries_, true, started);
+  if (stats.optimal) return detail::make_solution(*costs_, entries_, true, started);
   // Stopped by the time limit or the work budget, or (a defect, counted as a fallback) by numerical
   // trouble: the best tour found, with the better of the two bounds.
   return unproven(std::max(simple_bound, stats.root_bound), stats.gave_up);

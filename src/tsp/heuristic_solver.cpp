@@ -37,7 +37,7 @@ TspSolution HeuristicSolver::solve(const SegmentTsp& problem) {
   costs_->assign(problem);
   search_->run(*costs_, options_.kicks, static_cast<std::uint64_t>(options_.seed), entries_);
   // With one segment the local search tries both directions, so the answer is optimal.
-  TspSolution solution = detail::make_solution(problem, entries_, g == 1, started);
+  TspSolution solution = detail::make_solution(*costs_, entries_, g == 1, started);
   if (!solution.optimal) {
     solution.lower_bound = std::min(solution.length, detail::simple_lower_bound(*costs_));
   }
