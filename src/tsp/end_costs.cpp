@@ -22,24 +22,40 @@ void EndCosts::assign(const SegmentTsp& problem) {
     at[static_cast<std::size_t>(2 * l + 1)] = s.second;
   }
   at[static_cast<std::size_t>(2 * g_)] = problem.start;
-  for (int a = 0; a < stride_; ++a) {
-    if (problem.distances != nullptr && problem.distances->searched()) {
-      // One search per row, ended at the farthest end: on a large grid the ends lie in a small
-      // part of it, and no field of the service's cache (the UAVs' next steps) is evicted.
-      problem.distances->distances_to(
-          at[static_cast<std::size_t>(a)], at,
-          std::span<int>(cost_).subspan(static_cast<std::size_t>(a * stride_),
-                                        static_cast<std::size_t>(stride_)));
-      continue;
-    }
-    for (int b = 0; b < stride_; ++b) {
-      cost_[static_cast<std::size_t>(a * stride_ + b)] =
-          grid::manhattan(at[static_cast<std::size_t>(a)], at[static_cast<std::size_t>(b)]);
+  if (problem.distances != nullptr && problem.distances->searched()) {
+    searched_costs(*problem.distances);
+  } else {
+    for (int a = 0; a < stride_; ++a) {
+      for (int b = 0; b < stride_; ++b) {
+        cost_[static_cast<std::size_t>(a * stride_ + b)] =
+            grid::manhattan(at[static_cast<std::size_t>(a)], at[static_cast<std::size_t>(b)]);
+      }
     }
   }
   // The segments' own lengths from the table (distances are symmetric), not from one whole-grid
   // field per segment.
   for (int l = 0; l < g_; ++l) segment_total_ += (*this)(2 * l, 2 * l + 1);
+}
+
+void EndCosts::searched_costs(grid::DistanceService& distances) {
+  // Distances are symmetric, so each search covers only the nodes after its source, and it stops
+  // at the farthest of them: the ends lie close together on a large grid, the UAV possibly far
+  // away, so the UAV's row is searched once (from the UAV) and no end's search reaches out to it.
+  // distances_to() keeps the service's cached fields (the UAVs' next steps) as they are.
+  const auto stride = static_cast<std::size_t>(stride_);
+  const std::size_t uav = stride - 1;
+  std::span<const grid::Cell> ends = std::span<const grid::Cell>(cells_).first(uav);
+  distances.distances_to(cells_[uav], ends, std::span<int>(cost_).subspan(uav * stride, uav));
+  cost_[uav * stride + uav] = 0;
+  for (std::size_t a = 0; a < uav; ++a) {
+    cost_[a * stride + uav] = cost_[uav * stride + a];
+    cost_[a * stride + a] = 0;
+    const std::size_t later = uav - a - 1;
+    if (later == 0) continue;
+    distances.distances_to(cells_[a], ends.subspan(a + 1),
+                           std::span<int>(cost_).subspan(a * stride + a + 1, later));
+    for (std::size_t b = a + 1; b < uav; ++b) cost_[b * stride + a] = cost_[a * stride + b];
+  }
 }
 
 long long EndCosts::length(std::span<const int> entries) const {

@@ -32,6 +32,9 @@ class EndCosts {
   long long length(std::span<const int> entries) const;
 
  private:
+  /// The table from the service's searches (not the Manhattan distances).
+  void searched_costs(grid::DistanceService& distances);
+
   int g_ = 0;
   int stride_ = 1;
   long long segment_total_ = 0;
