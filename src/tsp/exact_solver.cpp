@@ -42,7 +42,9 @@ const Params<ExactOptions>& ExactSolver::params() {
   return params;
 }
 
-ExactOptions ExactSolver::read_options(const OptionMap& options) { return params().read(options); }
+ExactOptions ExactSolver::read_options(const OptionMap& options) {
+  return params().read(options);
+}
 
 TspSolution ExactSolver::solve(const SegmentTsp& problem) {
   const auto started = std::chrono::steady_clock::now();
