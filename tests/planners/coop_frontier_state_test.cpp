@@ -177,7 +177,7 @@ TEST(SourceDistanceField, RemovingEveryMemberLeavesNoDistance) {
 }
 
 TEST(SourceDistanceField, SmallGridsKeepTheTransformLargeOnesReadOnDemand) {
-  for (const int side : {50, 200}) {
+  for (const int side : {50, 400}) {
     SourceDistanceField f;
     f.reset(side, side);
     f.set(3, true);

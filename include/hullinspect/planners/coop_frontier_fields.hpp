@@ -22,8 +22,9 @@ using grid::manhattan_distance_transform;
 /// with shortest flights, it is one O(cells) transform or search. On a grid of more than
 /// `on_demand_cells` cells without no-fly positions (Manhattan distances), each read is answered on
 /// its own by a NearestSourceIndex instead: Coop-Frontier reads only its frontier cells, and on
-/// large grids those reads cost less than a transform of every cell (on the default hull's 6 900
-/// cells the transform is cheaper; the two are even at about twice that).
+/// very large grids the windows of the updates may cover most of the grid (up to the default
+/// hull at 8× its area, 55 250 cells, the field with its window updates is the cheaper of the
+/// two: docs/results.md "Planning time against hull size").
 class SourceDistanceField {
  public:
   /// An empty set on a grid of `width` × `height` cells; distances from `distances` (shortest
@@ -31,7 +32,7 @@ class SourceDistanceField {
   void reset(int width, int height, grid::DistanceService* distances = nullptr,
              int on_demand_cells = kOnDemandCells);
   /// Grids above this many cells are read on demand (without no-fly positions).
-  static constexpr int kOnDemandCells = 10'000;
+  static constexpr int kOnDemandCells = 100'000;
   /// Adds (member = true) or removes the cell.
   void set(int index, bool member);
   bool member(int index) const { return member_[index] != 0; }
