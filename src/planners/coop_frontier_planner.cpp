@@ -40,6 +40,7 @@ void CoopFrontierPlanner::start(const PlannerContext& context) {
   grid::Grid<std::int8_t>& map = map_;
   map = grid::Grid<std::int8_t>(w, h, sim::kUnknown);
   known_.assign(static_cast<std::size_t>(prior.size()), 0);
+  absorbed_.assign(static_cast<std::size_t>(prior.size()), 0);
   prior_field_.reset(w, h, distances_);
   detected_field_.reset(w, h, distances_);
   prior_floor_.reset(prior.size(), kFloorLevels);
@@ -115,6 +116,11 @@ void CoopFrontierPlanner::absorb_readings(const sim::PlannerView& view) {
     for (const sim::Reading& r : view.sensed.readings(k)) {
       const int i = r.index;
       const std::int8_t m = effective(i, view.map[i]);
+      // A cell read before with the same value needs nothing: everything below depends only on
+      // m once a reading has been taken in (most readings see cells already seen).
+      auto& absorbed = absorbed_[static_cast<std::size_t>(i)];
+      if (absorbed != 0 && map[i] == m) continue;
+      absorbed = 1;
       map[i] = m;
       auto& known = known_[static_cast<std::size_t>(i)];
       if (!known && m != sim::kUnknown) {

@@ -1,6 +1,6 @@
 // The incremental state behind Coop-Frontier: the Manhattan distance transform against brute force,
-// the lazily refreshed source fields, the floor of d_HP over a changing set, the indexed cell set
-// and the frontier set against its definition.
+// the lazily refreshed source fields and their updates after removals, the floor of d_HP over a
+// changing set, the indexed cell set and the frontier set against its definition.
 
 #include <gtest/gtest.h>
 
@@ -111,8 +111,78 @@ TEST(SourceDistanceField, ManhattanReadsMatchBruteForceThroughAddsAndRemovals) {
   }
 }
 
+// Held as a Manhattan field, removals update only the cells whose nearest members left: every
+// cell must equal the definition after every update, and an addition must bring back the transform.
+TEST(SourceDistanceField, RemovalsUpdateTheManhattanFieldExactlyWithoutATransform) {
+  world::RandomStream rng(11, 0);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int w = 1 + static_cast<int>(rng.below(40));
+    const int h = 1 + static_cast<int>(rng.below(trial % 2 == 0 ? 6 : 30));
+    SourceDistanceField f;
+    f.reset(w, h);
+    grid::Grid<std::uint8_t> members(w, h, 0);
+    const double density = trial % 3 == 0 ? 0.02 : (trial % 3 == 1 ? 0.2 : 0.6);
+    for (int i = 0; i < members.size(); ++i) {
+      if (!rng.bernoulli(density)) continue;
+      members[i] = 1;
+      f.set(i, true);
+    }
+    f.refresh();
+    const long long transforms = f.transforms();
+    const int first_count = f.count();
+    for (int step = 0; step < 30; ++step) {
+      // Remove a few members, sometimes a whole block of neighbours (a prior patch seen at once).
+      const int changes = 1 + static_cast<int>(rng.below(step % 4 == 0 ? 12 : 3));
+      const int x0 = static_cast<int>(rng.below(static_cast<std::uint64_t>(w)));
+      const int y0 = static_cast<int>(rng.below(static_cast<std::uint64_t>(h)));
+      for (int c = 0; c < changes; ++c) {
+        int i = step % 4 == 0 ? std::min(h - 1, y0 + c / 4) * w + std::min(w - 1, x0 + c % 4)
+                              : static_cast<int>(rng.below(static_cast<std::uint64_t>(w * h)));
+        // Single removals take the next member from a random cell, so that each removes one.
+        for (int k = 0; step % 4 != 0 && k < w * h && members[i] == 0; ++k) i = (i + 1) % (w * h);
+        members[i] = 0;
+        f.set(i, false);
+      }
+      f.refresh();
+      ASSERT_EQ(f.transforms(), transforms) << "trial " << trial << " step " << step;
+      for (int i = 0; i < members.size(); ++i) {
+        ASSERT_EQ(f.distance(i), brute_force_distance(members, i))
+            << "trial " << trial << " " << w << "x" << h << " step " << step << " cell " << i;
+      }
+    }
+    if (f.count() < first_count) {
+      EXPECT_GT(f.partial_updates(), 0) << "trial " << trial;
+    }
+    int back = static_cast<int>(rng.below(static_cast<std::uint64_t>(w * h)));
+    while (members[back] != 0) back = (back + 1) % (w * h);  // a cell that is not a member
+    members[back] = 1;
+    f.set(back, true);
+    f.refresh();
+    EXPECT_EQ(f.transforms(), transforms + 1);
+    for (int i = 0; i < members.size(); ++i) {
+      ASSERT_EQ(f.distance(i), brute_force_distance(members, i)) << "after an addition, cell " << i;
+    }
+  }
+}
+
+// The last member's removal leaves every cell unreachable, as the transform of an empty set.
+TEST(SourceDistanceField, RemovingEveryMemberLeavesNoDistance) {
+  SourceDistanceField f;
+  f.reset(7, 5);
+  f.set(8, true);
+  f.set(30, true);
+  f.refresh();
+  f.set(8, false);
+  f.refresh();
+  EXPECT_EQ(f.distance(0), 6);  // (0, 0) to (2, 4)
+  f.set(30, false);
+  f.refresh();
+  EXPECT_EQ(f.transforms(), 1);
+  for (int i = 0; i < 35; ++i) EXPECT_EQ(f.distance(i), grid::kUnreachable) << i;
+}
+
 TEST(SourceDistanceField, SmallGridsKeepTheTransformLargeOnesReadOnDemand) {
-  for (const int side : {50, 200}) {
+  for (const int side : {50, 400}) {
     SourceDistanceField f;
     f.reset(side, side);
     f.set(3, true);

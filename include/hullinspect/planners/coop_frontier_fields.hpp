@@ -8,6 +8,7 @@
 #include "hullinspect/grid/distance_service.hpp"
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/planners/coop_frontier_nearest.hpp"
+#include "hullinspect/planners/coop_frontier_shrinking_field.hpp"
 
 namespace hullinspect::planners {
 
@@ -15,12 +16,15 @@ namespace hullinspect::planners {
 using grid::manhattan_distance_transform;
 
 /// A set of cells and the distance field to it. As a field: membership changes are O(1) and only
-/// mark it stale; it is recomputed (one O(cells) transform or search) the first time it is read
-/// afterwards, so any number of changes between two reads costs one transform. On a grid of more
-/// than `on_demand_cells` cells without no-fly positions (Manhattan distances), each read is
-/// answered on its own by a NearestSourceIndex instead: Coop-Frontier reads only its frontier
-/// cells, and on large grids those reads cost less than a transform of every cell (on the default
-/// hull's 6 900 cells the transform is cheaper; the two are even at about twice that).
+/// mark it stale; it is brought up to date the first time it is read afterwards, so any number of
+/// changes between two reads costs one update. With Manhattan distances, an update after removals
+/// only recomputes a window around the removed members (remove_members()); after an addition, or
+/// with shortest flights, it is one O(cells) transform or search. On a grid of more than
+/// `on_demand_cells` cells without no-fly positions (Manhattan distances), each read is answered on
+/// its own by a NearestSourceIndex instead: Coop-Frontier reads only its frontier cells, and on
+/// very large grids the windows of the updates may cover most of the grid (up to the default
+/// hull at 8× its area, 55 250 cells, the field with its window updates is the cheaper of the
+/// two: docs/results.md "Planning time against hull size").
 class SourceDistanceField {
  public:
   /// An empty set on a grid of `width` × `height` cells; distances from `distances` (shortest
@@ -28,7 +32,7 @@ class SourceDistanceField {
   void reset(int width, int height, grid::DistanceService* distances = nullptr,
              int on_demand_cells = kOnDemandCells);
   /// Grids above this many cells are read on demand (without no-fly positions).
-  static constexpr int kOnDemandCells = 10'000;
+  static constexpr int kOnDemandCells = 100'000;
   /// Adds (member = true) or removes the cell.
   void set(int index, bool member);
   bool member(int index) const { return member_[index] != 0; }
@@ -42,16 +46,23 @@ class SourceDistanceField {
   bool stale() const { return stale_; }
   /// How many whole-field searches were run (for tests and statistics).
   long long transforms() const { return transforms_; }
+  /// How many updates recomputed only a window around removed members.
+  long long partial_updates() const { return partial_updates_; }
 
  private:
   grid::DistanceService* distances_ = nullptr;
-  bool on_demand_ = false;  // nearest_ answers each read
+  bool on_demand_ = false;    // nearest_ answers each read
+  bool incremental_ = false;  // Manhattan distances held as a field: removals update it in place
   NearestSourceIndex nearest_;
   grid::Grid<std::uint8_t> member_;
   grid::Grid<int> distance_;
+  // Removals since the field was last exact; an addition (or a first field) needs a transform.
+  std::vector<int> removed_;
+  bool needs_transform_ = true;
   int count_ = 0;
   bool stale_ = true;
   long long transforms_ = 0;
+  long long partial_updates_ = 0;
 };
 
 }  // namespace hullinspect::planners

@@ -106,6 +106,7 @@ class CoopFrontierPlanner final : public Planner {
   // What the fleet knows, mirrored from the readings so nothing is rescanned per step.
   grid::Grid<std::int8_t> map_;         // effective() M
   std::vector<std::uint8_t> known_;     // M ≠ 0 (non-hull counts as known)
+  std::vector<std::uint8_t> absorbed_;  // a reading of the cell has been taken in
   FrontierSet frontiers_;               // F
   SourceDistanceField prior_field_;     // prior corrosion not yet seen by any UAV → d_HP
   SourceDistanceField detected_field_;  // detected (seen, M = 2) and not inspected → d_C
