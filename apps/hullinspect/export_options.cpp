@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <set>
 
 #include "hullinspect/core/errors.hpp"
@@ -59,6 +60,7 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
   cmd.add_option("--max-waypoints", a.max_waypoints,
                  "Split a sortie into mission files of at most N waypoints (default: litchi 99, "
                  "dji-kmz 200, others no cap)")
+      ->check(integer_text_in(io::kMinWaypointCap, std::numeric_limits<int>::max()))
       ->type_name("N");
   cmd.add_option("--simplify", a.simplify,
                  "Merge legs whose waypoints lie within TOL metres of a straight line, keeping "

@@ -5,6 +5,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/parameters.hpp"
 #include "hullinspect/planners/planner.hpp"
+#include "number_options.hpp"
 
 namespace hullinspect::cli {
 
@@ -59,6 +60,9 @@ void add_declared_options(CLI::App& cmd, MissionArgs& input,
                    : cmd.add_option_function<std::string>(
                          names, [read](const std::string& v) { read({v}); }, d->help);
       option->type_name(d->value_name);
+      // The declaration parses its value within the option's own range: the generic INT/FLOAT
+      // check of require_exact_numbers() (which names the type's whole range) stays off it.
+      option->check(declared_value_marker());
       if (!d->shown_default.empty()) option->default_str(d->shown_default);
     }
     if (!d->group.empty()) option->group(d->group);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/integer_of_range.hpp"
 #include "hullinspect/core/numbers.hpp"
 
 namespace hullinspect::cli {
@@ -25,8 +26,20 @@ CLI::Validator number_validator(Parse parse) {
       "");
 }
 
+constexpr const char* kDeclaredValue = "declared-value";
+
+bool has_declared_value(CLI::Option& option) {
+  try {
+    option.get_validator(kDeclaredValue);
+    return true;
+  } catch (const CLI::OptionNotFound&) {
+    return false;
+  }
+}
+
 void attach(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
+    if (has_declared_value(*option)) continue;
     const std::string type = option->get_type_name();
     if (type == "INT") {
       option->check(number_validator([](const std::string& t) { parse_integer<int>(t); }));
@@ -42,8 +55,16 @@ void attach(CLI::App& app) {
 
 }  // namespace
 
+CLI::Validator declared_value_marker() {
+  return CLI::Validator([](std::string&) { return std::string(); }, "", kDeclaredValue);
+}
+
 CLI::Validator integer_in(std::int64_t min, std::int64_t max) {
   return number_validator([=](const std::string& t) { parse_integer<std::int64_t>(t, min, max); });
+}
+
+CLI::Validator integer_text_in(int min, int max) {
+  return number_validator([=](const std::string& t) { parse_integer_of_range<int>(t, min, max); });
 }
 
 CLI::Validator real_in(double min, double max) {

@@ -16,11 +16,19 @@ namespace hullinspect::cli {
 
 /// Refuses values that are not integers in [min, max] with the shared parser's one-line message.
 CLI::Validator integer_in(std::int64_t min, std::int64_t max);
+/// Refuses values that are no int at all naming [min, max], the option's range; an int outside it
+/// is left to the command's own check, whose message gives the reason.
+CLI::Validator integer_text_in(int min, int max);
 /// Refuses values that are not finite reals in [min, max].
 CLI::Validator real_in(double min, double max);
 
+/// A check that accepts everything and marks an option whose value a mission declaration parses
+/// in its own range: require_exact_numbers() leaves such options alone.
+CLI::Validator declared_value_marker();
+
 /// Attaches the exact parser to every INT (int range), UINT (uint64 range) and FLOAT (finite,
-/// ±kRealLimit) option of `app` and its subcommands. Call after every command is registered.
+/// ±kRealLimit) option of `app` and its subcommands that has no narrower check of its own (a
+/// declared_value_marker()). Call after every command is registered.
 void require_exact_numbers(CLI::App& app);
 
 /// A CLI11 parse error as one of our messages: "Could not convert: --uavs,-n = abc" becomes

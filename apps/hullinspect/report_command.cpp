@@ -370,7 +370,7 @@ void add_report_command(CLI::App& app, CommandAction& action) {
       ->capture_default_str()
       ->type_name("png,pdf");
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG figures")
-      ->check(CLI::Range(30, 1200))
+      ->check(integer_in(30, 1200))
       ->capture_default_str();
   cmd->add_flag("--partial", args->partial,
                 "Report the runs found when some of the experiment's runs are missing (flagged in "

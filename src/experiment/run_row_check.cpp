@@ -11,6 +11,7 @@
 #include "hullinspect/experiment/csv.hpp"
 #include "hullinspect/experiment/run_record.hpp"
 #include "hullinspect/world/battery.hpp"
+#include "hullinspect/world/hull.hpp"
 
 namespace hullinspect::experiment {
 
@@ -115,7 +116,9 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
     return fmt::format("separation is '{}' but this experiment's is {}",
                        escape_for_message(o.text("separation")), c.mission.separation);
   }
-  (void)o.parse("min_separation", kMaxStoredCount);
+  // The smallest max(|dx|, |dy|) between two airborne UAVs: a distance on the grid.
+  const auto least_separation = o.parse("min_separation", world::kMaxGridSide - 1);
+  const long long conflicts = o.get("separation_conflicts");
   // Batteries (docs/model.md, "Batteries and sorties"), parsed here, related at the end.
   const long long sorties = o.get("sorties");
   const auto flight = o.seconds("flight_s", 1e18);
@@ -172,6 +175,17 @@ std::string outcome_problem(const ExperimentPlan& plan, const RunKey& run, const
   if (bound_t_c > bound_t_m) {
     return fmt::format("bound_T_c is {} but bound_T_m is only {}", o.text("bound_T_c"),
                        o.text("bound_T_m"));
+  }
+  // Without separation (D = 0) the simulator measures nothing (docs/model.md §13).
+  if (c.mission.separation == 0 && (least_separation || conflicts != 0)) {
+    return fmt::format(
+        "min_separation is '{}' and separation_conflicts {} but this experiment has no "
+        "separation (D = 0: the first is empty, the second 0)",
+        escape_for_message(o.text("min_separation")), conflicts);
+  }
+  if (least_separation && uavs < 2) {
+    return fmt::format("min_separation is {} but a single UAV has no other to be apart from",
+                       *least_separation);
   }
   if (least_battery.has_value() != c.mission.endurance.has_value()) {
     return c.mission.endurance

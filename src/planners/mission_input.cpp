@@ -2,16 +2,21 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
 #include <iostream>
 #include <limits>
+#include <optional>
+#include <string_view>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/integer_of_range.hpp"
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/core/parameters.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/defect_map.hpp"
 #include "hullinspect/world/failures.hpp"
+#include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
 #include "hullinspect/world/scenario.hpp"
 
@@ -33,14 +38,27 @@ auto exact(const std::string& key, Parse parse) {
   }
 }
 
-/// A number read as any C++ literal of its type, "nan" and "inf" included: for the options whose
-/// range the mission's validation checks with its own message ("must be a number of seconds …").
-template <class T>
-T literal(const std::string& key, const std::string& text) {
-  T value{};
+/// YAML's spellings of the non-finite reals (.nan, .inf, -.inf, +.inf, any letter case), which
+/// std::from_chars does not read: a config's `.nan` then reaches the mission's validation as the
+/// command line's `nan` does, and both are refused with the option's range.
+std::optional<double> yaml_non_finite(std::string_view text) {
+  std::string lower;
+  for (const char c : text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == ".nan") return std::numeric_limits<double>::quiet_NaN();
+  if (lower == ".inf" || lower == "+.inf") return std::numeric_limits<double>::infinity();
+  if (lower == "-.inf") return -std::numeric_limits<double>::infinity();
+  return std::nullopt;
+}
+
+/// A real read as any C++ literal, "nan" and "inf" included (and YAML's .nan/.inf): for the
+/// options whose range the mission's validation checks with its own message ("must be a number
+/// of seconds …"), so every spelling of a value out of range gets that one message.
+double literal_real(const std::string& key, const std::string& text) {
+  if (const auto non_finite = yaml_non_finite(text)) return *non_finite;
+  double value{};
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || text.empty()) {
-    throw ParameterError(key, fmt::format("'{}' is not a valid value", text));
+    throw ParameterError(key, fmt::format("'{}' is not a valid value", escape_for_message(text)));
   }
   return value;
 }
@@ -79,9 +97,13 @@ std::vector<MissionOptionDecl> declare() {
     return out.emplace_back(std::move(decl));
   };
   // Setters by the field's type; `key` names the option in errors.
-  auto integer = [](const std::string& key, int MissionInput::*field) -> Setter {
-    return [key, field](MissionInput& in, const std::string& t) {
-      in.*field = exact(key, [&] { return parse_integer<int>(t); });
+  // [min, max] is the option's own range: text that is no integer ("x", "1e3", 10^11) is refused
+  // naming it; an integer outside it reaches the mission's validation, whose message names the
+  // range with its reason ("must be at least 1", "must be 1 or 2").
+  auto integer = [](const std::string& key, int MissionInput::*field, int min,
+                    int max = std::numeric_limits<int>::max()) -> Setter {
+    return [key, field, min, max](MissionInput& in, const std::string& t) {
+      in.*field = exact(key, [&] { return parse_integer_of_range<int>(t, min, max); });
     };
   };
   auto real = [](const std::string& key, double MissionInput::*field) -> Setter {
@@ -117,24 +139,27 @@ std::vector<MissionOptionDecl> declare() {
   add("algorithm", "TEXT", InputKind::kValue, "Planner: " + planner_names,
       text(&MissionInput::algorithm), d.algorithm)
       .alias = "a";
-  auto& uavs = add("uavs", "INT", InputKind::kValue, "Fleet size n (1 … number of hull cells)",
-                   integer("uavs", &MissionInput::uavs), std::to_string(d.uavs));
+  auto& uavs =
+      add("uavs", "INT", InputKind::kValue, "Fleet size n (1 … number of hull cells)",
+          integer("uavs", &MissionInput::uavs, 1, world::kMaxGridSide * world::kMaxGridSide),
+          std::to_string(d.uavs));
   uavs.alias = "n";
   uavs.config_key = "uavs";
   uavs.config_axis = true;
   add("s1", "INT", InputKind::kValue, "Footprint side at the close-up plane z = 1, cells (odd)",
-      integer("s1", &MissionInput::s1), std::to_string(d.s1))
+      integer("s1", &MissionInput::s1, 1, world::kMaxFootprintSide - 2), std::to_string(d.s1))
       .config_key = "s1";
-  auto& s2 = add("s2", "INT", InputKind::kValue,
-                 "Footprint side at the detection plane z = 2, cells (odd, > s1)",
-                 integer("s2", &MissionInput::s2), std::to_string(d.s2));
+  auto& s2 =
+      add("s2", "INT", InputKind::kValue,
+          "Footprint side at the detection plane z = 2, cells (odd, > s1)",
+          integer("s2", &MissionInput::s2, 3, world::kMaxFootprintSide), std::to_string(d.s2));
   s2.config_key = "s2";
   s2.config_axis = true;
   add("theta", "FLOAT", InputKind::kValue, "Camera aperture θ in degrees, in (0, 180)",
       real("theta", &MissionInput::theta), shown(d.theta))
       .config_key = "theta";
   add("start-z", "INT", InputKind::kValue, "Plane every UAV starts on (1 or 2)",
-      integer("start-z", &MissionInput::start_z), std::to_string(d.start_z))
+      integer("start-z", &MissionInput::start_z, 1, 2), std::to_string(d.start_z))
       .config_key = "start_z";
   add("start", "X,Y", InputKind::kRepeated,
       "Start cell x,y of each UAV (repeat once per UAV; default: spread along the hull)",
@@ -168,12 +193,12 @@ std::vector<MissionOptionDecl> declare() {
       text(&MissionInput::hull), d.hull);
   add("time-limit", "INT", InputKind::kValue,
       "Steps after which an unfinished mission is reported incomplete",
-      integer("time-limit", &MissionInput::time_limit), std::to_string(d.time_limit))
+      integer("time-limit", &MissionInput::time_limit, 1), std::to_string(d.time_limit))
       .config_key = "time_limit";
   add("separation", "INT", InputKind::kValue,
       "Separation D in cells: two UAVs conflict when max(|dx|, |dy|) < D, whatever "
       "their planes (0: no separation, the paper's model; docs/model.md)",
-      integer("separation", &MissionInput::separation), std::to_string(d.separation))
+      integer("separation", &MissionInput::separation, 0), std::to_string(d.separation))
       .config_key = "separation";
   add("strict-separation", "", InputKind::kFlag,
       "A separation conflict is a mission error (exit 1) instead of a count",
@@ -214,7 +239,9 @@ std::vector<MissionOptionDecl> declare() {
       "fail-one-within", "H", InputKind::kValue,
       "One UAV (drawn from the instance seed) fails at a random step below H (0: none)",
       [](MissionInput& in, const std::string& t) {
-        in.fail_one_within = literal<int>("fail-one-within", t);
+        in.fail_one_within = exact("fail-one-within", [&] {
+          return parse_integer_of_range<int>(t, 0, std::numeric_limits<int>::max());
+        });
       },
       std::to_string(d.fail_one_within));
   add("prior", "FILE", InputKind::kValue,
@@ -249,7 +276,7 @@ std::vector<MissionOptionDecl> declare() {
       "launch-transfer", "S", InputKind::kValue,
       "Seconds each way between a launch site and the quay or deck beyond the grid",
       [](MissionInput& in, const std::string& t) {
-        in.launch_transfer = literal<double>("launch-transfer", t);
+        in.launch_transfer = literal_real("launch-transfer", t);
       },
       shown(d.launch_transfer))
       .config_key = "launch.transfer";
@@ -257,40 +284,36 @@ std::vector<MissionOptionDecl> declare() {
       "Seconds from the ground to plane 2 at a launch site, and back down (default: a "
       "plane change, u_z)",
       [](MissionInput& in, const std::string& t) {
-        in.takeoff_time = literal<double>("takeoff-time", t);
+        in.takeoff_time = literal_real("takeoff-time", t);
       })
       .config_key = "launch.takeoff-time";
   add("endurance", "S", InputKind::kValue,
       "Seconds of flight per battery (default: unlimited, the paper's model); needs --launch: a "
       "UAV is sent home to swap its battery before it runs low, and one airborne with an empty "
       "battery crashes (docs/model.md)",
-      [](MissionInput& in, const std::string& t) {
-        in.endurance = literal<double>("endurance", t);
-      })
+      [](MissionInput& in, const std::string& t) { in.endurance = literal_real("endurance", t); })
       .config_key = "battery.endurance";
   add("reserve", "S", InputKind::kValue,
       "With --endurance: seconds of flight a UAV keeps for landing (default: 10 % of the "
       "endurance)",
-      [](MissionInput& in, const std::string& t) { in.reserve = literal<double>("reserve", t); })
+      [](MissionInput& in, const std::string& t) { in.reserve = literal_real("reserve", t); })
       .config_key = "battery.reserve";
   add(
       "swap-time", "S", InputKind::kValue,
       "With --endurance: seconds on the ground at a launch site to swap a battery",
-      [](MissionInput& in, const std::string& t) {
-        in.swap_time = literal<double>("swap-time", t);
-      },
+      [](MissionInput& in, const std::string& t) { in.swap_time = literal_real("swap-time", t); },
       shown(d.swap_time))
       .config_key = "battery.swap-time";
   add("speed", "M/S", InputKind::kValue,
       "Horizontal speed in m/s: a move to a neighbouring cell takes cell / speed seconds, the "
       "length of one step (default: one cell per second)",
-      [](MissionInput& in, const std::string& t) { in.speed = literal<double>("speed", t); })
+      [](MissionInput& in, const std::string& t) { in.speed = literal_real("speed", t); })
       .config_key = "speed";
   add("climb-speed", "M/S", InputKind::kValue,
       "Climb speed in m/s for plane changes and the take-off, rounded up to whole steps "
       "(default: one cell per second, u_z steps at the default speed)",
       [](MissionInput& in, const std::string& t) {
-        in.climb_speed = literal<double>("climb-speed", t);
+        in.climb_speed = literal_real("climb-speed", t);
       })
       .config_key = "climb-speed";
 
@@ -392,14 +415,16 @@ grid::Cell parse_xy(const std::string& text, const std::string& option) {
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
     throw ParameterError(option, fmt::format("expects X,Y (got '{}')", escape_for_message(text)));
   }
+  // A cell of any grid: its coordinates lie in [0, kMaxGridSide - 1] (the grid at hand is checked
+  // later, naming its size).
+  constexpr int kLast = world::kMaxGridSide - 1;
   try {
-    const int x = parse_integer<int>(std::string_view(text).substr(0, comma));
-    const int y = parse_integer<int>(std::string_view(text).substr(comma + 1));
+    const int x = parse_integer<int>(std::string_view(text).substr(0, comma), 0, kLast);
+    const int y = parse_integer<int>(std::string_view(text).substr(comma + 1), 0, kLast);
     return {x, y};
   } catch (const NumberError&) {
     throw ParameterError(
-        option, fmt::format("expects X,Y with integers X and Y in [{}, {}] (got '{}')",
-                            std::numeric_limits<int>::min(), std::numeric_limits<int>::max(),
+        option, fmt::format("expects X,Y with integers X and Y in [0, {}] (got '{}')", kLast,
                             escape_for_message(text)));
   }
 }

@@ -112,9 +112,8 @@ void validate_without_starts(const MissionParams& p, const HullMask& hull) {
     throw ParameterError(
         "s2", fmt::format("must be an odd integer greater than s1 = {} (got {})", p.s1, p.s2));
   }
-  if (p.s2 > 2 * kMaxGridSide + 1) {
-    throw ParameterError("s2",
-                         fmt::format("must be at most {} (got {})", 2 * kMaxGridSide + 1, p.s2));
+  if (p.s2 > kMaxFootprintSide) {
+    throw ParameterError("s2", fmt::format("must be at most {} (got {})", kMaxFootprintSide, p.s2));
   }
   if (!(p.theta_deg > 0.0 && p.theta_deg < 180.0)) {
     throw ParameterError(

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "hullinspect/core/errors.hpp"
+#include "hullinspect/core/numbers.hpp"
 #include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::world {
@@ -55,7 +56,7 @@ CellBox parse_cell_box(const std::string& text, const std::string& option) {
     if (!ok || (k == 3 && end != text.size())) {
       throw ParameterError(option, fmt::format("expected X0,Y0,X1,Y1 (four non-negative cell "
                                                "indices), got '{}'",
-                                               text));
+                                               escape_for_message(text)));
     }
     v[k] = value;
     pos = end + 1;

@@ -73,9 +73,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "hullinspect: --seed: must be an integer in [0, 18446744073709551615] (got 'x1') "
                  "(see --help)"},
         BadInput{{"--start", "3;4"}, "hullinspect: --start: expects X,Y (got '3;4')"},
-        BadInput{{"--uavs", "abc"},
-                 "hullinspect: --uavs: must be an integer in [-2147483648, 2147483647] (got 'abc') "
-                 "(see --help)"}));
+        BadInput{
+            {"--uavs", "abc"},
+            "hullinspect: --uavs: must be an integer in [1, 16777216] (got 'abc') (see --help)"}));
 
 TEST(RunCommand, SummaryCountsOneUavInTheSingular) {
   const auto one = run_cli({"run", "--uavs", "1", "--seed", "2"});

@@ -240,10 +240,8 @@ TEST(ExperimentConfig, BadConfigsNameFileLineAndKey) {
        "bad.yaml:3: grid.depth: unknown key (known: width, height, cell_size)"},
       {"- 1\n- 2\n", "bad.yaml:1: config: must be a map (got a list)"},
       {"s1: 5\ns1: 7\n", "bad.yaml:2: s1: appears twice"},
-      {"s2: seven\n",
-       "bad.yaml:1: s2: must be an integer in [-2147483648, 2147483647] (got 'seven')"},
-      {"s2: [7, 9.5]\n",
-       "bad.yaml:1: s2: must be an integer in [-2147483648, 2147483647] (got '9.5')"},
+      {"s2: seven\n", "bad.yaml:1: s2: must be an integer in [3, 8193] (got 'seven')"},
+      {"s2: [7, 9.5]\n", "bad.yaml:1: s2: must be an integer in [3, 8193] (got '9.5')"},
       {"uavs:\n  - 4\n  - 0\n", "bad.yaml:3: uavs: must be at least 1 (got 0)"},
       {"s2: [7, 7]\n", "bad.yaml:1: s2: lists 7 twice"},
       {"s2:\n  - 7\n  - 8\n", "bad.yaml:3: s2: must be an odd integer greater than s1 = 5 (got 8)"},
@@ -457,7 +455,8 @@ TEST(ExperimentConfigHull, NamesAreTheCliHullNames) {
   EXPECT_EQ(c.hull->source(), world::default_hull().source());
   EXPECT_EQ(c.hull_cells, world::default_hull().cell_count());
   std::string why;
-  if (!hullinspect::testing::installed_dtc(why)) GTEST_SKIP() << "the DTC is not installed (" << why << ")";
+  if (!hullinspect::testing::installed_dtc(why))
+    GTEST_SKIP() << "the DTC is not installed (" << why << ")";
   const auto dtc = parse("hull: dtc\n");
   const world::HullMask cli = world::load_hull("dtc");
   EXPECT_EQ(dtc.hull->source(), "dtc");

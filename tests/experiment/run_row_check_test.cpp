@@ -279,6 +279,23 @@ TEST_F(RowCheck, BatteryColumnsThatLieAreRefused) {
                         steps, too_long - 1));
 }
 
+TEST_F(RowCheck, SeparationColumnsThatLieAreRefused) {
+  const auto [row, samples] = busy_row();
+  const auto h = runs_header();
+  ASSERT_EQ(field(row, h, "separation"), "0");
+  EXPECT_EQ(field(row, h, "min_separation"), "");
+  EXPECT_EQ(field(row, h, "separation_conflicts"), "0");
+  const std::string no_separation =
+      "but this experiment has no separation (D = 0: the first is empty, the second 0)";
+  EXPECT_EQ(run_problem(with(row, h, "min_separation", "3")),
+            "min_separation is '3' and separation_conflicts 0 " + no_separation);
+  EXPECT_EQ(run_problem(with(row, h, "separation_conflicts", "2")),
+            "min_separation is '' and separation_conflicts 2 " + no_separation);
+  // A Chebyshev distance on a grid of at most 4096 cells a side.
+  EXPECT_EQ(run_problem(with(row, h, "min_separation", "99999999999")),
+            "min_separation must be an integer in [0, 4095] (got '99999999999')");
+}
+
 }  // namespace
 }  // namespace hullinspect::experiment
 

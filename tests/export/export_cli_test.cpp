@@ -70,8 +70,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "(the point it starts from and one to fly to)"},
         BadExport{{"--launch", "3"}, "hullinspect: --launch: expects X,Y (got '3')"},
         BadExport{{"--launch", "3,x"},
-                  "hullinspect: --launch: expects X,Y with integers X and Y in [-2147483648, "
-                  "2147483647] (got '3,x')"},
+                  "hullinspect: --launch: expects X,Y with integers X and Y in [0, 4095] (got "
+                  "'3,x')"},
         BadExport{{"--launch", "500,0"},
                   "hullinspect: --launch: site (500, 0) is outside the 230 × 30 grid"},
         BadExport{{"--launch", "100,15"},

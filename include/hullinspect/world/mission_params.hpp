@@ -19,6 +19,10 @@ constexpr int footprint_half(int side) {
   return (side - 1) / 2;
 }
 
+/// The largest footprint side validate() accepts (s2; s1 < s2): one whose half-side spans the
+/// largest grid.
+inline constexpr int kMaxFootprintSide = 2 * kMaxGridSide + 1;
+
 /// The speeds (--speed, --climb-speed) validate() accepts, m/s.
 inline constexpr double kMinSpeedMs = 1e-3;
 inline constexpr double kMaxSpeedMs = 1e3;
