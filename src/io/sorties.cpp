@@ -162,6 +162,14 @@ Flight compress_flight(const ExportPlan& plan, std::span<const GridState> states
   }
   std::size_t w1 = end - 1;  // the last frame at work
   while (states[w1].away) --w1;
+  // The step in which the mission's last cell became known ends with the UAV turned home, so the
+  // trace shows it away; but it made that step's move at work and sensed on arrival. A UAV sent
+  // home for its battery starts its flight home where it stood.
+  if (w1 + 1 < end) {
+    const auto& a = states[w1];
+    const auto& b = states[w1 + 1];
+    if (b.airborne && !b.in_transit && (b.pos != a.pos || b.z != a.z)) ++w1;
+  }
   if (w0 > 0) {
     f.waypoints = flight_piece(plan, states, t0, 0, w0 + 1, true);
     // Its last waypoint is the arrival at the work's start: the first of the work's own.

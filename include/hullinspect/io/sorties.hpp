@@ -77,7 +77,9 @@ struct Flight {
 /// before the first frame at work and after the last (the take-off, the flight out from the launch
 /// site, the flight home and the landing, where the UAV senses nothing: GridState::away) are
 /// compressed on their own and their moves become `transit`, so the work's waypoints start and end
-/// where the work does. Without away frames: compress_trajectory's waypoints, no transit.
+/// where the work does. The frame the flight home begins in counts as work when the UAV moved into
+/// it (the simulator senses there, then turns the UAV home). Without away frames:
+/// compress_trajectory's waypoints, no transit.
 Flight compress_flight(const ExportPlan& plan, std::span<const GridState> states, int t0);
 
 /// The sorties the trace's airborne flags record per UAV, by sim::SortieRecord's rule: a take-off
