@@ -36,15 +36,6 @@ int export_trace(const ExportCommandArgs& args) {
                            names.size() == 1 ? "" : "s", request->dir.string(),
                            fmt::join(names, ", "));
   for (const auto& note : written.notes) std::cout << "note: " << note << "\n";
-  // The sorties are cut from the mission's result, which only plan and run have.
-  // The endurance is among the mission's parameters (and, in newer traces, its own field).
-  const auto parameters = trace.find("parameters");
-  if (trace.contains("battery") ||
-      (parameters != trace.end() && parameters->is_object() && parameters->contains("battery"))) {
-    std::cout << "note: the trace's mission has an endurance, but the export of a trace does not "
-                 "cut it into sorties: each UAV's files hold all its sorties as one flight (plan "
-                 "--export or run --export write one file per sortie)\n";
-  }
   check_stdout();
   outputs.commit();
   return 0;

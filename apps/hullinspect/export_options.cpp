@@ -24,6 +24,12 @@ namespace hullinspect::cli {
 
 namespace fs = std::filesystem;
 
+namespace {
+// The geoid departs from the WGS-84 ellipsoid by −106 m to +85 m (EGM2008): a wider value is not
+// a geoid height.
+constexpr double kMaxGeoidHeightM = 120;
+}  // namespace
+
 void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_option,
                         bool launch_option) {
   cmd.add_option(dir_option, a.dir,
@@ -67,8 +73,21 @@ void add_export_options(CLI::App& cmd, ExportArgs& a, const std::string& dir_opt
                  "coverage (refused, naming the first cell lost, if it would not)")
       ->check(real_in(0.0, 1e3))
       ->type_name("TOL_M");
-  cmd.add_option("--firmware", a.firmware, "Flight controller of qgc/wpl missions: px4, ardupilot")
-      ->capture_default_str();
+  cmd.add_option("--launch-height", a.launch_height,
+                 "Height Z (m, ship frame) of the ground a sortie takes off from and lands on "
+                 "below its launch site (default: the grid's bottom edge)")
+      ->check(real_in(-world::kMaxShipFrameM, world::kMaxShipFrameM))
+      ->type_name("Z_M");
+  cmd.add_option("--geoid-height", a.geoid_height,
+                 "The geoid's height above the WGS-84 ellipsoid at the ship (m): qgc and wpl write "
+                 "their home altitude above mean sea level (default: ellipsoidal, with a warning)")
+      ->check(real_in(-kMaxGeoidHeightM, kMaxGeoidHeightM))
+      ->type_name("N_M");
+  cmd.add_option("--firmware", a.firmwares,
+                 "Flight controller of qgc/wpl missions, repeatable: px4, ardupilot (default px4; "
+                 "with both, each file's name says which)")
+      ->allow_extra_args(false)
+      ->type_name("FIRMWARE");
   cmd.add_option("--finish", a.finish,
                  "After the last waypoint: land (at the home point) or rtl (return to launch)")
       ->capture_default_str();
@@ -298,7 +317,9 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
           std::pair{!a.launch.empty(), "launch"},
           std::pair{a.max_waypoints.has_value(), "max-waypoints"},
           std::pair{a.simplify.has_value(), "simplify"},
-          std::pair{a.firmware != defaults.firmware, "firmware"},
+          std::pair{a.launch_height.has_value(), "launch-height"},
+          std::pair{a.geoid_height.has_value(), "geoid-height"},
+          std::pair{!a.firmwares.empty(), "firmware"},
           std::pair{a.finish != defaults.finish, "finish"},
           std::pair{a.drone != defaults.drone, "drone"}, std::pair{a.force, "force"}}) {
       if (set)
@@ -309,13 +330,19 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
   ExportRequest r;
   r.dir = a.dir;
   if (!a.formats.empty()) r.formats = io::parse_export_formats(a.formats);
-  if (a.firmware == "ardupilot") {
-    r.settings.firmware = io::Firmware::kArduPilot;
-  } else if (a.firmware != "px4") {
-    throw ParameterError("firmware", fmt::format("'{}' is not a firmware (expected px4 or "
-                                                 "ardupilot)",
-                                                 a.firmware));
+  for (const auto& firmware : a.firmwares) {
+    io::Firmware f = io::Firmware::kPx4;
+    if (firmware == "ardupilot") {
+      f = io::Firmware::kArduPilot;
+    } else if (firmware != "px4") {
+      throw ParameterError("firmware", fmt::format("'{}' is not a firmware (expected px4 or "
+                                                   "ardupilot)",
+                                                   firmware));
+    }
+    auto& list = r.settings.firmwares;
+    if (std::find(list.begin(), list.end(), f) == list.end()) list.push_back(f);
   }
+  if (!r.settings.firmwares.empty()) r.settings.firmware = r.settings.firmwares.front();
   if (a.finish == "rtl") {
     r.settings.finish = io::FinishAction::kRtl;
   } else if (a.finish != "land") {
@@ -335,6 +362,8 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
     r.settings.max_waypoints = *a.max_waypoints;
   }
   if (a.simplify) r.settings.simplify_m = *a.simplify;
+  r.settings.launch_height_m = a.launch_height;
+  r.settings.geoid_height_m = a.geoid_height;
   if (!a.geo_file.empty()) {
     if (!a.origin.empty() || a.heading) {
       throw ParameterError("geo", "give either --geo FILE or --origin and --heading, not both");
@@ -396,16 +425,41 @@ void declare_export_files(io::OutputSet& outputs, const ExportRequest& request, 
   }
 }
 
+namespace {
+// The settings of an export of `plan`: a mission with launch sites flies from its own sites (its
+// trace's flights start and end there), and a battery-limited one is cut at the sorties its trace
+// records (plan and run pass their result's, which are the same).
+io::ExportSettings trace_settings(const ExportRequest& request, const io::ExportPlan& plan) {
+  auto settings = request.settings;
+  if (!plan.launch_sites.empty()) {
+    if (!settings.launch_sites.empty() && settings.launch_sites != plan.launch_sites) {
+      std::vector<std::string> sites;
+      for (const auto& c : plan.launch_sites) sites.push_back(fmt::format("{},{}", c.x, c.y));
+      throw ParameterError("launch",
+                           fmt::format("the trace's mission has its own launch sites ({}): "
+                                       "its flights start and end there",
+                                       fmt::join(sites, " ")));
+    }
+    settings.launch_sites = plan.launch_sites;
+  }
+  if (plan.battery_limited && settings.flown_sorties.empty()) {
+    settings.flown_sorties = io::recorded_sorties(plan);
+  }
+  return settings;
+}
+}  // namespace
+
 ExportWritten write_export(const nlohmann::json& trace, const std::string& source,
                            const ExportRequest& request, io::OutputSet& outputs) {
   const auto plan = io::export_plan(trace, source);
   const auto declared = declared_names(request, static_cast<int>(plan.uavs.size()));
   ExportWritten written;
   written.geo = export_geo(request, plan);
+  const auto settings = trace_settings(request, plan);
   std::vector<io::ExportFile> files;
   std::vector<std::string> dropped;
   for (const auto f : request.formats) {
-    for (auto& file : io::export_files(plan, f, written.geo, request.settings)) {
+    for (auto& file : io::export_files(plan, f, written.geo, settings)) {
       files.push_back(std::move(file));
     }
     if (!plan.no_fly.empty() && io::drops_no_fly(f)) dropped.emplace_back(io::to_string(f));

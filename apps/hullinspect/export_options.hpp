@@ -31,8 +31,10 @@ struct ExportArgs {
   std::string geo_file;
   std::vector<std::string> launch;  ///< X,Y grid positions
   std::optional<int> max_waypoints;
-  std::optional<double> simplify;  ///< metres
-  std::string firmware = "px4";
+  std::optional<double> simplify;       ///< metres
+  std::optional<double> launch_height;  ///< metres, ship frame Z
+  std::optional<double> geoid_height;   ///< metres above the WGS-84 ellipsoid
+  std::vector<std::string> firmwares;   ///< empty: px4
   std::string finish = "land";
   std::string drone = "m350";
   bool force = false;

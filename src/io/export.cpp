@@ -144,6 +144,14 @@ ExportPlan export_plan(const nlohmann::json& trace, const std::string& source) {
     for (const auto& row : *rows)
       plan.hull_rows.push_back(row.is_string() ? row.get<std::string>() : "");
   }
+  // The mission's launch sites (docs/trace-format.md, checked by read_trace).
+  if (auto launch = trace.find("launch"); launch != trace.end() && launch->is_object()) {
+    for (const auto& xy : launch->at("sites")) {
+      plan.launch_sites.push_back({xy.at(0).get<int>(), xy.at(1).get<int>()});
+    }
+    plan.site_of = launch->at("site_of").get<std::vector<int>>();
+  }
+  plan.battery_limited = trace.contains("battery");
   return plan;
 }
 
@@ -199,6 +207,34 @@ std::string mission_file_name(ExportFormat format, const MissionPart& part) {
   return fmt::format("{}-part{}.{}", stem, part.part, extension(format));
 }
 
+std::string_view to_string(Firmware firmware) {
+  return firmware == Firmware::kArduPilot ? "ardupilot" : "px4";
+}
+
+namespace {
+// The firmwares a qgc or wpl file is written for (ExportSettings::firmwares).
+std::vector<Firmware> firmwares_of(ExportFormat format, const ExportSettings& settings) {
+  if ((format != ExportFormat::kQgc && format != ExportFormat::kWpl) ||
+      settings.firmwares.size() < 2) {
+    return {settings.firmware};
+  }
+  return settings.firmwares;
+}
+}  // namespace
+
+std::vector<std::string> mission_file_names(ExportFormat format, const MissionPart& part,
+                                            const ExportSettings& settings) {
+  const auto name = mission_file_name(format, part);
+  const auto firmwares = firmwares_of(format, settings);
+  if (firmwares.size() < 2) return {name};
+  std::vector<std::string> names;
+  const auto dot = name.rfind('.');
+  for (const auto f : firmwares) {
+    names.push_back(fmt::format("{}.{}{}", name.substr(0, dot), to_string(f), name.substr(dot)));
+  }
+  return names;
+}
+
 std::vector<std::string> export_file_names(ExportFormat format, int uavs, bool geo_referenced) {
   std::vector<std::string> names;
   if (format == ExportFormat::kKml) return {kKmlPreview};
@@ -215,7 +251,8 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
                                                "LAT,LON,ALT and --heading DEG (or --geo FILE)",
                                                to_string(format)));
   }
-  auto sorties = plan_sorties(plan, settings.launch_sites, settings.flown_sorties);
+  auto sorties =
+      plan_sorties(plan, settings.launch_sites, settings.flown_sorties, settings.launch_height_m);
   if (settings.simplify_m > 0) {
     for (auto& s : sorties) simplify_sortie(plan, s, settings.simplify_m);
   }
@@ -226,18 +263,24 @@ std::vector<ExportFile> export_files(const ExportPlan& plan, ExportFormat format
   }
   const int cap =
       settings.max_waypoints > 0 ? settings.max_waypoints : default_waypoint_cap(format);
+  const auto firmwares = firmwares_of(format, settings);
   for (const auto& sortie : sorties) {
     for (const auto& part : split_sortie(sortie, cap)) {
-      const std::string name = mission_file_name(format, part);
+      const auto names = mission_file_names(format, part, settings);
+      const std::string& name = names.front();
       switch (format) {
         case ExportFormat::kCsv:
           files.push_back({name, detail::write_csv(plan, part, geo)});
           break;
         case ExportFormat::kQgc:
-          files.push_back({name, detail::write_qgc_plan(plan, part, *geo, settings)});
-          break;
         case ExportFormat::kWpl:
-          files.push_back({name, detail::write_wpl(plan, part, *geo, settings)});
+          for (std::size_t i = 0; i < firmwares.size(); ++i) {
+            auto one = settings;
+            one.firmware = firmwares[i];
+            files.push_back({names[i], format == ExportFormat::kQgc
+                                           ? detail::write_qgc_plan(plan, part, *geo, one)
+                                           : detail::write_wpl(plan, part, *geo, one)});
+          }
           break;
         case ExportFormat::kPath:
           files.push_back({name, detail::write_path_yaml(plan, part)});

@@ -54,8 +54,10 @@ std::vector<MissionItem> mission_items(const ExportPlan& plan, const MissionPart
   home.lat = round_to(home.lat, 1e10);  // as the waypoints' positions
   home.lon = round_to(home.lon, 1e10);
   const auto& sortie = *part.sortie;
+  // The leg leaving the sortie's waypoint s photographs when it is a leg of the plan: not on the
+  // flights between the launch site and the hull.
   const auto photographing = [&](std::size_t s) {
-    return s >= sortie.plan_begin() && s < sortie.plan_end();
+    return s >= sortie.plan_begin() && s + 1 < sortie.plan_end();
   };
   const bool ardupilot = settings.firmware == Firmware::kArduPilot;
 
@@ -85,7 +87,7 @@ std::vector<MissionItem> mission_items(const ExportPlan& plan, const MissionPart
     items.push_back({kNavWaypoint,
                      kFrameRelativeAlt,
                      {p.hold_s, acceptance_radius_m(plan), 0, p.yaw_deg, p.lat, p.lon, p.rel_alt}});
-    // Photos from the plan's first waypoint to its last: one every cell.
+    // Photos on the legs from the plan's first waypoint to its last: one every cell.
     if (photographing(s) != triggering) {
       triggering = !triggering;
       items.push_back(
@@ -99,10 +101,22 @@ std::vector<MissionItem> mission_items(const ExportPlan& plan, const MissionPart
     if (settings.finish == FinishAction::kRtl) {
       items.push_back({kNavRtl, kFrameMission, {0, 0, 0, 0, 0, 0, 0}});
     } else {
-      items.push_back({kNavLand, kFrameRelativeAlt, {0, 0, 0, kNaN, home.lat, home.lon, 0}});
+      // Land facing as the last waypoint did: an explicit yaw, so no file needs NaN's meaning
+      // ("keep the current heading"), which a WPL file cannot write (its unset value is 0).
+      const double yaw_deg = points.empty() ? 0.0 : points.back().yaw_deg;
+      items.push_back({kNavLand, kFrameRelativeAlt, {0, 0, 0, yaw_deg, home.lat, home.lon, 0}});
     }
   }
   return items;
+}
+
+// The home point with the height MAVLink's absolute frames mean, above mean sea level, when the
+// geoid's height is known; else its ellipsoidal height (docs/export.md, "Altitudes").
+GeoPoint home_above_sea_level(const MissionPart& part, const GeoReference& geo,
+                              const ExportSettings& settings) {
+  GeoPoint home = home_point(part, geo);
+  if (settings.geoid_height_m) home.alt -= *settings.geoid_height_m;
+  return home;
 }
 
 nlohmann::json param_json(double v) {
@@ -130,7 +144,7 @@ std::string write_qgc_plan(const ExportPlan& plan, const MissionPart& part, cons
   }
   // No geofence: a no-fly position is a vertical obstacle in front of the hull, and a QGC fence
   // polygon is horizontal (it would also forbid the legal flight above or below it).
-  const GeoPoint home = home_point(part, geo);
+  const GeoPoint home = home_above_sea_level(part, geo, settings);
   json doc = {
       {"fileType", "Plan"},
       {"version", 1},
@@ -154,14 +168,16 @@ std::string write_qgc_plan(const ExportPlan& plan, const MissionPart& part, cons
 std::string write_wpl(const ExportPlan& plan, const MissionPart& part, const GeoReference& geo,
                       const ExportSettings& settings) {
   // INDEX CURRENT FRAME COMMAND P1 P2 P3 P4 LAT LON ALT AUTOCONTINUE; line 0 is home (frame 0,
-  // absolute: the home point's ellipsoidal height).
-  const GeoPoint home = home_point(part, geo);
+  // absolute: above mean sea level when the geoid's height is given, else ellipsoidal).
+  const GeoPoint home = home_above_sea_level(part, geo, settings);
   std::string out = "QGC WPL 110\n";
   out += fmt::format("0\t1\t0\t{}\t0\t0\t0\t0\t{:.10f}\t{:.10f}\t{:.4f}\t1\n", kNavWaypoint,
                      home.lat, home.lon, home.alt);
   int index = 1;
+  // A parameter the command leaves unset (NaN in the .plan's items) is written 0, the format's
+  // value for an unused parameter.
   const auto number = [](double v, int digits) {
-    return std::isnan(v) ? std::string("nan") : fmt::format("{:.{}f}", v, digits);
+    return fmt::format("{:.{}f}", std::isnan(v) ? 0.0 : v, digits);
   };
   for (const auto& m : mission_items(plan, part, geo, settings)) {
     const auto& p = m.params;

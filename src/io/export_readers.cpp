@@ -172,7 +172,7 @@ ReadPlan read_wpl(std::string_view text, const std::string& source) {
                        fmt::format("expected 12 tab-separated fields, got {}", f.size()));
     double v[12];
     for (std::size_t j = 0; j < 12; ++j) {
-      // An unset parameter (P1–P4) is written nan.
+      // An unset parameter (P1–P4): hullinspect writes 0, QGroundControl nan.
       v[j] = j >= 4 && j < 8 && f[j] == "nan"
                  ? std::numeric_limits<double>::quiet_NaN()
                  : number(f[j], source, line, fmt::format("field {}", j + 1));

@@ -17,7 +17,8 @@ constexpr std::array<const char*, 8> kColours = {"#e41a1c", "#377eb8", "#4daf4a"
                                                  "#ff7f00", "#a65628", "#f781bf", "#999999"};
 
 std::vector<Sortie> exported_sorties(const ExportPlan& plan, const ExportSettings& settings) {
-  auto sorties = plan_sorties(plan, settings.launch_sites, settings.flown_sorties);
+  auto sorties =
+      plan_sorties(plan, settings.launch_sites, settings.flown_sorties, settings.launch_height_m);
   if (settings.simplify_m > 0) {
     for (auto& s : sorties) simplify_sortie(plan, s, settings.simplify_m);
   }
@@ -81,7 +82,11 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
   std::vector<std::vector<char>> seen(static_cast<std::size_t>(plan.height),
                                       std::vector<char>(static_cast<std::size_t>(plan.width), 0));
   for (const auto& s : sorties) {
-    mark_seen(plan, s.waypoints, seen);
+    // The photos: the legs of the plan, not the flights to and from the launch site.
+    mark_seen(plan,
+              std::span<const ExportWaypoint>(s.waypoints)
+                  .subspan(s.plan_begin(), s.plan_end() - s.plan_begin()),
+              seen);
     json files = json::object();
     json file_names = json::object();  // the sortie's files of each format, in flight order
     for (const auto f : formats) {
@@ -91,7 +96,9 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
       const auto parts = static_cast<int>(split.size());
       files[std::string(to_string(f))] = parts;
       json names = json::array();
-      for (const auto& part : split) names.push_back(mission_file_name(f, part));
+      for (const auto& part : split) {
+        for (auto& name : mission_file_names(f, part, settings)) names.push_back(std::move(name));
+      }
       file_names[std::string(to_string(f))] = std::move(names);
       if (parts > 1) {
         warnings.push_back(
@@ -219,7 +226,7 @@ nlohmann::json preflight_report(const nlohmann::json& trace, const ExportPlan& p
   for (const auto f : formats) {
     if (f == ExportFormat::kQgc || f == ExportFormat::kWpl) sea_level.emplace_back(to_string(f));
   }
-  if (!sea_level.empty()) {
+  if (!sea_level.empty() && !settings.geoid_height_m) {
     warnings.push_back(fmt::format(
         "{}: the planned home's altitude is its height above the WGS-84 ellipsoid, where the "
         "format means mean sea level (no geoid model); the waypoints are heights above home, "

@@ -88,19 +88,33 @@ std::vector<ExportWaypoint> transit(const ExportPlan& plan, const std::vector<gr
   return out;
 }
 
-// The take-off and landing point below a site: its plane-2 position at the grid's bottom edge.
-ShipPose home_below(const ExportPlan& plan, grid::Cell site) {
+// Waypoints of frames [a, b) of `states` (the trace's frames t0, t0 + 1, …), compressed on their
+// own; `transit`: their legs are flights between a launch site and the hull.
+std::vector<ExportWaypoint> flight_piece(const ExportPlan& plan, std::span<const GridState> states,
+                                         int t0, std::size_t a, std::size_t b, bool transit) {
+  const auto same = [&plan](grid::Cell p, grid::Cell q) { return plan.frame.same_surface(p, q); };
+  std::vector<ExportWaypoint> out;
+  for (auto w : compress_trajectory(states.subspan(a, b - a), same)) {
+    w.t += t0 + static_cast<int>(a);
+    if (transit && w.action == WaypointAction::kMove) w.action = WaypointAction::kTransit;
+    out.push_back({w, plan.frame.pose(w.cell, w.z)});
+  }
+  return out;
+}
+
+// The take-off and landing point below a site: its plane-2 position at the ground's height
+// (unset: the grid's bottom edge).
+ShipPose home_below(const ExportPlan& plan, grid::Cell site, std::optional<double> home_z) {
   const auto p = plan.frame.pose(site, 2);
-  return {p.x, p.y, plan.frame.spec().z0, p.yaw};
+  return {p.x, p.y, home_z.value_or(plan.frame.spec().z0), p.yaw};
 }
 
 // UAV k's sorties of a battery-limited mission: each the trace's frames from its take-off to its
 // landing (or the last frame), compressed on its own, so that every file starts at the site and
-// ends there.
+// ends there; its flights out and home are its transit.
 std::vector<Sortie> cut_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites,
                                 std::size_t k, const std::vector<FlownSortie>& flown) {
   const auto& states = plan.states[k];
-  const auto same = [&plan](grid::Cell a, grid::Cell b) { return plan.frame.same_surface(a, b); };
   std::vector<Sortie> out;
   if (states.empty()) return out;  // a UAV with no recorded state flew no sortie
   for (std::size_t n = 0; n < flown.size(); ++n) {
@@ -122,11 +136,10 @@ std::vector<Sortie> cut_sorties(const ExportPlan& plan, const std::vector<grid::
     s.flown = true;
     const auto slice = std::span<const GridState>(states).subspan(
         static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin + 1));
-    for (auto w : compress_trajectory(slice, same)) {
-      w.t += begin;  // the trace's clock
-      s.waypoints.push_back({w, plan.frame.pose(w.cell, w.z)});
-    }
-    s.home = home_below(plan, s.site);
+    auto flight = compress_flight(plan, slice, begin);  // times stay the trace's
+    s.waypoints = std::move(flight.waypoints);
+    s.transit_in = flight.transit_in;
+    s.transit_out = flight.transit_out;
     out.push_back(std::move(s));
   }
   return out;
@@ -134,8 +147,66 @@ std::vector<Sortie> cut_sorties(const ExportPlan& plan, const std::vector<grid::
 
 }  // namespace
 
+Flight compress_flight(const ExportPlan& plan, std::span<const GridState> states, int t0) {
+  Flight f;
+  if (states.empty()) return f;
+  // The frames up to the last one the UAV was active in (a failed UAV flies no further).
+  std::size_t end = states.size();
+  while (end > 1 && !states[end - 1].active) --end;
+  std::size_t w0 = 0;  // the first frame at work
+  while (w0 < end && states[w0].away) ++w0;
+  if (w0 == end) {  // never at work: all of it is transit
+    f.waypoints = flight_piece(plan, states, t0, 0, end, true);
+    f.transit_in = static_cast<int>(f.waypoints.size());
+    return f;
+  }
+  std::size_t w1 = end - 1;  // the last frame at work
+  while (states[w1].away) --w1;
+  // The step in which the mission's last cell became known ends with the UAV turned home, so the
+  // trace shows it away; but it made that step's move at work and sensed on arrival. A UAV sent
+  // home for its battery starts its flight home where it stood.
+  if (w1 + 1 < end) {
+    const auto& a = states[w1];
+    const auto& b = states[w1 + 1];
+    if (b.airborne && !b.in_transit && (b.pos != a.pos || b.z != a.z)) ++w1;
+  }
+  if (w0 > 0) {
+    f.waypoints = flight_piece(plan, states, t0, 0, w0 + 1, true);
+    // Its last waypoint is the arrival at the work's start: the first of the work's own.
+    f.transit_in = static_cast<int>(f.waypoints.size()) - 1;
+  }
+  const auto work = flight_piece(plan, states, t0, w0, w1 + 1, false);
+  f.waypoints.insert(f.waypoints.end(), work.begin() + (w0 > 0 ? 1 : 0), work.end());
+  if (w1 + 1 < end) {
+    const auto home = flight_piece(plan, states, t0, w1, end, true);
+    f.waypoints.insert(f.waypoints.end(), home.begin() + 1, home.end());  // [0] ends the work
+    f.transit_out = static_cast<int>(home.size()) - 1;
+  }
+  return f;
+}
+
+std::vector<std::vector<FlownSortie>> recorded_sorties(const ExportPlan& plan) {
+  std::vector<std::vector<FlownSortie>> out;
+  for (std::size_t k = 0; k < plan.states.size(); ++k) {
+    auto& sorties = out.emplace_back();
+    const auto& states = plan.states[k];
+    const int site = k < plan.site_of.size() ? plan.site_of[k] : 0;
+    for (std::size_t t = 0; t < states.size(); ++t) {
+      const bool before = t > 0 && states[t - 1].airborne;
+      if (states[t].airborne && !before) {
+        // Airborne from frame 0: taken off in no time; else the step from the frame before.
+        sorties.push_back({t == 0 ? 0 : static_cast<int>(t) - 1, -1, site});
+      } else if (!states[t].airborne && before && !sorties.empty()) {
+        sorties.back().landing = static_cast<int>(t);
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites,
-                                 const std::vector<std::vector<FlownSortie>>& flown_sorties) {
+                                 const std::vector<std::vector<FlownSortie>>& flown_sorties,
+                                 std::optional<double> home_z) {
   for (const auto& s : sites) check_site(plan, s);
   std::vector<Sortie> sorties;
   for (std::size_t k = 0; k < plan.uavs.size(); ++k) {
@@ -143,7 +214,9 @@ std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid:
       for (auto& s : cut_sorties(plan, sites, k, flown_sorties[k])) sorties.push_back(std::move(s));
       continue;
     }
-    const auto& flown = plan.uavs[k];
+    // The trace's flight; with the mission's own launch sites it flies out from one and home.
+    auto flight = compress_flight(plan, plan.states[k], 0);
+    const auto& flown = flight.waypoints;
     Sortie s;
     s.uav = static_cast<int>(k);
     if (flown.empty()) continue;
@@ -167,13 +240,14 @@ std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid:
       // starts on plane 1 (its start waypoint is then the descent).
       if (first.grid.z == 2) legs_in.pop_back();
       s.waypoints = legs_in;
-      s.transit_in = static_cast<int>(legs_in.size());
       s.waypoints.insert(s.waypoints.end(), flown.begin(), flown.end());
       if (first.grid.z != 2) {  // the plan's start on plane 1 is reached by a descent
-        auto& start = s.waypoints[static_cast<std::size_t>(s.transit_in)].grid;
+        auto& start = s.waypoints[legs_in.size()].grid;
         start.action = WaypointAction::kPlaneChange;
         start.duration = plan.plane_change_steps;
       }
+      s.transit_in = static_cast<int>(legs_in.size()) + flight.transit_in;
+      s.transit_out = flight.transit_out;
       // Back: climb to plane 2 first if the plan ends on plane 1, then the path home.
       if (last.grid.z != 2) {
         ExportWaypoint up{{last.grid.t + plan.plane_change_steps, last.grid.cell, 2,
@@ -189,10 +263,23 @@ std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid:
         ++s.transit_out;
       }
     } else {
-      s.waypoints = flown;
+      s.transit_in = flight.transit_in;
+      s.transit_out = flight.transit_out;
+      s.waypoints = std::move(flight.waypoints);
     }
-    s.home = home_below(plan, s.site);
     sorties.push_back(std::move(s));
+  }
+  for (auto& s : sorties) {
+    s.home = home_below(plan, s.site, home_z);
+    const double first_z = s.waypoints.empty() ? s.home.z : s.waypoints.front().pose.z;
+    if (home_z && s.home.z > first_z + 1e-9) {
+      throw ParameterError(
+          "launch-height",
+          fmt::format("the ground at {} m lies above UAV {}'s first waypoint (Z = {:.4f} m, the "
+                      "launch site {},{} on plane 2): a sortie takes off upward to it; give a "
+                      "launch site at the ground's height or above",
+                      s.home.z, s.uav, first_z, s.site.x, s.site.y));
+    }
   }
   return sorties;
 }

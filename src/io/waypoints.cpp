@@ -27,6 +27,14 @@ std::vector<std::vector<GridState>> trace_states(const nlohmann::json& trace) {
   const auto& frames = trace.at("frames");
   // Values per UAV: the paper's five, eight with launch sites (docs/trace-format.md).
   const std::size_t fields = trace.contains("uav_fields") ? trace["uav_fields"].size() : 5;
+  // The launch fields' offsets, when the trace has them.
+  std::size_t airborne = fields, away = fields;
+  if (const auto names = trace.find("uav_fields"); names != trace.end()) {
+    for (std::size_t i = 0; i < names->size(); ++i) {
+      if ((*names)[i] == "airborne") airborne = i;
+      if ((*names)[i] == "away_left") away = i;
+    }
+  }
   const std::size_t uavs = frames.at(0).at("u").size() / fields;
   std::vector<std::vector<GridState>> states(uavs);
   for (auto& s : states) s.reserve(frames.size());
@@ -39,6 +47,8 @@ std::vector<std::vector<GridState>> trace_states(const nlohmann::json& trace) {
       s.z = u[o + 2].get<int>();
       s.in_transit = u[o + 3].get<int>() > 0;
       s.active = u[o + 4].get<int>() != 0;
+      if (airborne < fields) s.airborne = u[o + airborne].get<int>() != 0;
+      if (away < fields) s.away = !s.airborne || u[o + away].get<int>() > 0;
       states[k].push_back(s);
     }
   }

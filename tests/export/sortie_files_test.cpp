@@ -1,7 +1,8 @@
 // The flight files of a battery-limited mission (docs/export.md "Sorties, launch sites and
 // waypoint caps"): one set of files per UAV and sortie, each a flight from its launch site back to
 // it, together the path the planned mission flies; split by a waypoint cap into parts that resume
-// where the last one ended; listed per sortie by the pre-flight report.
+// where the last one ended; listed per sortie by the pre-flight report; written the same by
+// `export` of the mission's trace; photographing only on the legs at work.
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 
@@ -19,6 +21,7 @@
 #include "hullinspect/io/trace_reader.hpp"
 #include "support/cli_runner.hpp"
 #include "support/text_fields.hpp"
+#include "support/zip_entries.hpp"
 
 namespace hullinspect::testing {
 namespace {
@@ -274,12 +277,130 @@ TEST_F(SortieFiles, ThePreflightReportListsTheFilesOfEverySortie) {
   EXPECT_NE(md.find("uav1_sortie2.plan"), std::string::npos) << md;
 }
 
-TEST_F(SortieFiles, ExportOfATraceSaysItCannotCutSorties) {
-  const auto r = run_cli({"export", dir_ + "/trace.json", "--out", dir_ + "/from-trace"});
+// The names and contents of the files in `dir`.
+std::map<std::string, std::string> files_in(const std::string& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    out[e.path().filename().string()] = io::read_file(e.path().string());
+  }
+  return out;
+}
+
+// `export` of `trace` into `out` with the fixture's formats and options: the files `plan
+// --export` wrote, byte for byte.
+void expect_export_writes_the_planned_files(const std::string& trace, const std::string& out,
+                                            const std::string& planned_dir) {
+  const auto r = run_cli({"export", trace, "--out", out, "--format", "all", "--origin",
+                          "53.5461,9.9665,3", "--heading", "117", "--max-waypoints", "1000"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("the export of a trace does not cut it into sorties"), std::string::npos)
-      << r.out;
-  EXPECT_TRUE(fs::exists(dir_ + "/from-trace/uav0.csv"));
+  const auto planned = files_in(planned_dir);
+  const auto exported = files_in(out);
+  ASSERT_TRUE(planned.contains("uav1_sortie2.plan"));
+  ASSERT_EQ(planned.size(), exported.size());
+  for (const auto& [name, content] : planned) {
+    ASSERT_TRUE(exported.contains(name)) << name;
+    EXPECT_TRUE(exported.at(name) == content) << name;
+  }
+}
+
+TEST_F(SortieFiles, ExportOfTheTraceCutsTheSameSortiesAsPlan) {
+  // `export` cuts the trace at the take-offs and landings its airborne flags record: the same
+  // files as `plan --export` cut at the mission's own sorties.
+  expect_export_writes_the_planned_files(dir_ + "/trace.json", dir_ + "/from-trace",
+                                         dir_ + "/files");
+}
+
+TEST_F(SortieFiles, ExportOfARunTraceEqualsThePlannedFiles) {
+  // Lawnmower's route does not depend on what it senses: the mission `run` flies is the one
+  // `plan` plans, and the export of its trace is the plan's files.
+  const auto r = run_cli({"run", "-a", "lawnmower", "-n", "2", "--launch", "0,0", "--endurance",
+                          "700", "--trace", dir_ + "/run-trace.json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_export_writes_the_planned_files(dir_ + "/run-trace.json", dir_ + "/from-run",
+                                         dir_ + "/files");
+}
+
+TEST_F(SortieFiles, ATraceWithLaunchSitesKeepsThem) {
+  const auto r =
+      run_cli({"export", dir_ + "/trace.json", "--out", dir_ + "/moved", "--launch", "5,0"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "hullinspect: --launch: the trace's mission has its own launch sites (0,0): its "
+            "flights start and end there\n");
+  EXPECT_FALSE(fs::exists(dir_ + "/moved"));
+}
+
+// Per leg of a file (the leg leaving its waypoint i), whether the camera photographs on it.
+std::vector<bool> litchi_photos(const std::string& text) {
+  std::vector<bool> out;
+  const auto rows = lines_of(text);
+  // The last row leaves no leg (and photographs nothing).
+  for (std::size_t i = 1; i + 1 < rows.size(); ++i) {
+    out.push_back(split(rows[i], ',').at(45) != "-1");
+  }
+  return out;
+}
+std::vector<bool> mavlink_photos(const io::ReadPlan& plan) {
+  // The trigger's state on reaching each NAV_WAYPOINT: the leg before it photographed.
+  std::vector<bool> on_arrival;
+  bool on = false;
+  for (const auto& item : plan.items) {
+    if (item.command == 206) on = item.params[0] > 0;  // DO_SET_CAM_TRIGG_DIST
+    if (item.command == 16) on_arrival.push_back(on);
+  }
+  return std::vector<bool>(on_arrival.begin() + 1, on_arrival.end());
+}
+std::vector<bool> dji_photos(const std::string& kmz_path, std::size_t waypoints) {
+  pugi::xml_document doc;
+  EXPECT_TRUE(doc.load_string(unzip(kmz_path)["wpmz/waylines.wpml"].c_str())) << kmz_path;
+  std::vector<bool> out(waypoints - 1, false);
+  for (const auto& node : doc.select_nodes("//*[local-name()='actionGroup']")) {
+    const auto g = node.node();
+    if (std::string(g.child("wpml:actionTrigger").child_value("wpml:actionTriggerType")) !=
+        "multipleDistance") {
+      continue;
+    }
+    const auto begin = std::stoul(g.child_value("wpml:actionGroupStartIndex"));
+    const auto end = std::stoul(g.child_value("wpml:actionGroupEndIndex"));
+    for (auto i = begin; i < end; ++i) out.at(i) = true;
+  }
+  return out;
+}
+
+// Whether UAV k senses in frame t (docs/model.md §12): at work, and in the frame its flight home
+// begins when it moved into it (the step that made the mission's last cell known ends with every
+// UAV turned home after it sensed).
+bool senses(const std::vector<io::GridState>& states, std::size_t t) {
+  if (!states[t].away) return true;
+  if (t == 0 || states[t - 1].away || !states[t].airborne || states[t].in_transit) return false;
+  return states[t].pos != states[t - 1].pos || states[t].z != states[t - 1].z;
+}
+
+TEST_F(SortieFiles, OnlyTheLegsAtWorkTakePhotos) {
+  // The flight out from the site and home senses nothing (docs/model.md §12): no format takes
+  // photos there, and every leg at work does.
+  const auto states = io::trace_states(trace_);
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (std::size_t n = 1; n <= sorties(k).size(); ++n) {
+      const auto stem = fmt::format("uav{}_sortie{}", k, n);
+      const auto rows = io::read_export_csv(file(stem + ".csv"), stem);
+      std::vector<bool> want;
+      for (std::size_t i = 0; i + 1 < rows.waypoints.size(); ++i) {
+        bool work = true;
+        for (auto t = static_cast<std::size_t>(rows.waypoints[i].t);
+             t <= static_cast<std::size_t>(rows.waypoints[i + 1].t); ++t) {
+          work = work && senses(states[k], t);
+        }
+        want.push_back(work);
+      }
+      ASSERT_GT(std::count(want.begin(), want.end(), true), 0) << stem;
+      ASSERT_GT(std::count(want.begin(), want.end(), false), 0) << stem;
+      EXPECT_EQ(litchi_photos(file(stem + ".litchi.csv")), want) << stem;
+      EXPECT_EQ(mavlink_photos(io::read_qgc_plan(file(stem + ".plan"), stem)), want) << stem;
+      EXPECT_EQ(mavlink_photos(io::read_wpl(file(stem + ".waypoints"), stem)), want) << stem;
+      EXPECT_EQ(dji_photos(dir_ + "/files/" + stem + ".kmz", rows.waypoints.size()), want) << stem;
+    }
+  }
 }
 
 TEST(SortieFilesUnlimited, WithoutAnEnduranceEachUavFliesOneFile) {

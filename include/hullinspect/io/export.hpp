@@ -46,12 +46,21 @@ DjiDrone parse_dji_drone(const std::string& name);
 
 /// How the files are cut and what they ask of the vehicle.
 struct ExportSettings {
-  Firmware firmware = Firmware::kPx4;
+  Firmware firmware = Firmware::kPx4;  ///< the firmware a qgc or wpl file is written for
+  /// The firmwares to write qgc and wpl files for; with more than one, each file's name says
+  /// which (`uav<k>.px4.plan`, `uav<k>.ardupilot.plan`). Empty: `firmware` alone.
+  std::vector<Firmware> firmwares;
   FinishAction finish = FinishAction::kLand;
   DjiDrone drone = DjiDrone::kM350;
   std::vector<grid::Cell> launch_sites;  ///< empty: each UAV takes off below its start position
-  int max_waypoints = 0;                 ///< 0: each format's default cap
-  double simplify_m = 0;                 ///< 0: no simplification (io/simplify.hpp)
+  /// The launch sites' ground (where a sortie takes off and lands) at this height Z of the ship
+  /// frame, metres; unset: the grid's bottom edge, Z0.
+  std::optional<double> launch_height_m;
+  /// The geoid's height above the WGS-84 ellipsoid at the ship, metres (N): the heights a format
+  /// means above mean sea level are written h − N. Unset: none is, they stay ellipsoidal.
+  std::optional<double> geoid_height_m;
+  int max_waypoints = 0;  ///< 0: each format's default cap
+  double simplify_m = 0;  ///< 0: no simplification (io/simplify.hpp)
   /// Per UAV, the sorties of a battery-limited mission (empty: one sortie per UAV). Each becomes
   /// its own mission files, `uav<k>_sortie<s>.<ext>` (plan_sorties).
   std::vector<std::vector<FlownSortie>> flown_sorties;
@@ -72,6 +81,10 @@ struct ExportPlan {
   std::vector<grid::Cell> no_fly;
   std::vector<std::string> hull_rows;  ///< the trace's truth rows ('.' = not hull)
   double step_seconds = 1.0;           ///< the trace's step in seconds (docs/model.md)
+  /// The mission's own launch sites (the trace's `launch`; empty without) and each UAV's.
+  std::vector<grid::Cell> launch_sites{};
+  std::vector<int> site_of{};
+  bool battery_limited = false;  ///< the mission had an endurance (the trace's `battery`)
   /// A waypoint's time or duration in steps, in seconds.
   double seconds(int steps) const { return steps * step_seconds; }
   bool is_hull(grid::Cell c) const;
@@ -91,6 +104,14 @@ struct ExportFile {
 /// `uav<k>_sortie<s>-part<p>.<ext>` (s and p from 1). Extensions: csv, plan (qgc), waypoints
 /// (wpl), path.yaml, litchi.csv, kmz.
 std::string mission_file_name(ExportFormat format, const MissionPart& part);
+
+/// "px4", "ardupilot".
+std::string_view to_string(Firmware firmware);
+
+/// The files a mission part is written as in `format`: mission_file_name's, or for qgc and wpl
+/// with several firmwares one per firmware, its name before the extension (`uav0.px4.plan`).
+std::vector<std::string> mission_file_names(ExportFormat format, const MissionPart& part,
+                                            const ExportSettings& settings);
 
 /// The names of the files written for `uavs` UAVs when no sortie is split (known before any
 /// mission runs, so a command can check its outputs first).

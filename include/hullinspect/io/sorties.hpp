@@ -6,6 +6,7 @@
 // into consecutive parts; each later part starts where the previous one ended.
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -40,7 +41,7 @@ struct Sortie {
   /// True when cut from the mission's sorties (a battery-limited mission): its files are named
   /// per sortie and its waypoints are the trace's flight from take-off to landing.
   bool flown = false;
-  ShipPose home;  ///< take-off and landing point: below the site, at the grid's bottom edge
+  ShipPose home;  ///< take-off and landing point: below the site, on its ground
   std::vector<ExportWaypoint> waypoints;  ///< from the site's plane-2 position back to it
   int transit_in = 0;   ///< waypoints[0, transit_in) fly from the site to the plan's start
   int transit_out = 0;  ///< the last transit_out waypoints fly back to the site
@@ -58,8 +59,34 @@ struct Sortie {
 /// flies one sortie each instead: the trace's frames from its take-off to its landing at
 /// `sites[site]`, compressed as the trace's waypoints (times stay the trace's). Throws
 /// ParameterError("launch") when such a sortie names a site `sites` does not have.
+/// `home_z`: the ground's height Z (ship frame, m) below every site, where a sortie takes off and
+/// lands (unset: the grid's bottom edge); throws ParameterError("launch-height") when it is given
+/// and lies above a sortie's first waypoint (the take-off climbs to it).
 std::vector<Sortie> plan_sorties(const ExportPlan& plan, const std::vector<grid::Cell>& sites,
-                                 const std::vector<std::vector<FlownSortie>>& flown = {});
+                                 const std::vector<std::vector<FlownSortie>>& flown = {},
+                                 std::optional<double> home_z = std::nullopt);
+
+/// A UAV's flight compressed to waypoints, its transit marked.
+struct Flight {
+  std::vector<ExportWaypoint> waypoints;
+  int transit_in = 0;   ///< waypoints[0, transit_in) fly from the launch site to the work
+  int transit_out = 0;  ///< the last transit_out waypoints fly home from it
+};
+
+/// The waypoints of `states`, the trace's frames t0, t0 + 1, …: the frames away from the hull
+/// before the first frame at work and after the last (the take-off, the flight out from the launch
+/// site, the flight home and the landing, where the UAV senses nothing: GridState::away) are
+/// compressed on their own and their moves become `transit`, so the work's waypoints start and end
+/// where the work does. The frame the flight home begins in counts as work when the UAV moved into
+/// it (the simulator senses there, then turns the UAV home). Without away frames:
+/// compress_trajectory's waypoints, no transit.
+Flight compress_flight(const ExportPlan& plan, std::span<const GridState> states, int t0);
+
+/// The sorties the trace's airborne flags record per UAV, by sim::SortieRecord's rule: a take-off
+/// at the frame before the first one airborne (0 for a UAV airborne at frame 0), the landing at
+/// the next frame on the ground (−1 while still airborne at the end), at the UAV's launch site
+/// (ExportPlan::site_of). Empty lists for a trace without launch sites.
+std::vector<std::vector<FlownSortie>> recorded_sorties(const ExportPlan& plan);
 
 /// The index of the site nearest `start` (the rule of plan_sorties).
 std::size_t nearest_site(grid::Cell start, const std::vector<grid::Cell>& sites);

@@ -34,6 +34,11 @@ struct GridState {
   int z = 2;
   bool in_transit = false;  ///< between planes (z is then the plane being left)
   bool active = true;
+  /// With launch sites (docs/trace-format.md): false on the ground at the site.
+  bool airborne = true;
+  /// On the ground, or flying between the launch site and the hull (the trace's away_left > 0):
+  /// the UAV senses nothing there (docs/model.md §12).
+  bool away = false;
 };
 
 /// A waypoint on the grid: the UAV is at (cell, z) at time t (seconds = steps) after `duration`
