@@ -25,6 +25,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -49,25 +51,21 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
+  // Each option takes one value: a name-to-reader table, read in pairs.
+  const std::map<std::string, std::function<void(const std::string&)>> readers = {
+      {"--algorithms", [&](const std::string& v) { o.algorithms = bench::split(v, ','); }},
+      {"--seeds", [&](const std::string& v) { o.seeds = std::stoi(v); }},
+      {"--endurance", [&](const std::string& v) { o.endurance = std::stod(v); }},
+      {"--separation", [&](const std::string& v) { o.separation = std::stoi(v); }}};
+  for (int i = 1; i < argc; i += 2) {
     const std::string arg = argv[i];
-    if (i + 1 >= argc) throw std::invalid_argument(fmt::format("{}: expected a value", arg));
-    const std::string value = argv[++i];
+    const auto reader = readers.find(arg);
+    if (reader == readers.end()) throw std::invalid_argument(arg + ": unknown option");
+    if (i + 1 >= argc) throw std::invalid_argument(arg + ": expected a value");
     try {
-      if (arg == "--algorithms") {
-        o.algorithms = bench::split(value, ',');
-      } else if (arg == "--seeds") {
-        o.seeds = std::stoi(value);
-      } else if (arg == "--endurance") {
-        o.endurance = std::stod(value);
-      } else if (arg == "--separation") {
-        o.separation = std::stoi(value);
-      } else {
-        throw std::invalid_argument(fmt::format("{}: unknown option", arg));
-      }
-    } catch (const std::logic_error& e) {
-      if (std::string(e.what()).starts_with(arg)) throw;
-      throw std::invalid_argument(fmt::format("{}: expected a number, got '{}'", arg, value));
+      reader->second(argv[i + 1]);
+    } catch (const std::logic_error&) {
+      throw std::invalid_argument(arg + ": expected a number, got '" + argv[i + 1] + "'");
     }
   }
   if (o.algorithms.empty() || o.seeds < 1 || o.endurance <= 0 || o.separation < 1)
