@@ -1,6 +1,8 @@
 #pragma once
 // Small helpers shared by the benchmark programs that parse their own options and time themselves.
 
+#include <algorithm>
+#include <cstddef>
 #include <ctime>
 #include <sstream>
 #include <string>
@@ -23,6 +25,16 @@ inline std::vector<std::string> split(const std::string& text, char sep) {
     if (!item.empty()) out.push_back(item);
   }
   return out;
+}
+
+}  // namespace hullinspect::bench
+
+namespace hullinspect::bench {
+
+/// The median of `v` (the upper one of an even count); `v` must not be empty.
+inline double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
 }
 
 }  // namespace hullinspect::bench

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "hullinspect/core/errors.hpp"
@@ -77,6 +78,84 @@ std::string table(const std::vector<std::vector<std::string>>& rows) {
   return out;
 }
 
+// The bounds of the missions that reached a time: the ratio "(×r)" divides the mean time by the
+// mean bound of the same missions, not of every mission of the cell.
+struct BoundOfReached {
+  double sum = 0;
+  int count = 0;
+  void add(std::optional<double> time, std::optional<double> bound) {
+    if (!time || !bound) return;
+    sum += *bound;
+    ++count;
+  }
+  double mean_bound() const { return count == 0 ? 0 : sum / count; }
+};
+
+struct Paired {
+  BoundOfReached t_c, t_m;
+};
+
+struct SortieColumns {
+  int sorties, flight, crashes, battery;
+};
+
+// A run that flew sorties (one with launch sites) adds its per-UAV sorties and flight seconds
+// (summed here, divided by the runs at the end), its smallest battery margin and its crashes.
+template <class At>
+void add_sorties(SummaryRow& row, const At& at, const std::string& source, int line,
+                 const SortieColumns& c) {
+  const int uavs = std::max(row.uavs, 1);
+  const int sorties = csv_int(at(c.sorties), source, line, "sorties");
+  if (sorties == 0) return;
+  auto& s = row.sorties;
+  ++s.runs;
+  s.per_uav += static_cast<double>(sorties) / uavs;
+  s.flight_s_per_uav += csv_seconds(at(c.flight), source, line, "flight_s") / uavs;
+  s.battery_crashes += csv_int(at(c.crashes), source, line, "battery_crashes");
+  if (!at(c.battery).empty()) {
+    const double margin = csv_seconds(at(c.battery), source, line, "min_battery_s");
+    s.min_battery_s = std::min(s.min_battery_s.value_or(margin), margin);
+  }
+}
+
+using TableKey = std::tuple<std::string, int, int>;  // (swept value, s2, n)
+
+// The group's sorties, one row per (swept value, s2, n, algorithm) that flew any; empty when none.
+std::string sorties_table(
+    const std::string& group, bool is_sweep, const std::vector<TableKey>& params,
+    const std::vector<std::string>& algorithms,
+    const std::map<std::pair<TableKey, std::string>, const SummaryRow*>& cell) {
+  std::vector<std::vector<std::string>> t;
+  std::vector<std::string> header;
+  if (is_sweep) header.push_back(group);
+  header.insert(header.end(),
+                {"s2", "n", "algorithm", "runs", "sorties per UAV", "flight per UAV (s)",
+                 "smallest battery margin (s)", "battery crashes"});
+  t.push_back(header);
+  for (const auto& p : params) {
+    for (const auto& a : algorithms) {
+      const auto it = cell.find({p, a});
+      if (it == cell.end() || it->second->sorties.runs == 0) continue;
+      const SummaryRow::Sorties& s = it->second->sorties;
+      std::vector<std::string> line;
+      if (is_sweep) line.push_back(std::get<0>(p));
+      line.insert(line.end(),
+                  {std::to_string(std::get<1>(p)), std::to_string(std::get<2>(p)), a,
+                   std::to_string(s.runs), fmt::format("{:.2f}", s.per_uav),
+                   fmt::format("{:.1f}", s.flight_s_per_uav),
+                   s.min_battery_s ? fmt::format("{:g}", *s.min_battery_s) : "unlimited",
+                   std::to_string(s.battery_crashes)});
+      t.push_back(std::move(line));
+    }
+  }
+  if (t.size() == 1) return "";
+  return fmt::format(
+             "### {}{} — sorties: per UAV the mean sorties and flight time over the runs, the "
+             "smallest battery margin flown by any UAV, the crashes\n\n",
+             is_sweep ? "sweep of " : "", group) +
+         table(t) + "\n";
+}
+
 }  // namespace
 
 std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& source) {
@@ -91,9 +170,16 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
   const int c_tm = runs.column("T_m", source);
   const int c_btc = runs.find_column("bound_T_c");
   const int c_btm = runs.find_column("bound_T_m");
+  // Sorties: runs.csv files written before batteries lack these columns.
+  const int c_sorties = runs.find_column("sorties");
+  const int c_flight = runs.find_column("flight_s");
+  const int c_crashes = runs.find_column("battery_crashes");
+  const int c_battery = runs.find_column("min_battery_s");
+  const bool has_sorties = c_sorties >= 0 && c_flight >= 0 && c_crashes >= 0 && c_battery >= 0;
 
   std::vector<SummaryRow> rows;
   std::vector<std::vector<double>> tc, tm, btc, btm;
+  std::vector<Paired> paired;
   std::map<std::tuple<std::string, int, int, std::string>, std::size_t> index;
   int line = 1;
   for (const auto& r : runs.rows) {
@@ -116,57 +202,107 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
       tm.emplace_back();
       btc.emplace_back();
       btm.emplace_back();
+      paired.emplace_back();
     }
-    SummaryRow& row = rows[it->second];
+    const std::size_t i = it->second;
+    SummaryRow& row = rows[i];
     ++row.runs;
     if (at(c_complete) != "1") ++row.incomplete;
-    if (!at(c_tc).empty()) tc[it->second].push_back(csv_seconds(at(c_tc), source, line, "T_c"));
-    if (!at(c_tm).empty()) tm[it->second].push_back(csv_seconds(at(c_tm), source, line, "T_m"));
-    if (c_btc >= 0 && !at(c_btc).empty())
-      btc[it->second].push_back(csv_seconds(at(c_btc), source, line, "bound_T_c"));
-    if (c_btm >= 0 && !at(c_btm).empty())
-      btm[it->second].push_back(csv_seconds(at(c_btm), source, line, "bound_T_m"));
+    const auto time = [&](int c, const char* name) -> std::optional<double> {
+      if (c < 0 || at(c).empty()) return std::nullopt;
+      return csv_seconds(at(c), source, line, name);
+    };
+    const auto t_c = time(c_tc, "T_c");
+    const auto t_m = time(c_tm, "T_m");
+    const auto b_c = time(c_btc, "bound_T_c");
+    const auto b_m = time(c_btm, "bound_T_m");
+    if (t_c) tc[i].push_back(*t_c);
+    if (t_m) tm[i].push_back(*t_m);
+    if (b_c) btc[i].push_back(*b_c);
+    if (b_m) btm[i].push_back(*b_m);
+    paired[i].t_c.add(t_c, b_c);
+    paired[i].t_m.add(t_m, b_m);
+    if (has_sorties)
+      add_sorties(row, at, source, line, {c_sorties, c_flight, c_crashes, c_battery});
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     rows[i].t_c = stats(tc[i]);
     rows[i].t_m = stats(tm[i]);
     rows[i].bound_t_c = stats(btc[i]);
     rows[i].bound_t_m = stats(btm[i]);
+    rows[i].t_c_bound = paired[i].t_c.mean_bound();
+    rows[i].t_m_bound = paired[i].t_m.mean_bound();
+    auto& s = rows[i].sorties;
+    if (s.runs > 0) {
+      s.per_uav /= s.runs;
+      s.flight_s_per_uav /= s.runs;
+    }
   }
   return rows;
 }
 
 std::string summary_csv(const std::vector<SummaryRow>& rows) {
-  std::string out =
-      csv_line({"scenario",       "sweep",      "sweep_value", "s2",         "uavs",
-                "algorithm",      "runs",       "incomplete",  "T_c_count",  "T_c_mean",
-                "T_c_std",        "T_m_count",  "T_m_mean",    "T_m_std",    "bound_T_c_mean",
-                "bound_T_m_mean", "T_c_ci_low", "T_c_ci_high", "T_m_ci_low", "T_m_ci_high"}) +
-      "\n";
+  std::string out = csv_line({"scenario",
+                              "sweep",
+                              "sweep_value",
+                              "s2",
+                              "uavs",
+                              "algorithm",
+                              "runs",
+                              "incomplete",
+                              "T_c_count",
+                              "T_c_mean",
+                              "T_c_std",
+                              "T_m_count",
+                              "T_m_mean",
+                              "T_m_std",
+                              "bound_T_c_mean",
+                              "bound_T_m_mean",
+                              "T_c_ci_low",
+                              "T_c_ci_high",
+                              "T_m_ci_low",
+                              "T_m_ci_high",
+                              "sortie_runs",
+                              "sorties_per_uav",
+                              "flight_s_per_uav",
+                              "min_battery_s",
+                              "battery_crashes"}) +
+                    "\n";
   auto number = [](const TimeStats& t, double v) {
     return t.count == 0 ? std::string() : fmt::format("{:.3f}", v);
   };
   for (const auto& r : rows) {
-    out += csv_line({r.scenario,
-                     r.sweep,
-                     r.sweep_value,
-                     std::to_string(r.s2),
-                     std::to_string(r.uavs),
-                     r.algorithm,
-                     std::to_string(r.runs),
-                     std::to_string(r.incomplete),
-                     std::to_string(r.t_c.count),
-                     number(r.t_c, r.t_c.mean),
-                     number(r.t_c, r.t_c.std),
-                     std::to_string(r.t_m.count),
-                     number(r.t_m, r.t_m.mean),
-                     number(r.t_m, r.t_m.std),
-                     number(r.bound_t_c, r.bound_t_c.mean),
-                     number(r.bound_t_m, r.bound_t_m.mean),
-                     number(r.t_c, r.t_c.ci_low),
-                     number(r.t_c, r.t_c.ci_high),
-                     number(r.t_m, r.t_m.ci_low),
-                     number(r.t_m, r.t_m.ci_high)}) +
+    // Empty for a cell that flew no sorties (no launch sites).
+    auto sortie_number = [&](double v) {
+      return r.sorties.runs == 0 ? std::string() : fmt::format("{:.3f}", v);
+    };
+    out += csv_line(
+               {r.scenario,
+                r.sweep,
+                r.sweep_value,
+                std::to_string(r.s2),
+                std::to_string(r.uavs),
+                r.algorithm,
+                std::to_string(r.runs),
+                std::to_string(r.incomplete),
+                std::to_string(r.t_c.count),
+                number(r.t_c, r.t_c.mean),
+                number(r.t_c, r.t_c.std),
+                std::to_string(r.t_m.count),
+                number(r.t_m, r.t_m.mean),
+                number(r.t_m, r.t_m.std),
+                number(r.bound_t_c, r.bound_t_c.mean),
+                number(r.bound_t_m, r.bound_t_m.mean),
+                number(r.t_c, r.t_c.ci_low),
+                number(r.t_c, r.t_c.ci_high),
+                number(r.t_m, r.t_m.ci_low),
+                number(r.t_m, r.t_m.ci_high),
+                std::to_string(r.sorties.runs),
+                sortie_number(r.sorties.per_uav),
+                sortie_number(r.sorties.flight_s_per_uav),
+                r.sorties.min_battery_s ? fmt::format("{:.3f}", *r.sorties.min_battery_s)
+                                        : std::string(),
+                r.sorties.runs == 0 ? std::string() : std::to_string(r.sorties.battery_crashes)}) +
            "\n";
   }
   return out;
@@ -188,7 +324,7 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
   std::string out;
   for (const auto& [group, is_sweep] : groups) {
     // Rows of the table: (swept value, s2, n) in order of appearance.
-    using Key = std::tuple<std::string, int, int>;
+    using Key = TableKey;
     std::vector<Key> params;
     std::map<std::pair<Key, std::string>, const SummaryRow*> cell;
     int runs = 0;
@@ -202,9 +338,10 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
     bool any_bound = false;
     for (const auto& [key, r] : cell) any_bound = any_bound || r->bound_t_c.count > 0;
     for (const bool mission : {false, true}) {
-      out += fmt::format("### {}{} — {} (s), mean ± std over {}{}\n\n", is_sweep ? "sweep of " : "",
-                         group, mission ? "T_m" : "T_c", plural(runs, "instance"),
-                         any_bound ? " (×: the mean over the lower bound's)" : "");
+      out += fmt::format(
+          "### {}{} — {} (s), mean ± std over {}{}\n\n", is_sweep ? "sweep of " : "", group,
+          mission ? "T_m" : "T_c", plural(runs, "instance"),
+          any_bound ? " (×: the mean over the mean lower bound of the same missions)" : "");
       std::vector<std::vector<std::string>> t;
       std::vector<std::string> header;
       if (is_sweep) header.push_back(group);
@@ -235,7 +372,9 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
           const SummaryRow& r = *it->second;
           const TimeStats& time = mission ? r.t_m : r.t_c;
           std::string text = mean_std(time);
-          if (bound > 0 && time.count > 0) text += fmt::format(" (×{:.2f})", time.mean / bound);
+          const double paired_bound = mission ? r.t_m_bound : r.t_c_bound;
+          if (bound > 0 && time.count > 0 && paired_bound > 0)
+            text += fmt::format(" (×{:.2f})", time.mean / paired_bound);
           if (r.incomplete > 0) text += fmt::format(" [{} incomplete]", r.incomplete);
           line.push_back(text);
         }
@@ -244,6 +383,7 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
       }
       out += table(t) + "\n";
     }
+    out += sorties_table(group, is_sweep, params, algorithms, cell);
   }
   return out;
 }

@@ -201,7 +201,11 @@ TraceCounts check_motion(const TraceChecker& check, const json& frames, const Tr
         } else if (!away && grid::adjacent(b.pos, s.pos, m.flights.plane[0])) {
           s.flight_left = m.flights.between(b.pos, s.pos, b.z) - 1;
         }
-        if (auto broken = sim::step_violation(b, s, m.plane_change_steps, m.flights)) {
+        // Version 2 recorded the climb before a flight home on the plane climbed from until the
+        // first move: the plane is not checked across a move away.
+        sim::UavState flown = s;
+        if (m.away_unrecorded && flown.pos != b.pos) flown.z = b.z;
+        if (auto broken = sim::step_violation(b, flown, m.plane_change_steps, m.flights)) {
           check.fail(where, fmt::format("UAV {} {} (from frame {})", k, *broken, i - 1));
         }
         if (m.physical()) {

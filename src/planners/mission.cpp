@@ -104,6 +104,13 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   std::vector<int> planned_returns;
   planned_returns.reserve(
       static_cast<std::size_t>(params.uavs));  // the step loop allocates nothing
+  double layer_seconds = 0;
+  const auto layer = [&](const auto& call) {
+    if (options.layer_seconds == nullptr) return call();
+    const auto start = Clock::now();
+    call();
+    layer_seconds += seconds_since(start);
+  };
   while (!sim.finished()) {
     std::fill(actions.begin(), actions.end(), sim::Action::kHover);
     if (sorties) {
@@ -111,13 +118,13 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
       t0 = Clock::now();
       planner.returns(sim.view(), planned_returns);
       planner_seconds += seconds_since(t0);
-      sorties->before_step(sim, planned_returns);
+      layer([&] { sorties->before_step(sim, planned_returns); });
     }
     t0 = Clock::now();
     planner.decide(sim.view(), actions);
     planner_seconds += seconds_since(t0);
     if (deconfliction) {
-      deconfliction->adjust(sim, actions);
+      layer([&] { deconfliction->adjust(sim, actions); });
       sim.step(actions, deconfliction->away_orders());
     } else {
       sim.step(actions);
@@ -137,6 +144,7 @@ sim::MissionResult run_validated_mission(const world::HullMask& hull,
   result.bound_t_c = bound.t_c;
   result.bound_t_m = bound.t_m;
   result.planner_seconds = planner_seconds;
+  if (options.layer_seconds != nullptr) *options.layer_seconds += layer_seconds;
   result.planner = planner.stats();
   if (const partition::Partition* p = planner.partition(); p != nullptr && !p->fallback.empty()) {
     result.planner.partition_fallbacks = 1;

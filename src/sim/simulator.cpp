@@ -293,8 +293,16 @@ grid::Cell Simulator::append_flight_home(std::size_t k) {
   const int climb =
       total - static_cast<int>(flight.size()) - legs_.takeoff_steps - legs_.transfer_steps;
   const std::size_t begin = path.size();
-  path.resize(begin + static_cast<std::size_t>(climb),
-              AwayStep{u.pos, static_cast<std::int8_t>(u.z)});
+  // The climb happens where the UAV is: a plane change under way ends, a descent under way is
+  // finished and climbed back, each reaching its plane on its last step as a working UAV's plane
+  // change does, so the UAV is on plane 2 at this cell before it flies on.
+  int z = u.z;
+  int change_left = u.transit_left;
+  for (int i = 0; i < climb; ++i) {
+    if (change_left == 0) change_left = legs_.plane_change_steps;
+    if (--change_left == 0) z = 3 - z;
+    path.push_back(AwayStep{u.pos, static_cast<std::int8_t>(z)});
+  }
   for (const grid::Cell c : flight) path.push_back(AwayStep{c});
   path.resize(begin + static_cast<std::size_t>(total), AwayStep{site});
   if (path.size() > begin) path.back().flags = 0;

@@ -74,6 +74,11 @@ std::optional<std::string> step_violation(const UavState& before, const UavState
   // simulator flies it along its leg, one cell a step at most, its plane following the flight.
   if (before.away_left > 0 || after.away_left > 0) {
     if (moved > 1) return fmt::format("moved {} cells in one step", moved);
+    // A climb or descent happens at the cell where the UAV is, as on the hull.
+    if (moved == 1 && before.airborne && after.airborne && after.z != before.z) {
+      return fmt::format("moved from ({}, {}) on plane {} to ({}, {}) on plane {} in one step",
+                         before.pos.x, before.pos.y, before.z, after.pos.x, after.pos.y, after.z);
+    }
     return std::nullopt;
   }
   if (before.flight_left > 0) {

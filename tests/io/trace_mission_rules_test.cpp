@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/io/trace_reader.hpp"
@@ -270,6 +272,68 @@ TEST(TraceMissionRules, ALandingBelowTheReserve) {
                                      least, least + 1)),
             std::string::npos)
       << message;
+}
+
+constexpr std::size_t kZ = 2;
+constexpr std::size_t kAway = 7;
+
+// Where UAVs at work on plane 1 begin a flight home (for a swap, or at the end of the mission):
+// per such flight, the UAV and its last frame at the cell where it was when it became away.
+std::vector<std::pair<std::size_t, std::size_t>> climbs_home(const json& t) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  const std::size_t uavs = t["frames"][0]["u"].size() / kFields;
+  const std::size_t frames = t["frames"].size();
+  for (std::size_t k = 0; k < uavs; ++k) {
+    for (std::size_t f = 1; f < frames; ++f) {
+      if (value(t, f - 1, k, kAway) != 0 || value(t, f, k, kAway) == 0 ||
+          value(t, f, k, kAirborne) == 0 ||
+          (value(t, f - 1, k, kZ) != 1 && value(t, f, k, kZ) != 1))
+        continue;
+      std::size_t g = f;
+      while (g + 1 < frames && value(t, g + 1, k, 0) == value(t, f, k, 0) &&
+             value(t, g + 1, k, 1) == value(t, f, k, 1))
+        ++g;
+      out.emplace_back(k, g);
+    }
+  }
+  return out;
+}
+
+// A UAV at work on plane 1 that flies home (sent home for a swap, or when the hull is known)
+// climbs to plane 2 at the cell where it is and only then flies on: in its last frame at that
+// cell it is on plane 2.
+TEST(TraceMissionRules, AFlightHomeClimbsWhereTheUavIs) {
+  std::size_t flights = 0;
+  for (const char* algorithm : {"lawnmower", "part-tsp", "coop-frontier", "sweep-inspect"}) {
+    const json t = testing::recorded_trace(battery_mission(algorithm, 4, 0), world::default_hull());
+    EXPECT_TRUE(testing::trace_keeps_the_rules(t)) << algorithm;
+    for (const auto& [k, g] : climbs_home(t)) {
+      ++flights;
+      EXPECT_EQ(value(t, g, k, kZ), 2) << algorithm << ": UAV " << k << ", frame " << g;
+    }
+  }
+  EXPECT_GT(flights, 0U) << "no UAV flew home from plane 1";
+}
+
+// The climb recorded one cell late, on the way: the UAV moved and changed plane in one step.
+TEST(TraceMissionRules, AClimbHomeOnTheWay) {
+  const json t = testing::recorded_trace(battery_mission("lawnmower", 4, 0), world::default_hull());
+  const auto climbs = climbs_home(t);
+  ASSERT_FALSE(climbs.empty()) << "no UAV flew home from plane 1";
+  const auto [k, g] = climbs.front();
+  ASSERT_LT(g + 1, t["frames"].size());
+  json broken = t;
+  broken["frames"][g]["u"][kFields * k + kZ] = 1;
+  std::string message = "(accepted)";
+  try {
+    validate_trace(broken, "m.json");
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_EQ(message, fmt::format("m.json: frames[{}].u: UAV {} moved from ({}, {}) on plane 1 to "
+                                 "({}, {}) on plane 2 in one step (from frame {})",
+                                 g + 1, k, value(t, g, k, 0), value(t, g, k, 1),
+                                 value(t, g + 1, k, 0), value(t, g + 1, k, 1), g));
 }
 
 TEST(TraceMissionRules, CountsTheResultMustAgreeWith) {

@@ -61,6 +61,22 @@ TEST(UavRules, EachBrokenRuleIsNamed) {
             "went from plane 2 to plane 2 with 1 change steps left in one step");
 }
 
+// Away at its launch site (flying home for a swap): the simulator flies the leg, but a climb or
+// descent still happens at one cell, as on the hull.
+TEST(UavRules, AnAwayUavChangesPlaneWhereItIs) {
+  auto away = [](UavState s, int left) {
+    s.away_left = left;
+    return s;
+  };
+  EXPECT_EQ(step(away(at(3, 3, 1), 5), away(at(3, 3, 2), 4), 1), "ok");  // the climb home
+  EXPECT_EQ(step(away(at(3, 3, 2), 4), away(at(4, 3, 2), 3), 1), "ok");  // then on plane 2
+  EXPECT_EQ(step(away(at(3, 3, 2), 1), at(3, 3, 1), 1), "ok");           // the descent at resume
+  EXPECT_EQ(step(away(at(3, 3, 1), 5), away(at(4, 3, 2), 4), 1),
+            "moved from (3, 3) on plane 1 to (4, 3) on plane 2 in one step");
+  EXPECT_EQ(step(away(at(3, 3, 2), 5), away(at(3, 4, 1), 4), 1),
+            "moved from (3, 3) on plane 2 to (3, 4) on plane 1 in one step");
+}
+
 TEST(UavRules, StatesAndFootprints) {
   EXPECT_EQ(state_violation(at(0, 0, 2, 2), 3), std::nullopt);
   EXPECT_EQ(state_violation(at(0, 0, 3), 1).value_or("ok"), "is on plane 3 (expected 1 or 2)");

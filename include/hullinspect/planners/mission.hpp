@@ -32,6 +32,10 @@ struct MissionOptions {
   /// The statistics the instance was drawn with, handed to the planner (PlannerContext::corrosion);
   /// nullptr: unknown. run_mission(MissionSpec) sets it unless a user map replaced C' or C.
   const world::CorrosionParams* corrosion = nullptr;
+  /// When set, the CPU seconds the sortie layer and the deconfliction layer take in the mission
+  /// are added to it (bench/layer_cost_bench.cpp); unset, they are not timed, which saves two
+  /// clock reads a step.
+  double* layer_seconds = nullptr;
 };
 
 /// Validates the parameters and failures, runs the mission and returns its result.
