@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <tuple>
 
 #include "hullinspect/core/errors.hpp"
@@ -13,12 +12,6 @@
 namespace hullinspect::python {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 std::uint8_t plane_bit(int plane) {
   return static_cast<std::uint8_t>(1U << plane);
@@ -62,16 +55,6 @@ Session::Session(std::shared_ptr<const world::HullMask> hull, planners::MissionS
                                                   "session does not have",
                                                   spec_.algorithm));
   }
-  reach_ = world::compute_reachability(*hull_, spec_.params.no_fly.get(), spec_.params.s1,
-                                       spec_.params.s2, starts_);
-  // On an unrolled hull the planner weighs neighbour flights as a simulated mission does.
-  distances_ = world::make_distance_service(reach_, world::neighbour_flights(*hull_, spec_.params));
-  planners::PlannerContext context{*hull_,      spec_.params, instance_.prior, starts_,
-                                   partitions_, &distances_,  &reach_};
-  context.corrosion = planners::prior_statistics(spec_);
-  const auto t0 = Clock::now();
-  planner_->start(context);
-  planner_seconds_ += seconds_since(t0);
   if (record_trace) recorder_.emplace(instance_, io::spec_json(spec_, hull_->source()));
 }
 
@@ -81,7 +64,8 @@ std::vector<std::array<int, 3>> Session::expected_readings(const std::vector<int
   const auto states = uavs();
   for (std::size_t k = 0; k < states.size(); ++k) {
     sim::UavState u = states[k];
-    if (sim_) {  // where the pending action leaves the UAV (Simulator::step's rules)
+    if (mission_) {  // where the pending action leaves the UAV (Simulator::step's rules)
+      const sim::Simulator& sim = mission_->simulator();
       if (u.failed ||
           std::find(failed.begin(), failed.end(), static_cast<int>(k)) != failed.end()) {
         continue;
@@ -89,11 +73,11 @@ std::vector<std::array<int, 3>> Session::expected_readings(const std::vector<int
       if (u.in_transit()) {
         if (--u.transit_left == 0) u.z = 3 - u.z;
       } else if (pending_[k] == sim::Action::kChangePlane) {
-        u.transit_left = sim_->plane_change_steps() - 1;
+        u.transit_left = sim.plane_change_steps() - 1;
         if (u.transit_left == 0) u.z = 3 - u.z;
       } else {
         u.pos = sim::moved(u.pos, pending_[k], hull_->width(), hull_->height(),
-                           sim_->flight_steps().plane[0]);
+                           sim.flight_steps().plane[0]);
       }
       if (u.in_transit()) continue;
     }
@@ -119,7 +103,7 @@ void Session::check_readings(const std::vector<CellReading>& readings,
   const int t = time();
   for (std::size_t j = 0; j < failed.size(); ++j) {
     const int k = failed[j];
-    if (!sim_) {
+    if (!mission_) {
       throw Error(
           fmt::format("failed: no UAV can fail before the first step (t = 0); give its "
                       "readings or leave it out of the fleet"));
@@ -153,7 +137,7 @@ void Session::check_readings(const std::vector<CellReading>& readings,
       throw Error(
           fmt::format("readings[{}]: no UAV senses cell ({}, {}) from plane {} at t = {} "
                       "(Session.expected_readings() lists the cells)",
-                      j, r.x, r.y, r.plane, sim_ ? t + 1 : 0));
+                      j, r.x, r.y, r.plane, mission_ ? t + 1 : 0));
     }
     const auto value = static_cast<std::int8_t>(r.corroded ? 1 : 0);
     if (reported_planes_[i] != 0 && reported_value_[i] != value) {
@@ -169,7 +153,7 @@ void Session::check_readings(const std::vector<CellReading>& readings,
       throw Error(
           fmt::format("readings: no reading of cell ({}, {}) from plane {} at t = {} ({} "
                       "cells expected; Session.expected_readings() lists them)",
-                      x, y, plane, sim_ ? t + 1 : 0, expected.size()));
+                      x, y, plane, mission_ ? t + 1 : 0, expected.size()));
     }
   }
 }
@@ -184,30 +168,26 @@ std::vector<sim::Action> Session::step(const std::vector<CellReading>& readings,
   for (const auto& r : readings) {
     instance_.truth(r.x, r.y) = static_cast<std::int8_t>(r.corroded ? 1 : 0);
   }
-  if (!sim_) {
-    sim_.emplace(*hull_, instance_, spec_.params, starts_);
-    if (recorder_) recorder_->on_start(*sim_, *planner_);
+  if (!mission_) {
+    // The simulator senses t = 0 from the first readings, so the mission starts only now; the
+    // MissionStepper builds it as every simulated mission is built.
+    planners::MissionOptions options;
+    if (recorder_) options.observers.push_back(&*recorder_);
+    mission_.emplace(*hull_, instance_, spec_.params, starts_, *planner_,
+                     planners::with_spec(spec_, options));
   } else {
-    for (int k : failed) sim_->fail_uav_at(k, sim_->time());
-    sim_->step(pending_);
-    if (recorder_) recorder_->on_step(*sim_, *planner_);
-    if (!sim_->finished() && planner_->idle(sim_->view())) stopped_idle_ = true;
+    for (int k : failed) mission_->simulator().fail_uav_at(k, mission_->simulator().time());
+    mission_->apply();
   }
   if (finished()) return {};
-  std::fill(pending_.begin(), pending_.end(), sim::Action::kHover);
-  const auto t0 = Clock::now();
-  planner_->decide(sim_->view(), pending_);
-  planner_seconds_ += seconds_since(t0);
+  const auto actions = mission_->decide();
+  pending_.assign(actions.begin(), actions.end());
   return pending_;
 }
 
 sim::MissionResult Session::result() const {
-  if (!sim_) throw Error("the mission has not started: call step() with the first readings");
-  sim::MissionResult r = sim_->result();
-  r.stopped_idle = stopped_idle_;
-  r.planner_seconds = planner_seconds_;
-  r.planner = planner_->stats();
-  return r;
+  if (!mission_) throw Error("the mission has not started: call step() with the first readings");
+  return mission_->result();
 }
 
 nlohmann::json Session::trace() const {

@@ -16,6 +16,7 @@
 
 #include "hullinspect/io/trace_recorder.hpp"
 #include "hullinspect/planners/mission_spec.hpp"
+#include "hullinspect/planners/mission_stepper.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/sim/simulator.hpp"
 
@@ -31,7 +32,8 @@ struct CellReading {
 
 class Session {
  public:
-  /// `prior`: C′ over the hull (-1 not hull, 0, 1). Validates the spec and starts the planner.
+  /// `prior`: C′ over the hull (-1 not hull, 0, 1). Validates the spec and makes the planner,
+  /// which starts at the first step (with the simulator, which senses that step's readings).
   /// With `record_trace`, every step is recorded as `hullinspect run --trace` records a mission.
   Session(std::shared_ptr<const world::HullMask> hull, planners::MissionSpec spec,
           grid::Grid<std::int8_t> prior, bool record_trace = false);
@@ -48,12 +50,14 @@ class Session {
   std::vector<sim::Action> step(const std::vector<CellReading>& readings,
                                 const std::vector<int>& failed);
 
-  int time() const { return sim_ ? sim_->time() : 0; }
-  bool finished() const { return sim_ && (sim_->finished() || stopped_idle_); }
-  bool complete() const { return sim_ && sim_->complete(); }
-  const grid::Grid<std::int8_t>& map() const { return sim_ ? sim_->map() : initial_map_; }
+  int time() const { return mission_ ? mission_->simulator().time() : 0; }
+  bool finished() const { return mission_ && mission_->finished(); }
+  bool complete() const { return mission_ && mission_->simulator().complete(); }
+  const grid::Grid<std::int8_t>& map() const {
+    return mission_ ? mission_->simulator().map() : initial_map_;
+  }
   std::span<const sim::UavState> uavs() const {
-    return sim_ ? sim_->uavs() : std::span<const sim::UavState>(initial_uavs_);
+    return mission_ ? mission_->simulator().uavs() : std::span<const sim::UavState>(initial_uavs_);
   }
   const planners::MissionSpec& spec() const { return spec_; }
   const world::HullMask& hull() const { return *hull_; }
@@ -70,19 +74,14 @@ class Session {
   planners::MissionSpec spec_;
   world::Instance instance_;  // truth: the latest reading of each cell; prior: the caller's C′
   std::vector<grid::Cell> starts_;
-  // The planner's view of the no-fly zones, as run_mission() builds it (the simulator computes
-  // the same reachability again when it starts at the first step).
-  world::Reachability reach_;
-  grid::DistanceService distances_;
-  planners::DirectPartitionSource partitions_;
   std::unique_ptr<planners::Planner> planner_;
-  std::optional<sim::Simulator> sim_;
   std::optional<io::TraceRecorder> recorder_;
+  // The simulator, the planner's context and the flight layers, as every mission builds them;
+  // built at the first step, whose readings the simulator senses at t = 0.
+  std::optional<planners::MissionStepper> mission_;
   grid::Grid<std::int8_t> initial_map_;
   std::vector<sim::UavState> initial_uavs_;
-  std::vector<sim::Action> pending_;
-  bool stopped_idle_ = false;
-  double planner_seconds_ = 0;
+  std::vector<sim::Action> pending_;  // the actions the last step returned, flown by the next
   // Per-call bookkeeping, sized once: the planes each cell is expected from / was reported from.
   int call_ = 0;
   std::vector<int> stamp_;

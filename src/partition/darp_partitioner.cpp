@@ -87,17 +87,8 @@ DarpPartitioner::DarpPartitioner(DarpOptions options) : options_(options) {
 
 Partition DarpPartitioner::partition(const PartitionRequest& request) const {
   const auto t0 = std::chrono::steady_clock::now();
-  if (request.hull == nullptr)
-    throw ParameterError("hull", "no hull given to the darp partitioner");
-  const world::HullMask& hull = *request.hull;
+  const world::HullMask& hull = detail::checked_fleet(request, "darp");
   const int n = static_cast<int>(request.starts.size());
-  if (n < 1) throw ParameterError("uavs", "must be at least 1 (got 0)");
-  const int limit =
-      std::min(hull.cell_count(), static_cast<int>(std::numeric_limits<std::int16_t>::max()));
-  if (n > limit) {
-    throw ParameterError("uavs", fmt::format("must be at most {} for a hull of {} cells (got {})",
-                                             limit, hull.cell_count(), n));
-  }
   if (static_cast<long long>(n) * hull.cell_count() > kMaxMatrixEntries) {
     throw ParameterError(
         "uavs", fmt::format("{} UAVs on {} hull cells need {} evaluation entries; "

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 
 #include "hullinspect/core/errors.hpp"
@@ -13,6 +15,24 @@ namespace hullinspect::partition::detail {
 
 std::string cell_text(grid::Cell c) {
   return fmt::format("({}, {})", c.x, c.y);
+}
+
+const world::HullMask& checked_fleet(const PartitionRequest& request,
+                                     std::string_view partitioner) {
+  if (request.hull == nullptr) {
+    throw ParameterError("hull", fmt::format("no hull given to the {} partitioner", partitioner));
+  }
+  const world::HullMask& hull = *request.hull;
+  const int n = static_cast<int>(request.starts.size());
+  if (n < 1) throw ParameterError("uavs", "must be at least 1 (got 0)");
+  // Regions are numbered in int16 owner grids.
+  const int limit =
+      std::min(hull.cell_count(), static_cast<int>(std::numeric_limits<std::int16_t>::max()));
+  if (n > limit) {
+    throw ParameterError("uavs", fmt::format("must be at most {} for a hull of {} cells (got {})",
+                                             limit, hull.cell_count(), n));
+  }
+  return hull;
 }
 
 std::vector<int> checked_starts(const world::HullMask& hull, std::span<const grid::Cell> starts) {

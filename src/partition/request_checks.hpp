@@ -4,6 +4,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hullinspect/grid/grid.hpp"
@@ -13,6 +14,9 @@
 namespace hullinspect::partition::detail {
 
 std::string cell_text(grid::Cell c);
+/// The request's hull, after checking that there is one and that the fleet (one UAV per start) has
+/// 1 … min(hull cells, 32767) UAVs; ParameterError("hull" / "uavs") otherwise.
+const world::HullMask& checked_fleet(const PartitionRequest& request, std::string_view partitioner);
 /// Start cells as flat indices: outside the grid is a ParameterError("starts"), off the hull is
 /// snapped (HullMask::snap), two UAVs on one cell (also after snapping) an error naming both.
 std::vector<int> checked_starts(const world::HullMask& hull, std::span<const grid::Cell> starts);

@@ -893,17 +893,8 @@ const Params<TransferOptions>& transfer_params() {
 
 Partition TransferPartitioner::partition(const PartitionRequest& request) const {
   const auto t0 = std::chrono::steady_clock::now();
-  if (request.hull == nullptr)
-    throw ParameterError("hull", "no hull given to the transfer partitioner");
-  const world::HullMask& hull = *request.hull;
+  const world::HullMask& hull = detail::checked_fleet(request, "transfer");
   const int n = static_cast<int>(request.starts.size());
-  if (n < 1) throw ParameterError("uavs", "must be at least 1 (got 0)");
-  const int limit =
-      std::min(hull.cell_count(), static_cast<int>(std::numeric_limits<std::int16_t>::max()));
-  if (n > limit) {
-    throw ParameterError("uavs", fmt::format("must be at most {} for a hull of {} cells (got {})",
-                                             limit, hull.cell_count(), n));
-  }
   std::vector<int> starts = detail::checked_starts(hull, request.starts);
   if (options_.spread_starts) starts = spread_virtual_starts(hull, starts);
   const bool weighted = request.weights.size() > 0;

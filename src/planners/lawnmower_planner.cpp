@@ -15,12 +15,7 @@ std::vector<grid::Cell> LawnmowerPlanner::sweep(const grid::Grid<std::int16_t>& 
 }
 
 void LawnmowerPlanner::start(const PlannerContext& context) {
-  partition::PartitionRequest request;
-  request.hull = &context.hull;
-  request.starts.assign(context.starts.begin(), context.starts.end());
-  request.seed = options_.partition_seed;
-  add_no_fly(request, context);
-  add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
+  const partition::PartitionRequest request = partition_request(context, options_);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
   flights_.build(context, distances_of(context, own_distances_));

@@ -36,6 +36,12 @@ const world::CorrosionParams* prior_statistics(const MissionSpec& spec) {
   return spec.maps.empty() ? &spec.corrosion : nullptr;
 }
 
+MissionOptions with_spec(const MissionSpec& spec, MissionOptions options) {
+  if (options.failures.empty()) options.failures = spec.failures;
+  if (options.corrosion == nullptr) options.corrosion = prior_statistics(spec);
+  return options;
+}
+
 world::Instance mission_instance(const MissionSpec& spec, const world::HullMask& hull) {
   auto instance = world::generate_instance(hull, spec.corrosion, spec.seed);
   world::apply(spec.maps, instance);
@@ -48,10 +54,8 @@ sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& h
   // Failures the caller gives instead of the spec's were not part of validate(spec).
   if (!options.failures.empty()) world::validate(options.failures, spec.params.uavs);
   auto planner = make_planner(spec.algorithm, spec.planner_options);
-  MissionOptions with_spec = options;
-  if (with_spec.failures.empty()) with_spec.failures = spec.failures;
-  if (with_spec.corrosion == nullptr) with_spec.corrosion = prior_statistics(spec);
-  return run_validated_mission(hull, instance, spec.params, starts, *planner, with_spec);
+  return run_validated_mission(hull, instance, spec.params, starts, *planner,
+                               with_spec(spec, options));
 }
 
 sim::MissionResult run_mission(const MissionSpec& spec, const world::HullMask& hull,

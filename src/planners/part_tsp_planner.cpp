@@ -40,12 +40,7 @@ PartTspPlanner::PartTspPlanner(PartTspOptions options, std::unique_ptr<tsp::TspS
 }
 
 void PartTspPlanner::start(const PlannerContext& context) {
-  partition::PartitionRequest request;
-  request.hull = &context.hull;
-  request.starts.assign(context.starts.begin(), context.starts.end());
-  request.seed = options_.partition_seed;
-  add_no_fly(request, context);
-  add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
+  const partition::PartitionRequest request = partition_request(context, options_);
   partition_ = context.partitions.get(options_.partitioner, options_.partitioner_options, request);
   const int n = context.params.uavs;
   if (options_.oracle && !context.truth)

@@ -93,9 +93,16 @@ double expected_prior_precision(const PlannerContext& context) {
   return cells == 0 ? -1.0 : sum / cells;
 }
 
-void add_prior_weights(partition::PartitionRequest& request, const PlannerContext& context,
-                       bool prior_weights, bool prior_statistics) {
+partition::PartitionRequest partition_request(const PlannerContext& context,
+                                              std::uint64_t partition_seed, bool prior_weights,
+                                              bool prior_statistics) {
+  partition::PartitionRequest request;
+  request.hull = &context.hull;
+  request.starts.assign(context.starts.begin(), context.starts.end());
+  request.seed = partition_seed;
+  add_no_fly(request, context);
   if (prior_weights) request.weights = prior_work_weights(context, prior_statistics);
+  return request;
 }
 
 }  // namespace hullinspect::planners

@@ -60,12 +60,7 @@ void SweepInspectPlanner::start(const PlannerContext& context) {
   // is for a detected cell abreast, within h2 across, which must then lie within the radius, or
   // the UAV would climb at once and descend again for the same cell for ever).
   radius_ = std::max(h2_, p.s2);
-  partition::PartitionRequest request;
-  request.hull = &context.hull;
-  request.starts.assign(context.starts.begin(), context.starts.end());
-  request.seed = options_.partition_seed;
-  add_no_fly(request, context);
-  add_prior_weights(request, context, options_.prior_weights, options_.prior_statistics);
+  const partition::PartitionRequest request = partition_request(context, options_);
   // The plane a cell is swept on is known before the partition: the zones' statistics decide it.
   const double precision = expected_prior_precision(context);
   prior_dropped_ = options_.prior_trust > 0 && precision >= 0 && precision < options_.prior_trust;

@@ -122,6 +122,35 @@ TEST(PriorWorkWeights, ARightPriorGivesSweepInspectsFormula) {
   }
 }
 
+TEST(PartitionRequest, CarriesTheMissionsHullStartsSeedNoFlyAndWeights) {
+  const auto& hull = world::default_hull();
+  const auto corrosion = scenario_params("perfect");
+  const auto instance = world::generate_instance(hull, corrosion, 4);
+  world::MissionParams params;
+  auto no_fly = std::make_shared<grid::Grid<std::uint8_t>>(hull.width(), hull.height(), 0);
+  for (int y = 10; y <= 20; ++y) (*no_fly)(40, y) = 1;
+  params.no_fly = no_fly;
+  const auto starts = world::start_cells(params, hull);
+  const auto reach =
+      world::compute_reachability(hull, params.no_fly.get(), params.s1, params.s2, starts);
+  DirectPartitionSource partitions;
+  auto context = context_for(hull, params, instance, starts, partitions, &corrosion);
+  context.reach = &reach;
+
+  const auto uniform = partition_request(context, 7, false, true);
+  EXPECT_EQ(uniform.hull, &hull);
+  EXPECT_EQ(uniform.starts, starts);
+  EXPECT_EQ(uniform.seed, 7U);
+  EXPECT_EQ(uniform.weights.size(), 0);
+  ASSERT_EQ(uniform.allowed.size(), reach.flyable.size());  // the no-fly zones, as add_no_fly
+  EXPECT_EQ(uniform.allowed(40, 15), 0);
+
+  const auto weighted = partition_request(context, 7, true, false);
+  const auto w = prior_work_weights(context, false);
+  ASSERT_EQ(weighted.weights.size(), w.size());
+  for (int i = 0; i < hull.width() * hull.height(); ++i) ASSERT_EQ(weighted.weights[i], w[i]);
+}
+
 TEST(PriorWorkWeights, AnImperfectPriorWeighsLessAndTheRestMore) {
   const auto& hull = world::default_hull();
   const auto corrosion = scenario_params("combined");  // zones: back / front halves

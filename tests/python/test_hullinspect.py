@@ -443,6 +443,12 @@ class LiveSession(unittest.TestCase):
         self.replay("lawnmower", ["--seed", "2", "-n", "3", "--fail", "1@40"], fail=(1, 40),
                     uavs=3)
 
+    def test_separation_replays_through_the_deconfliction_layer(self):
+        # Flown as the planner gives them, these actions break the separation 4 times: the replay
+        # matches only if the Session's actions pass the deconfliction layer as the CLI's do.
+        self.replay("coop-frontier", ["--seed", "5", "-n", "3", "--separation", "5"], uavs=3,
+                    separation=5)
+
     def test_python_planner_in_a_session(self):
         hull = small_hull()
         session = hullinspect.Session("test-nearest", hull=hull, uavs=2)

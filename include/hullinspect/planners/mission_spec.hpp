@@ -35,6 +35,10 @@ std::vector<grid::Cell> validate(const MissionSpec& spec, const world::HullMask&
 /// `spec.corrosion`, or null when a user map replaced C' or C (then they describe neither).
 const world::CorrosionParams* prior_statistics(const MissionSpec& spec);
 
+/// `options` with the spec's failures and prior statistics where it names none: what run_mission
+/// and a live session hand the MissionStepper.
+MissionOptions with_spec(const MissionSpec& spec, MissionOptions options);
+
 /// The mission's instance: drawn from spec.seed with spec.corrosion, then spec.maps applied.
 world::Instance mission_instance(const MissionSpec& spec, const world::HullMask& hull);
 

@@ -5,6 +5,7 @@
 // for every partitioned planner (lawnmower, Part-TSP, Sweep-Inspect): `prior-weights` switches it
 // on, `prior-statistics` makes the odds aware of the prior's quality (p_TP, p_FP).
 
+#include <cstdint>
 #include <string>
 
 #include "hullinspect/core/parameters.hpp"
@@ -44,9 +45,21 @@ grid::Grid<double> prior_work_weights(const PlannerContext& context, bool use_st
 /// unknown (a user's prior map) or the prior is empty.
 double expected_prior_precision(const PlannerContext& context);
 
-/// Sets `request.weights` when `prior_weights` (else leaves them empty: uniform).
-void add_prior_weights(partition::PartitionRequest& request, const PlannerContext& context,
-                       bool prior_weights, bool prior_statistics);
+/// The request of a planner that partitions the hull among its UAVs: the hull, the start cells,
+/// the partitioner's seed, the no-fly zones and neighbour flights (add_no_fly), and with
+/// `prior_weights` the expected work per cell as weights (else none: uniform).
+partition::PartitionRequest partition_request(const PlannerContext& context,
+                                              std::uint64_t partition_seed, bool prior_weights,
+                                              bool prior_statistics);
+
+/// The same for a planner whose options struct has the fields `partition_seed`, `prior_weights`
+/// and `prior_statistics`.
+template <class Options>
+partition::PartitionRequest partition_request(const PlannerContext& context,
+                                              const Options& options) {
+  return partition_request(context, options.partition_seed, options.prior_weights,
+                           options.prior_statistics);
+}
 
 inline constexpr const char* kPriorWeightsHelp =
     "partition weighted by the expected work per cell: its coverage at z = 2 plus the z = 1 "
