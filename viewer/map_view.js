@@ -4,8 +4,8 @@
 'use strict';
 
 (function (hv) {
-  const {FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, uavColor, layerColor,
-    cellColor} = hv.palette;
+  const {FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, SEAM_MARK, uavColor,
+    layerColor, cellColor} = hv.palette;
   const {LAUNCH_SITE_FILL, GROUND_FILL, AWAY_FILL} = hv.palette;
   const PATH_LENGTH = 40; // steps of recent path drawn behind each UAV
   // On the ground, or flying between its launch site and the hull: not a UAV at work on the hull.
@@ -154,6 +154,7 @@
         });
       }
       this.drawNoFly(ctx);
+      this.drawSeam(ctx);
       const states = [];
       for (let k = 0; k < r.uavCount; ++k) states.push(r.uavState(t, k));
       if (this.show.footprints) {
@@ -425,6 +426,7 @@
       const r = this.replay;
       const from = Math.max(0, t - PATH_LENGTH);
       const buckets = 4;
+      const seam = this.hasSeam() && r.W > 2;
       ctx.lineCap = 'round';
       for (let k = 0; k < r.uavCount; ++k) {
         ctx.strokeStyle = uavColor(k);
@@ -438,7 +440,15 @@
               const c = r.uavState(i + 1, k);
               if (a.x === c.x && a.y === c.y) continue;
               if ((a.z === 1 && a.transit === 0 && c.z === 1) !== closeUp) continue;
-              ctx.moveTo(this.cx(a.x), this.cy(a.y));
+              if (seam && a.y === c.y && Math.abs(a.x - c.x) === r.W - 1) {
+                // Across the seam: out through one edge of the grid and in through the other.
+                const out = a.x === 0 ? 0 : r.W * this.cellPx;
+                ctx.moveTo(this.cx(a.x), this.cy(a.y));
+                ctx.lineTo(out, this.cy(a.y));
+                ctx.moveTo(r.W * this.cellPx - out, this.cy(c.y));
+              } else {
+                ctx.moveTo(this.cx(a.x), this.cy(a.y));
+              }
               ctx.lineTo(this.cx(c.x), this.cy(c.y));
               any = true;
             }
@@ -451,6 +461,32 @@
         }
       }
       ctx.globalAlpha = 1;
+      ctx.setLineDash([]);
+    }
+
+    // True when the trace's grid closes on itself: column 0 and column W − 1 meet at the seam.
+    hasSeam() {
+      const frame = this.replay.trace.ship_frame;
+      return Boolean(frame && frame.seam);
+    }
+
+    // The seam: both edges of the grid dashed, as they are one line on the hull. Their x (overlay
+    // CSS px) are kept in `seamEdges` for the browser test (empty without a seam).
+    drawSeam(ctx) {
+      this.seamEdges = [];
+      if (!this.hasSeam()) return;
+      const r = this.replay;
+      const h = r.H * this.cellPx;
+      ctx.strokeStyle = SEAM_MARK;
+      ctx.lineWidth = 2;
+      ctx.setLineDash([6, 4]);
+      ctx.beginPath();
+      for (const x of [1, r.W * this.cellPx - 1]) {
+        ctx.moveTo(x, 0);
+        ctx.lineTo(x, h);
+        this.seamEdges.push(x + PAD.left);
+      }
+      ctx.stroke();
       ctx.setLineDash([]);
     }
 

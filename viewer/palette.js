@@ -28,6 +28,8 @@
   // No-fly positions and unreachable hull cells, hatched over the cells (map_view.js drawNoFly).
   const NO_FLY_MARK = '#111';
   const UNREACHABLE_MARK = [null, '#999', '#444']; // by kind: 1 only z = 2 sees it, 2 none does
+  // The seam of a grid that closes on itself (map_view.js drawSeam): its two edges, dashed.
+  const SEAM_MARK = 'rgb(230, 0, 120)';
   // The physical mission (map_view.js): launch sites, UAVs on the ground (triangles) and flying
   // between a site and the hull (diamonds); the battery gauge, green above the reserve and red at
   // or below it.
@@ -68,7 +70,8 @@
   }
 
   hv.palette = {
-    COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, M_NAMES, rgb,
+    COLORS, FOOTPRINT_FILL, TRUTH_MARK, HOVER_MARK, NO_FLY_MARK, UNREACHABLE_MARK, SEAM_MARK,
+    M_NAMES, rgb,
     LAUNCH_SITE_FILL, GROUND_FILL, AWAY_FILL, BATTERY_OK, BATTERY_LOW,
     regionColor, regionTint, uavColor, layerColor, cellColor,
   };

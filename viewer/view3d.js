@@ -6,7 +6,7 @@
 'use strict';
 
 (function (hv) {
-  const {cellColor, uavColor} = hv.palette;
+  const {cellColor, uavColor, SEAM_MARK} = hv.palette;
   const PATH_LENGTH = 40; // steps of recent path behind each UAV, as in the 2D view
   const FOOTPRINT_COLOR = [40, 120, 255];
   const NO_FLY_COLOR = [17, 17, 17];
@@ -181,6 +181,26 @@
           color: new T.Color(...NO_FLY_COLOR.map((v) => v / 255)), transparent: true, opacity: 0.45,
           side: T.DoubleSide, depthWrite: false}));
         this.scene.add(this.noFly);
+      }
+      // The seam of a grid that closes on itself: the line where column 0 meets column W − 1, through
+      // the midpoint of each row's two ends (grid positions have surface points, hull or not), a
+      // little out along their mean normal so the tiles do not hide it.
+      this.seamPoints = [];
+      if (this.replay.trace.ship_frame.seam) {
+        const {point, normal} = this.geo;
+        for (let y = 0; y < H; ++y) {
+          const a = 3 * y * W;
+          const b = 3 * (y * W + W - 1);
+          const n = [0, 1, 2].map((d) => normal[a + d] + normal[b + d]);
+          const length = Math.hypot(...n) || 1;
+          this.seamPoints.push([0, 1, 2].map((d) =>
+            (point[a + d] + point[b + d]) / 2 + (0.1 * cell * n[d]) / length));
+        }
+        const g = new T.BufferGeometry();
+        g.setAttribute('position', new T.BufferAttribute(Float32Array.from(this.seamPoints.flat()), 3));
+        this.seam = new T.Line(g, new T.LineBasicMaterial({
+          color: new T.Color().setStyle(SEAM_MARK, 'srgb-linear')}));
+        this.scene.add(this.seam);
       }
       // UAVs: a sphere each, a line down to the cell it looks at, and its recent path.
       const radius = Math.max(0.45 * cell, 0.006 * this.box.getSize(new T.Vector3()).length());

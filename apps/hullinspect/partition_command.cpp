@@ -17,6 +17,7 @@
 #include "hullinspect/partition/partitioner.hpp"
 #include "hullinspect/world/mission_params.hpp"
 #include "hullinspect/world/no_fly.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 #include "mission_options.hpp"
 #include "number_options.hpp"
 
@@ -84,6 +85,7 @@ std::vector<bool> connected_regions(const world::HullMask& hull, const partition
   grid::Grid<int> labels;
   grid::BfsScratch scratch;
   const grid::Grid<int>& seen_from = flight.reach.seen_from;
+  const grid::EdgeSteps seam = world::seam_links(hull);  // a region may cross the seam
   for (int k = 0; k < n; ++k) {
     bool flyable = true;
     for (int i = 0; i < region.size(); ++i) {
@@ -93,7 +95,7 @@ std::vector<bool> connected_regions(const world::HullMask& hull, const partition
         flyable = false;
     }
     connected[static_cast<std::size_t>(k)] =
-        flyable && grid::label_components(region, labels, scratch) == 1;
+        flyable && grid::label_components(region, labels, scratch, seam) == 1;
   }
   return connected;
 }
@@ -225,6 +227,8 @@ int run_partition(const PartitionArgs& args) {
   params.uavs = mission.uavs;
   params.s1 = mission.s1;  // footprints: which flight component sees a hull cell
   params.s2 = mission.s2;
+  params.theta_deg = mission.theta;  // and the neighbour flights of an unrolled hull
+  if (hull.geometry()) params.cell_size_m = hull.geometry()->cell_size;
   for (const auto& s : mission.starts) params.starts.push_back(parse_xy(s));
   params.no_fly = build_no_fly(mission.no_fly, mission.no_fly_boxes, hull);
   std::vector<grid::Cell> starts;
@@ -261,6 +265,8 @@ int run_partition(const PartitionArgs& args) {
     request.allowed = flight.reach.flyable;
     request.seen_from = flight.reach.seen_from;
   }
+  // On an unrolled hull, the flights a mission's partition follows: their lengths and the seam.
+  request.flights = world::neighbour_flights(hull, params).longer_plane();
   reject_shared_starts(params.starts, request.starts);
   flight.component = partition::start_components(request);
   // By default the partition a mission would fly (the fallback rule of docs/model.md), so that this

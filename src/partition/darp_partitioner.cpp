@@ -127,6 +127,7 @@ Partition DarpPartitioner::partition(const PartitionRequest& request) const {
     ws.use_allowed_distances(request.allowed.size() > 0 ? request.allowed : hull.mask(), starts,
                              request.flights);
   }
+  ws.link_seam(request.flights);
   // Goal: every region connected and within `tolerance` cells of its desired weight. The tolerance
   // starts at 1 cell (0 when the shares divide exactly); after `limit` iterations it grows by one
   // and the limit halves, up to max_discrepancy. Total iterations ≤ 2 · iteration_limit +

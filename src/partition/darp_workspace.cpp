@@ -190,6 +190,13 @@ int DarpWorkspace::hull_bfs(std::vector<int>& dist, int sources) {
       d[k] = next;
       queue[tail++] = k;
     }
+    if (!seam_partner_.empty()) {
+      const int k = seam_partner_[static_cast<std::size_t>(p)];
+      if (k >= 0 && d[k] > next) {
+        d[k] = next;
+        queue[tail++] = k;
+      }
+    }
   }
   return last;
 }
@@ -314,6 +321,7 @@ void DarpWorkspace::check_connectivity() {
       }
     }
   }
+  join_across_seam();
   std::fill(components_.begin(), components_.end(), 0);
   for (int run = 0; run < run_count_; ++run) {
     const int root = find_root(run);

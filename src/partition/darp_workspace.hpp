@@ -16,6 +16,7 @@
 // BFS over the hull) is rebuilt only when the region changed since it was last built, otherwise it
 // is re-applied from a cache.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -45,6 +46,11 @@ class DarpWorkspace {
   /// no flight reaches gets the largest finite distance + 1.
   void use_allowed_distances(const grid::Grid<std::uint8_t>& allowed,
                              std::span<const int> start_index, const grid::EdgeSteps& flights);
+
+  /// A grid that closes on itself (`flights.seam`, darp_seam.cpp): the two end cells of every
+  /// linked row are neighbours in the connectivity check, the corrections' distances and the
+  /// repair, so a region may cross the seam. Nothing without a seam.
+  void link_seam(const grid::EdgeSteps& flights);
 
   /// Every hull cell to the UAV of lowest evaluation (ties: lowest UAV id); start cells stay with
   /// their UAV. Updates the region sizes and weights and the same-owner runs of every row.
@@ -87,6 +93,8 @@ class DarpWorkspace {
   /// `dist`; returns the largest distance reached.
   int hull_bfs(std::vector<int>& dist, int sources);
   int find_root(int run);
+  /// Joins the same-owner runs that meet across the seam (part of check_connectivity()).
+  void join_across_seam();
   void totals_of(const std::vector<std::int32_t>& owner, std::vector<int>& cells,
                  std::vector<double>& weight) const;
 
@@ -140,6 +148,10 @@ class DarpWorkspace {
   std::vector<int> pad_far_;             // padded: distance to the other components
   std::vector<int> mark_;                // N: repair marks
   std::unique_ptr<float[]> correction_;  // n × N cached log-corrections (written before read)
+  // The seam (link_seam()): per linked row whose two ends are hull cells, the hull indices of its
+  // first and last cells; per padded position, its partner across the seam or −1 (empty: no seam).
+  std::vector<std::array<int, 2>> seam_ends_;
+  std::vector<int> seam_partner_;
 
   std::vector<float> noise_;       // N log random factors, read at a random rotation
   std::vector<int> noise_offset_;  // per UAV, drawn in update()

@@ -115,12 +115,20 @@ Partition partition_per_flight_component(const PartitionRequest& request,
   auto weight = [&](int i) { return weighted ? request.weights[i] : 1.0; };
 
   const grid::Grid<int> label = seen_components(hull, request.seen_from, has_uav);
-  grid::Grid<int> parts;  // flight parts of the allowed positions
+  // Flight parts of the allowed positions, joined across the seam of a grid that closes on itself
+  // as the reachability's flight components are.
+  grid::Grid<int> parts;
   grid::BfsScratch scratch;
-  if (request.allowed.size() > 0) grid::label_components(request.allowed, parts, scratch);
-  grid::DistanceService flights = request.allowed.size() > 0
-                                      ? grid::DistanceService(request.allowed, /*cached_fields=*/1)
-                                      : grid::DistanceService(hull.width(), hull.height());
+  if (request.allowed.size() > 0)
+    grid::label_components(request.allowed, parts, scratch, request.flights);
+  grid::DistanceService flights =
+      !request.flights.empty()
+          ? grid::DistanceService(request.allowed.size() > 0
+                                      ? request.allowed
+                                      : grid::Grid<std::uint8_t>(hull.width(), hull.height(), 1),
+                                  request.flights, /*cached_fields=*/1)
+      : request.allowed.size() > 0 ? grid::DistanceService(request.allowed, /*cached_fields=*/1)
+                                   : grid::DistanceService(hull.width(), hull.height());
 
   Partition out;
   out.owner = grid::Grid<std::int16_t>(hull.width(), hull.height(), -1);
@@ -138,6 +146,9 @@ Partition partition_per_flight_component(const PartitionRequest& request,
   grid::Grid<int> pieces;
   for (int c = 0; c < components; ++c) {
     for (int i = 0; i < mask.size(); ++i) mask[i] = label[i] == c ? 1 : 0;
+    // Pieces in the grid's own plane: each is partitioned as a hull of its own, which must be
+    // 4-connected without the seam; pieces that meet only across it are joined by the orphans'
+    // rule below.
     const int piece_count = grid::label_components(mask, pieces, scratch);
     std::vector<std::vector<int>> uavs_of(static_cast<std::size_t>(piece_count));
     std::vector<std::vector<int>> cells_of(static_cast<std::size_t>(piece_count));

@@ -80,13 +80,14 @@ Partition StripesPartitioner::partition(const PartitionRequest& request) const {
       ++next;
     }
   }
-  // Connectivity check: each band must be one 4-connected piece.
+  // Connectivity check: each band must be one 4-connected piece (across the seam of a grid that
+  // closes on itself too).
   grid::Grid<std::uint8_t> in_region(hull.width(), hull.height(), 0);
   grid::Grid<int> labels;
   grid::BfsScratch scratch;
   for (int k = 0; k < n; ++k) {
     for (int i : hull.cells()) in_region[i] = out.owner[i] == k;
-    if (grid::label_components(in_region, labels, scratch) != 1) {
+    if (grid::label_components(in_region, labels, scratch, request.flights) != 1) {
       throw Error(
           fmt::format("stripes: band of UAV {} is not 4-connected on hull '{}'; use the darp "
                       "partitioner for this hull",

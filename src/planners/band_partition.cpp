@@ -10,6 +10,7 @@
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/grid/distance.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::planners {
 
@@ -174,9 +175,10 @@ partition::Partition BandPieces::cut(std::span<const std::size_t> cuts,
   grid::Grid<std::uint8_t> in_region(width, hull_->height(), 0);
   grid::Grid<int> labels;
   grid::BfsScratch scratch;
+  const grid::EdgeSteps seam = world::seam_links(*hull_);  // a piece may cross the seam
   for (int k = 0; k < n; ++k) {
     for (int i : hull_->cells()) in_region[i] = out.owner[i] == k;
-    if (grid::label_components(in_region, labels, scratch) != 1) {
+    if (grid::label_components(in_region, labels, scratch, seam) != 1) {
       throw Error(fmt::format("band partition: the piece of UAV {} is not 4-connected on hull '{}'",
                               k, hull_->source()));
     }

@@ -48,6 +48,8 @@ std::string request_key(std::string_view partitioner, const OptionMap& options,
     for (auto v : r.flights.east.values()) key += fmt::format("{},", v);
     key += "|";
     for (auto v : r.flights.north.values()) key += fmt::format("{},", v);
+    key += "|seam|";
+    for (auto v : r.flights.seam) key += fmt::format("{},", v);
   }
   return key;
 }

@@ -8,6 +8,7 @@
 #include "hullinspect/world/battery.hpp"
 #include "hullinspect/world/launch_sites.hpp"
 #include "hullinspect/world/no_fly.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::sim {
 
@@ -17,9 +18,13 @@ long long ceil_div(long long a, long long b) {
   return a <= 0 ? 0 : (a + b - 1) / b;
 }
 
-/// Fewest steps from `s` to a position whose footprint of half-width h holds `c`.
-int reach(grid::Cell s, grid::Cell c, int h) {
-  return std::max(0, std::abs(s.x - c.x) - h) + std::max(0, std::abs(s.y - c.y) - h);
+/// Fewest steps from `s` to a position whose footprint of half-width h holds `c`; on a grid
+/// `wrap` columns wide that closes on itself (0: it does not) the columns' gap is the shorter way
+/// round, across the seam (each flight is at least one step).
+int reach(grid::Cell s, grid::Cell c, int h, int wrap) {
+  int dx = std::abs(s.x - c.x);
+  if (wrap > 0) dx = std::min(dx, wrap - dx);
+  return std::max(0, dx - h) + std::max(0, std::abs(s.y - c.y) - h);
 }
 
 /// Transit steps of the fleet for D arrivals at z = 1 in total: a UAV that starts at z = 2 pays u_z
@@ -82,6 +87,7 @@ LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t
   long long corroded = 0;
   int reach_c = 0;
   int reach_m = 0;
+  const int wrap = world::seam_links(hull).seam.empty() ? 0 : hull.width();
   for (int i : hull.cells()) {
     ++hull_cells;
     const grid::Cell c = hull.mask().cell(i);
@@ -92,8 +98,8 @@ LowerBound lower_bound(const world::HullMask& hull, const grid::Grid<std::int8_t
       const grid::Cell s = starts[k];
       // A clean cell is known once seen from either plane; a corroded one only from z = 1, which
       // a UAV starting at z = 2 reaches after u_z steps of transit.
-      const int d =
-          outbound[k] + (corr ? reach(s, c, h1) + (params.start_z == 2 ? uz : 0) : reach(s, c, h2));
+      const int d = outbound[k] + (corr ? reach(s, c, h1, wrap) + (params.start_z == 2 ? uz : 0)
+                                        : reach(s, c, h2, wrap));
       best = std::min(best, d);
     }
     if (corr) reach_c = std::max(reach_c, best);

@@ -9,6 +9,7 @@
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/core/numbers.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "hullinspect/world/standoff_surface.hpp"
 
 namespace hullinspect::world {
 
@@ -93,12 +94,13 @@ void mark_reachable(const HullMask& hull, const grid::Grid<std::uint8_t>& flyabl
 }
 
 // Flight components and which of them sees each hull cell (docs/model.md §8). The flyable
-// positions are exactly those connected to a start, so every component holds a UAV.
+// positions are exactly those connected to a start, so every component holds a UAV; on a grid
+// that closes on itself positions joined only across the seam are one component.
 void label_flight_components(const HullMask& hull, std::span<const grid::Cell> starts, int half1,
-                             int half2, Reachability& r) {
+                             int half2, const grid::EdgeSteps& seam, Reachability& r) {
   grid::Grid<int> labels;
   grid::BfsScratch scratch;
-  const int count = grid::label_components(r.flyable, labels, scratch);
+  const int count = grid::label_components(r.flyable, labels, scratch, seam);
   // Renumber by the lowest UAV id starting in each component.
   std::vector<int> renumber(static_cast<std::size_t>(count), -1);
   int next = 0;
@@ -139,7 +141,8 @@ Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly,
     return r;
   }
   // Flyable: allowed and connected to a start (a pocket enclosed by no-fly positions is as good
-  // as no-fly for every UAV).
+  // as no-fly for every UAV), across the seam of a grid that closes on itself too.
+  const grid::EdgeSteps seam = seam_links(hull);
   grid::Grid<std::uint8_t> allowed(w, h, 0);
   for (int i = 0; i < allowed.size(); ++i) allowed[i] = (*no_fly)[i] == 0 ? 1 : 0;
   std::vector<int> sources;
@@ -148,7 +151,7 @@ Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly,
   }
   grid::Grid<int> d;
   grid::BfsScratch scratch;
-  grid::bfs_distances(allowed, sources, d, scratch);
+  grid::bfs_distances(allowed, sources, d, scratch, seam);
   for (int i = 0; i < d.size(); ++i) r.flyable[i] = d[i] < grid::kUnreachable ? 1 : 0;
   mark_reachable(hull, r.flyable, footprint_half(s1), kReachZ1, r.reach);
   mark_reachable(hull, r.flyable, footprint_half(s2), kReachZ2, r.reach);
@@ -156,7 +159,7 @@ Reachability compute_reachability(const HullMask& hull, const NoFlyMask* no_fly,
     if ((r.reach[i] & kReachZ1) == 0) ++r.unreachable_z1;
     if ((r.reach[i] & kReachZ2) == 0) ++r.unreachable_z2;
   }
-  label_flight_components(hull, starts, footprint_half(s1), footprint_half(s2), r);
+  label_flight_components(hull, starts, footprint_half(s1), footprint_half(s2), seam, r);
   return r;
 }
 

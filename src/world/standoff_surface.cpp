@@ -80,4 +80,14 @@ grid::FlightSteps neighbour_flights(const HullMask& hull, const MissionParams& p
                             params.s2);
 }
 
+grid::EdgeSteps seam_links(const HullMask& hull) {
+  const HullGeometry* g = hull.geometry();
+  if (g == nullptr || !g->seam || hull.width() < 3) return {};
+  grid::EdgeSteps links;
+  links.east = grid::Grid<std::uint8_t>(hull.width(), hull.height(), 1);
+  links.north = grid::Grid<std::uint8_t>(hull.width(), hull.height(), 1);
+  links.seam.assign(static_cast<std::size_t>(hull.height()), 1);
+  return links;
+}
+
 }  // namespace hullinspect::world

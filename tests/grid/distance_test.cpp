@@ -57,6 +57,48 @@ TEST(LabelComponents, CountsFourConnectedPiecesInYXOrder) {
   EXPECT_EQ(labels(2, 0), -1);
 }
 
+// A seam table linking every row's two ends (one step each; only the links matter here).
+EdgeSteps seam_of(int width, int height) {
+  EdgeSteps links;
+  links.east = Grid<std::uint8_t>(width, height, 1);
+  links.north = Grid<std::uint8_t>(width, height, 1);
+  links.seam.assign(static_cast<std::size_t>(height), 1);
+  return links;
+}
+
+TEST(BfsDistances, StepsAcrossTheSeamOfAGridThatClosesOnItself) {
+  // (4, 1) is one step from (0, 1) across the seam, six round through the bottom row without it;
+  // (2, 1) is no position to fly.
+  const auto m = mask_from({"XX.XX", "XXXXX"});
+  Grid<int> d;
+  BfsScratch scratch;
+  const int source = m.index(0, 1);
+  bfs_distances(m, std::span<const int>(&source, 1), d, scratch, seam_of(5, 2));
+  EXPECT_EQ(d(4, 1), 1);
+  EXPECT_EQ(d(3, 1), 2);
+  EXPECT_EQ(d(4, 0), 2);
+  EXPECT_EQ(d(2, 1), kUnreachable);
+  bfs_distances(m, std::span<const int>(&source, 1), d, scratch, EdgeSteps{});
+  EXPECT_EQ(d(4, 1), 6);
+  EXPECT_EQ(d(3, 1), 5);
+}
+
+TEST(LabelComponents, JoinsPiecesThatMeetAcrossTheSeam) {
+  const auto m = mask_from({"X...X", "X.X.X"});
+  Grid<int> labels;
+  BfsScratch scratch;
+  EXPECT_EQ(label_components(m, labels, scratch), 3);
+  EXPECT_EQ(label_components(m, labels, scratch, seam_of(5, 2)), 2);
+  EXPECT_EQ(labels(0, 0), labels(4, 1));
+  EXPECT_NE(labels(2, 0), labels(0, 0));
+  // One linked row joins the two ends; a row the seam does not link keeps its ends apart.
+  EdgeSteps top_only = seam_of(5, 2);
+  top_only.seam[0] = 0;
+  EXPECT_EQ(label_components(m, labels, scratch, top_only), 2);
+  top_only.seam[1] = 0;
+  EXPECT_EQ(label_components(m, labels, scratch, top_only), 3);
+}
+
 TEST(Cell, OrdersByYThenX) {
   EXPECT_LT((Cell{5, 0}), (Cell{0, 1}));
   EXPECT_LT((Cell{0, 1}), (Cell{1, 1}));

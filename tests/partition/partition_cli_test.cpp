@@ -14,7 +14,9 @@
 
 #include "hullinspect/partition/darp_partitioner.hpp"
 #include "hullinspect/world/hull.hpp"
+#include "hullinspect/world/hull_geometry.hpp"
 #include "hullinspect/world/mission_params.hpp"
+#include "support/seam_hull.hpp"
 
 namespace hullinspect {
 namespace {
@@ -99,6 +101,25 @@ TEST_F(PartitionCli, JsonSummaryOfTheDefaultHull) {
     total += region["cells"].get<int>();
   }
   EXPECT_EQ(total, j["hull_cells"].get<int>());
+}
+
+// A hull file whose grid closes on itself (`"seam": true`): UAV 0, a column east of the seam,
+// holds the columns just west of it, and its region counts as connected across the seam.
+TEST_F(PartitionCli, ARegionAcrossTheSeamIsConnected) {
+  std::string rows;
+  for (int y = 0; y < 4; ++y) rows += std::string(40, 'X') + "\n";
+  const fs::path hull = path("ring.json");
+  std::ofstream(hull) << world::to_hull_json(testing::seam_cylinder_hull(rows));
+  const auto r = run(fmt::format("--hull '{}' --uavs 2 --start 1,1 --start 20,1 --json --out '{}'",
+                                 hull.string(), path("a.txt").string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["converged"], true);
+  for (const auto& region : j["regions"]) EXPECT_EQ(region["connected"], true);
+  for (const std::string& row : mask_rows(read_text(path("a.txt")))) {
+    EXPECT_EQ(row.front(), '0');
+    EXPECT_EQ(row.back(), '0');
+  }
 }
 
 TEST_F(PartitionCli, OutWritesTheAssignmentMatrixAsATextMask) {

@@ -10,9 +10,11 @@
 #include "hullinspect/planners/mission_spec.hpp"
 #include "hullinspect/planners/planner.hpp"
 #include "hullinspect/world/mesh_hull.hpp"
+#include "hullinspect/world/no_fly.hpp"
 #include "hullinspect/world/scenario.hpp"
 #include "support/mesh_fixtures.hpp"
 #include "support/mission_checker.hpp"
+#include "support/seam_hull.hpp"
 
 namespace hullinspect::planners {
 namespace {
@@ -66,9 +68,11 @@ struct LongFlights final : MissionObserver {
 
 // Every registered planner's mission on `hull` (`uavs` UAVs, the imperfect scenario) completes
 // under the shared MissionChecker; `watch` observes each mission and `after(name)` runs after it.
-void every_registered_planner_completes(const world::HullMask& hull, int uavs,
-                                        MissionObserver& watch,
-                                        const std::function<void(const std::string&)>& after) {
+// `configure` sets anything else of the spec (starts, no-fly zones).
+void every_registered_planner_completes(
+    const world::HullMask& hull, int uavs, MissionObserver& watch,
+    const std::function<void(const std::string&)>& after,
+    const std::function<void(MissionSpec&)>& configure = [](MissionSpec&) {}) {
   for (const auto& info : planner_registry()) {
     SCOPED_TRACE(info.name);
     MissionSpec spec;
@@ -77,6 +81,7 @@ void every_registered_planner_completes(const world::HullMask& hull, int uavs,
     spec.params.cell_size_m = hull.geometry()->cell_size;
     spec.seed = 5;
     spec.corrosion = world::scenario("imperfect").corrosion(hull.width());
+    configure(spec);
     testing::MissionChecker checker;
     MissionOptions options;
     options.observers = {&checker, &watch};
@@ -84,6 +89,7 @@ void every_registered_planner_completes(const world::HullMask& hull, int uavs,
     EXPECT_TRUE(r.complete);
     EXPECT_TRUE(checker.ok());
     EXPECT_EQ(r.hull_cells, hull.cell_count());
+    EXPECT_EQ(r.unreachable_cells, 0);
     after(info.name);
   }
 }
@@ -132,6 +138,30 @@ TEST(MeshHullMissions, EveryRegisteredPlannerCompletesOnAHullClosedAtItsSeam) {
   every_registered_planner_completes(hull, 4, seam, [](const std::string&) {});
   // The planners that follow the distance service's paths take the short way across the stern.
   EXPECT_GT(seam.moves, 0);
+}
+
+// A small hull round a cylinder, a no-fly wall across it from keel to deck: every UAV starts west
+// of the wall, and the cells east of it are reached only across the seam.
+TEST(MeshHullMissions, EveryRegisteredPlannerReachesTheFarSideOfAWallAcrossTheSeam) {
+  std::string rows;
+  for (int y = 0; y < 6; ++y) rows += std::string(36, 'X') + "\n";
+  const world::HullMask hull = testing::seam_cylinder_hull(rows);
+  auto wall = std::make_shared<world::NoFlyMask>(hull.width(), hull.height(), 0);
+  for (int y = 0; y < hull.height(); ++y) (*wall)(12, y) = 1;
+  SeamCrossings seam;
+  int missions = 0;
+  every_registered_planner_completes(
+      hull, 3, seam,
+      [&](const std::string& name) {
+        EXPECT_GT(seam.moves, 0) << name;
+        seam.moves = 0;
+        ++missions;
+      },
+      [&](MissionSpec& spec) {
+        spec.params.starts = {{2, 1}, {6, 3}, {10, 4}};
+        spec.params.no_fly = wall;
+      });
+  EXPECT_GE(missions, 4);
 }
 
 TEST(MeshHullMissions, EveryPlannerCompletesOnTheDtc) {

@@ -40,7 +40,8 @@ namespace hullinspect::testing {
     const auto uk = static_cast<std::size_t>(k);
     if (sizes[uk] == 0) return ::testing::AssertionFailure() << "region " << k << " is empty";
     for (int i = 0; i < region.size(); ++i) region[i] = p.owner[i] == k;
-    const int parts = grid::label_components(region, labels, scratch);
+    // Across the seam of a grid that closes on itself too (request.flights).
+    const int parts = grid::label_components(region, labels, scratch, request.flights);
     if (parts != 1 && check.regions_connected)
       return ::testing::AssertionFailure() << "region " << k << " has " << parts << " components";
     if (check.regions_hold_starts && p.owner[request.starts[uk]] != k) {

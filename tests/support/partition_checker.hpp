@@ -1,9 +1,9 @@
 #pragma once
 // Shared partition checker: every hull cell assigned exactly once (non-hull cells −1), every region
-// 4-connected (unless told otherwise) and holding its start cell (likewise), region sizes matching
-// the reported counts, and balance within `tolerance` of the desired weights. With no-fly zones
-// (request.seen_from) every region is flyable: each of its cells that some flight component sees
-// is seen from the component of its UAV's start (docs/model.md §8).
+// 4-connected (unless told otherwise; across the seam of request.flights too) and holding its start
+// cell (likewise), region sizes matching the reported counts, and balance within `tolerance` of the
+// desired weights. With no-fly zones (request.seen_from) every region is flyable: each of its cells
+// that some flight component sees is seen from the component of its UAV's start (docs/model.md §8).
 
 #include <gtest/gtest.h>
 

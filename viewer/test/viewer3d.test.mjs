@@ -428,3 +428,52 @@ test('no-fly positions darken the view exactly where they are', async () => {
   });
   await page.close();
 });
+
+// The Wigley hull closed at its stern (--include transom): column 0 and column W − 1 meet at the
+// seam. The 2D map dashes both edges of the grid in the seam's colour; the 3D view draws the seam
+// as one line on the hull, along the stern's centre line where the two ends meet.
+test('the seam is marked on both edges of the 2D map and as one line on the hull in 3D', async () => {
+  const SEAM = [230, 0, 120]; // viewer/palette.js SEAM_MARK, written out again on purpose
+  const {html, trace} = wigleyPage('wigley-seam-16', ['--sides', 'both', '--include', 'transom']);
+  assert.equal(trace.ship_frame.seam, true);
+  const {width: W, height: H, cell_size_m: cell} = trace.grid;
+  const {surface} = trace.ship_frame;
+  assert.ok(Math.hypot(...surface[0][0].map((v, d) => v - surface[0][W - 1][d])) < cell,
+            'the two ends of a row meet at the seam');
+  const {page} = await open(html);
+  // 3D: one point per row, between the row's two ends (the seam), a tenth of a cell off them.
+  const seam = await page.evaluate(() => window.hullViewer.view3d().seamPoints);
+  assert.equal(seam.length, H);
+  seam.forEach((p, y) => {
+    for (const q of [surface[y][0], surface[y][W - 1]]) {
+      const gap = Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+      assert.ok(gap <= 0.6 * cell, `row ${y}: seam point ${p} is ${gap} m from its end ${q}`);
+    }
+  });
+  // 2D: both edges dashed in the seam's colour, nothing else drawn there.
+  await page.click('#btn-3d');
+  await page.evaluate(() => {
+    for (const name of ['footprints', 'paths', 'plans', 'targets', 'layers', 'labels']) {
+      const box = document.getElementById(`show-${name}`);
+      box.checked = false;
+      box.dispatchEvent(new Event('change'));
+    }
+  });
+  await settle(page);
+  const {edges, pixels} = await page.evaluate(() => {
+    const map = window.hullViewer.viewer.map;
+    const c = document.getElementById('overlay-canvas');
+    const dpr = c.width / c.getBoundingClientRect().width;
+    const ctx = c.getContext('2d');
+    const at = (x, y) => Array.from(ctx.getImageData(Math.floor(x * dpr), Math.floor(y * dpr), 1, 1).data);
+    // 18 px: the map's top padding; the first dash covers its first 6 px.
+    return {edges: map.seamEdges, pixels: map.seamEdges.map((x) => at(x, 18 + 3))};
+  });
+  assert.equal(edges.length, 2);
+  pixels.forEach((p, j) => assert.deepEqual(p.slice(0, 3), SEAM, `edge ${j}: ${p}`));
+  await page.close();
+  // A hull that does not close on itself has no seam to mark.
+  const plain = await open(mask.html);
+  assert.deepEqual(await plain.page.evaluate(() => window.hullViewer.viewer.map.seamEdges), []);
+  await plain.page.close();
+});

@@ -7,7 +7,8 @@
 //    footprint, which costs arrivals at z = 1 (s1² cells, u_z transit steps each, 2·u_z between two
 //    of one UAV) or z = 1 moves (s1 cells each).
 //  * reach: a cell is observed only from a position whose footprint holds it, and a UAV needs at
-//    least the Manhattan distance to get there (+ u_z to descend for a corroded cell).
+//    least the Manhattan distance to get there (+ u_z to descend for a corroded cell); on a grid
+//    that closes on itself, the shorter way round across the seam.
 // With a battery, the rate argument also pays for the sorties the work forces (sortie_t_m).
 
 #include <span>

@@ -36,7 +36,8 @@ CellBox parse_cell_box(const std::string& text, const std::string& option);
 
 /// Everything a mission derives from its no-fly positions before it starts.
 struct Reachability {
-  /// Positions a UAV can be at: not no-fly and 4-connected over such positions to a start.
+  /// Positions a UAV can be at: not no-fly and 4-connected over such positions to a start (the
+  /// neighbours of grid::neighbour: across the seam of a grid that closes on itself too).
   grid::Grid<std::uint8_t> flyable;
   /// Per cell: kReachZ2 | kReachZ1 bits (hull cells only; 0 elsewhere).
   grid::Grid<std::uint8_t> reach;
@@ -44,8 +45,8 @@ struct Reachability {
   int unreachable_z2 = 0;  ///< hull cells no flyable z = 2 footprint contains (never seen)
   bool any_no_fly = false;
   /// No-fly zones only (empty otherwise): per position, the flight component it belongs to — the
-  /// 4-connected parts of the flyable positions, numbered in order of the lowest UAV id starting
-  /// in each (component 0 holds UAV 0) — and -1 where not flyable.
+  /// 4-connected parts of the flyable positions (across the seam too), numbered in order of the
+  /// lowest UAV id starting in each (component 0 holds UAV 0) — and -1 where not flyable.
   grid::Grid<int> flight_component;
   int flight_components = 1;
   /// No-fly zones only (empty otherwise): per hull cell, the one flight component that sees it

@@ -32,4 +32,9 @@ grid::StandoffPoints standoff_points(const HullGeometry& g);
 /// and whenever every neighbour is one step away.
 grid::FlightSteps neighbour_flights(const HullMask& hull, const MissionParams& params);
 
+/// The seam of a hull whose grid closes on itself (geometry `seam`, at least three columns) as a
+/// table of one-step flights linking every row's two ends: what connectivity asks of the grid
+/// (grid::neighbour), without the flights' lengths. Empty for any other hull.
+grid::EdgeSteps seam_links(const HullMask& hull);
+
 }  // namespace hullinspect::world
