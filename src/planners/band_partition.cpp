@@ -44,6 +44,27 @@ class BandOrder {
     const int band = band_of_[static_cast<std::size_t>(x)];
     return {band, band % 2 == 0 ? y : -y, x};
   }
+  /// Every hull cell in the boustrophedon's order (`sort` of all of them), read band by band.
+  std::vector<int> hull_cells(const world::HullMask& hull) const {
+    std::vector<int> ordered;
+    ordered.reserve(hull.cells().size());
+    int first = 0;  // the band's first column
+    while (first < width_) {
+      int end = first + 1;
+      while (end < width_ &&
+             band_of_[static_cast<std::size_t>(end)] == band_of_[static_cast<std::size_t>(first)])
+        ++end;
+      const bool up = band_of_[static_cast<std::size_t>(first)] % 2 == 0;
+      for (int r = 0; r < hull.height(); ++r) {
+        const int y = up ? r : hull.height() - 1 - r;
+        for (int x = first; x < end; ++x) {
+          if (hull.is_hull(x, y)) ordered.push_back(hull.mask().index(x, y));
+        }
+      }
+      first = end;
+    }
+    return ordered;
+  }
   /// Sorts cells into the boustrophedon's order.
   void sort(std::span<int> cells) const {
     std::sort(cells.begin(), cells.end(), [this](int a, int b) { return key(a) < key(b); });
@@ -70,11 +91,11 @@ class BandOrder {
 BandPieces::BandPieces(const world::HullMask& hull, const grid::Grid<double>& extra,
                        std::span<const int> band_start, std::span<const grid::Cell> starts,
                        double row_cost, double band_cost)
-    : hull_(&hull), order_(hull.cells()) {
+    : hull_(&hull) {
   const int n = static_cast<int>(starts.size());
   const bool weighted = extra.size() > 0;
   const BandOrder band_order(band_start, hull.width());
-  band_order.sort(order_);
+  order_ = band_order.hull_cells(hull);
   // The rows of the bands, in order: [row_begin_[r], row_begin_[r + 1]) of `order_`, their work
   // and the prefix sums of their extra work.
   extra_before_.push_back(0.0);
