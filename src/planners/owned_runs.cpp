@@ -61,15 +61,13 @@ BandExtent covered(const LegBox& box, bool rows, int line) {
 }
 }  // namespace
 
-int OwnedRuns::first_kept(int line, std::span<const LegBox> removed) const {
-  const bool rows = axis_ == BandAxis::kRows;
+int OwnedRuns::first_kept(int line, std::span<const BandExtent> gaps) const {
   for (const Run& run : runs_[static_cast<std::size_t>(line)]) {
     // Past every removed interval that holds the candidate, until none does.
     int at = run.lo;
     for (bool moved = true; moved && at <= run.hi;) {
       moved = false;
-      for (const LegBox& box : removed) {
-        const BandExtent gap = covered(box, rows, line);
+      for (const BandExtent& gap : gaps) {
         if (gap.lo <= at && at <= gap.hi) {
           at = gap.hi + 1;
           moved = true;
@@ -81,15 +79,13 @@ int OwnedRuns::first_kept(int line, std::span<const LegBox> removed) const {
   return -1;
 }
 
-int OwnedRuns::last_kept(int line, std::span<const LegBox> removed) const {
-  const bool rows = axis_ == BandAxis::kRows;
+int OwnedRuns::last_kept(int line, std::span<const BandExtent> gaps) const {
   const auto& runs = runs_[static_cast<std::size_t>(line)];
   for (auto run = runs.rbegin(); run != runs.rend(); ++run) {
     int at = run->hi;
     for (bool moved = true; moved && at >= run->lo;) {
       moved = false;
-      for (const LegBox& box : removed) {
-        const BandExtent gap = covered(box, rows, line);
+      for (const BandExtent& gap : gaps) {
         if (gap.lo <= at && at <= gap.hi) {
           at = gap.lo - 1;
           moved = true;
@@ -105,15 +101,27 @@ RegionBands OwnedRuns::bands(int s, std::span<const int> band_start,
                              std::span<const LegBox> removed) const {
   // Each line's cells kept, once; then, as region_bands: row bands from the grid's bottom, column
   // bands from the first column that keeps a cell (or the band grid's band of it).
+  const bool rows = axis_ == BandAxis::kRows;
   kept_.resize(static_cast<std::size_t>(across_size_));
   int first = -1;
   for (int c = 0; c < across_size_; ++c) {
     BandExtent& line = kept_[static_cast<std::size_t>(c)];
-    line.lo = first_kept(c, removed);
-    line.hi = line.lo < 0 ? -1 : last_kept(c, removed);
+    const auto& runs = runs_[static_cast<std::size_t>(c)];
+    line = {0, -1};
+    if (runs.empty()) continue;
+    gaps_.clear();
+    for (const LegBox& box : removed) {
+      const BandExtent gap = covered(box, rows, c);
+      if (gap.lo <= gap.hi) gaps_.push_back(gap);
+    }
+    if (gaps_.empty()) {
+      line = {runs.front().lo, runs.back().hi};
+    } else {
+      line.lo = first_kept(c, gaps_);
+      line.hi = line.lo < 0 ? -1 : last_kept(c, gaps_);
+    }
     if (line.hi >= 0 && first < 0) first = c;
   }
-  const bool rows = axis_ == BandAxis::kRows;
   RegionBands region;
   region.origin = 0;
   if (!rows) {

@@ -33,13 +33,15 @@ class OwnedRuns {
     int lo;
     int hi;
   };
-  /// Along one line (across coordinate `line`), the first / last cell not in `removed` (−1: none).
-  int first_kept(int line, std::span<const LegBox> removed) const;
-  int last_kept(int line, std::span<const LegBox> removed) const;
+  /// Along one line (across coordinate `line`), its first / last cell in none of the intervals
+  /// `gaps` along it (−1: none).
+  int first_kept(int line, std::span<const BandExtent> gaps) const;
+  int last_kept(int line, std::span<const BandExtent> gaps) const;
   BandAxis axis_ = BandAxis::kColumns;
   int across_size_ = 0;
   std::vector<std::vector<Run>> runs_;    // per line across the bands, in order along it
   mutable std::vector<BandExtent> kept_;  // scratch of bands: per line, its first and last kept
+  mutable std::vector<BandExtent> gaps_;  // scratch of bands: one line's removed intervals
 };
 
 }  // namespace hullinspect::planners
