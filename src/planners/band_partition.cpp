@@ -165,6 +165,17 @@ void BandPieces::assign_rows(grid::Grid<std::int16_t>& owner, std::size_t lo, st
     owner[order_[j]] = static_cast<std::int16_t>(k);
 }
 
+std::pair<int, int> BandPieces::columns(std::size_t lo, std::size_t hi) const {
+  const int width = hull_->width();
+  int first = width;
+  int last = -1;
+  for (std::size_t j = row_begin_[lo]; j < row_begin_[hi]; ++j) {
+    first = std::min(first, order_[j] % width);
+    last = std::max(last, order_[j] % width);
+  }
+  return {first, last};
+}
+
 double BandPieces::work(std::size_t lo, std::size_t hi) const {
   double sum = 0;
   for (std::size_t r = lo; r < hi; ++r) sum += row_work_[r];

@@ -87,8 +87,10 @@ partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows
     const auto known = planned.find(key);
     if (known != planned.end()) return known->second;
     const int k = rows.uav_of_piece(piece);
+    piece_columns_ = rows.columns(first_row(piece), end_row(piece));
     const double end = planned_sweep_steps(k, context.starts[static_cast<std::size_t>(k)]) +
                        rows.extra(first_row(piece), end_row(piece)) / step;
+    piece_columns_ = {0, -1};
     planned.emplace(key, end);
     return end;
   };

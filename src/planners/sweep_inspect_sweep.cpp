@@ -56,6 +56,8 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
     SweepRequest request{k, band, axis, true, band_start_, true};
     request.edge_approach = true;
     request.own_band_first = true;
+    request.x_lo = piece_columns_.first;
+    request.x_hi = piece_columns_.second;
     SweepPlan plan = approach_and_sweep(owner, request, from, sweep_scratch_);
     if (plan.approach > 0)
       uavs_[static_cast<std::size_t>(k)].approach_rest = plan.waypoints.size() - plan.approach;
