@@ -30,6 +30,11 @@ void OwnedRuns::build(const grid::Grid<std::int16_t>& owner, int uav, BandAxis a
       }
     }
   }
+  // The lines that hold runs, so that the reads below skip the others.
+  line_lo_ = 0;
+  while (line_lo_ < across_size_ && runs_[static_cast<std::size_t>(line_lo_)].empty()) ++line_lo_;
+  line_hi_ = across_size_ - 1;
+  while (line_hi_ >= line_lo_ && runs_[static_cast<std::size_t>(line_hi_)].empty()) --line_hi_;
 }
 
 LegBox OwnedRuns::box() const {
@@ -38,7 +43,7 @@ LegBox OwnedRuns::box() const {
   int across_hi = -1;
   int along_lo = std::numeric_limits<int>::max();
   int along_hi = -1;
-  for (int c = 0; c < across_size_; ++c) {
+  for (int c = line_lo_; c <= line_hi_; ++c) {
     const auto& line = runs_[static_cast<std::size_t>(c)];
     if (line.empty()) continue;
     across_lo = std::min(across_lo, c);
@@ -104,7 +109,7 @@ RegionBands OwnedRuns::bands(int s, std::span<const int> band_start,
   const bool rows = axis_ == BandAxis::kRows;
   kept_.resize(static_cast<std::size_t>(across_size_));
   int first = -1;
-  for (int c = 0; c < across_size_; ++c) {
+  for (int c = line_lo_; c <= line_hi_; ++c) {
     BandExtent& line = kept_[static_cast<std::size_t>(c)];
     const auto& runs = runs_[static_cast<std::size_t>(c)];
     line = {0, -1};
@@ -130,7 +135,7 @@ RegionBands OwnedRuns::bands(int s, std::span<const int> band_start,
   }
   region.bands.assign(static_cast<std::size_t>((across_size_ - region.origin + s - 1) / s),
                       BandExtent{std::numeric_limits<int>::max(), -1});
-  for (int c = std::max(region.origin, first); first >= 0 && c < across_size_; ++c) {
+  for (int c = std::max(region.origin, first); first >= 0 && c <= line_hi_; ++c) {
     const BandExtent line = kept_[static_cast<std::size_t>(c)];
     if (line.hi < 0) continue;
     BandExtent& e = region.bands[static_cast<std::size_t>((c - region.origin) / s)];

@@ -39,7 +39,9 @@ class OwnedRuns {
   int last_kept(int line, std::span<const BandExtent> gaps) const;
   BandAxis axis_ = BandAxis::kColumns;
   int across_size_ = 0;
-  std::vector<std::vector<Run>> runs_;    // per line across the bands, in order along it
+  std::vector<std::vector<Run>> runs_;  // per line across the bands, in order along it
+  int line_lo_ = 0;                     // the first and last line with a run (hi < lo: none)
+  int line_hi_ = -1;
   mutable std::vector<BandExtent> kept_;  // scratch of bands: per line, its first and last kept
   mutable std::vector<BandExtent> gaps_;  // scratch of bands: one line's removed intervals
 };
