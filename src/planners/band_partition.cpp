@@ -45,6 +45,27 @@ class BandOrder {
     const int band = band_of_[static_cast<std::size_t>(x)];
     return {band, band % 2 == 0 ? y : -y, x};
   }
+  /// Every hull cell in the boustrophedon's order (`sort` of all of them), read band by band.
+  std::vector<int> hull_cells(const world::HullMask& hull) const {
+    std::vector<int> ordered;
+    ordered.reserve(hull.cells().size());
+    int first = 0;  // the band's first column
+    while (first < width_) {
+      int end = first + 1;
+      while (end < width_ &&
+             band_of_[static_cast<std::size_t>(end)] == band_of_[static_cast<std::size_t>(first)])
+        ++end;
+      const bool up = band_of_[static_cast<std::size_t>(first)] % 2 == 0;
+      for (int r = 0; r < hull.height(); ++r) {
+        const int y = up ? r : hull.height() - 1 - r;
+        for (int x = first; x < end; ++x) {
+          if (hull.is_hull(x, y)) ordered.push_back(hull.mask().index(x, y));
+        }
+      }
+      first = end;
+    }
+    return ordered;
+  }
   /// Sorts cells into the boustrophedon's order.
   void sort(std::span<int> cells) const {
     std::sort(cells.begin(), cells.end(), [this](int a, int b) { return key(a) < key(b); });
@@ -71,11 +92,11 @@ class BandOrder {
 BandPieces::BandPieces(const world::HullMask& hull, const grid::Grid<double>& extra,
                        std::span<const int> band_start, std::span<const grid::Cell> starts,
                        double row_cost, double band_cost)
-    : hull_(&hull), order_(hull.cells()) {
+    : hull_(&hull) {
   const int n = static_cast<int>(starts.size());
   const bool weighted = extra.size() > 0;
   const BandOrder band_order(band_start, hull.width());
-  band_order.sort(order_);
+  order_ = band_order.hull_cells(hull);
   // The rows of the bands, in order: [row_begin_[r], row_begin_[r + 1]) of `order_`, their work
   // and the prefix sums of their extra work.
   extra_before_.push_back(0.0);
@@ -143,6 +164,17 @@ void BandPieces::assign_rows(grid::Grid<std::int16_t>& owner, std::size_t lo, st
                              int k) const {
   for (std::size_t j = row_begin_[lo]; j < row_begin_[hi]; ++j)
     owner[order_[j]] = static_cast<std::int16_t>(k);
+}
+
+std::pair<int, int> BandPieces::columns(std::size_t lo, std::size_t hi) const {
+  const int width = hull_->width();
+  int first = width;
+  int last = -1;
+  for (std::size_t j = row_begin_[lo]; j < row_begin_[hi]; ++j) {
+    first = std::min(first, order_[j] % width);
+    last = std::max(last, order_[j] % width);
+  }
+  return {first, last};
 }
 
 double BandPieces::work(std::size_t lo, std::size_t hi) const {

@@ -12,20 +12,22 @@ PriorTourSplitter::PriorTourSplitter(int width, int half, std::size_t capacity)
 }
 
 int PriorTourSplitter::tour_steps(grid::Cell from, std::span<const int> cells) {
-  left_.assign(cells.begin(), cells.end());
+  // Positions, not indices: the nearest-first loop reads every cell left at every leg.
+  left_.clear();
+  for (const int i : cells) left_.push_back(cell(i));
   int steps = 0;
   grid::Cell at = from;
   while (!left_.empty()) {
     int best_d = std::numeric_limits<int>::max();
     grid::Cell best{};
-    for (const int i : left_) {
-      const grid::Cell c = cell(i);
+    for (const grid::Cell c : left_) {
       const grid::Cell q{std::clamp(at.x, c.x - half_, c.x + half_),
                          std::clamp(at.y, c.y - half_, c.y + half_)};
       const int d = grid::manhattan(at, q);
       if (d < best_d) {
         best_d = d;
         best = q;
+        if (d == 0) break;  // none is nearer, and the first of equals is kept
       }
     }
     steps += best_d;
@@ -34,8 +36,7 @@ int PriorTourSplitter::tour_steps(grid::Cell from, std::span<const int> cells) {
     const int x_hi = std::max(at.x, best.x) + half_;
     const int y_lo = std::min(at.y, best.y) - half_;
     const int y_hi = std::max(at.y, best.y) + half_;
-    std::erase_if(left_, [&](int i) {
-      const grid::Cell c = cell(i);
+    std::erase_if(left_, [&](grid::Cell c) {
       const bool along_x = std::abs(c.y - at.y) <= half_ && c.x >= x_lo && c.x <= x_hi;
       const bool along_y = std::abs(c.x - best.x) <= half_ && c.y >= y_lo && c.y <= y_hi;
       return along_x || along_y;

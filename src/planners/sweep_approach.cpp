@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "hullinspect/planners/owned_runs.hpp"
 #include "hullinspect/world/mission_params.hpp"
 
 namespace hullinspect::planners {
@@ -202,9 +203,11 @@ std::vector<SweepCandidate> axis_candidates(const grid::Grid<std::int16_t>& owne
 std::vector<SweepCandidate> approach_candidates(const grid::Grid<std::int16_t>& owner,
                                                 const SweepRequest& request, grid::Cell from,
                                                 SweepScratch& scratch_space) {
-  grid::Grid<std::int16_t>& scratch = scratch_space.owner;
-  // The region's extent; the plans below read only its columns.
-  const OwnedBox region_box = owned_box(owner, request.uav);
+  // The region's cells as runs along its bands, read once: its extent, the plain sweep's bands,
+  // and each approach's bands (the region less the approach's footprints) come from the runs.
+  OwnedRuns& runs = scratch_space.runs;
+  runs.build(owner, request.uav, request.axis, request.x_lo, request.x_hi);
+  const LegBox region_box = runs.box();
   const int x_lo = region_box.x_lo, x_hi = region_box.x_hi;
   const int y_lo = region_box.y_lo, y_hi = region_box.y_hi;
   std::vector<SweepCandidate> candidates(1);  // the plain sweep first
@@ -212,11 +215,7 @@ std::vector<SweepCandidate> approach_candidates(const grid::Grid<std::int16_t>& 
   SweepRequest within = request;
   within.x_lo = x_lo;
   within.x_hi = x_hi;
-  if (scratch.width() != owner.width() || scratch.height() != owner.height())
-    scratch = grid::Grid<std::int16_t>(owner.width(), owner.height(), -1);
-  // The region's bands, read once: the plain sweep's, and cut in two for the own-band plans.
-  const RegionBands region =
-      region_bands(owner, request.uav, request.band, request.axis, request.band_start, x_lo, x_hi);
+  const RegionBands region = runs.bands(request.band, request.band_start);
   const int across_size = request.axis == BandAxis::kRows ? owner.height() : owner.width();
   std::vector<grid::Cell>& plain = candidates[0].plan.waypoints;
   plain = sweep_bands(region, request.band, request.axis, request.trim_ends, from, across_size);
@@ -260,23 +259,18 @@ std::vector<SweepCandidate> approach_candidates(const grid::Grid<std::int16_t>& 
         // from → (line, from_along) → (line, edge) → (target, edge), each leg straight.
         const std::array<grid::Cell, 4> path{from, cell(from_along, line), cell(edge, line),
                                              cell(edge, target)};
-        // Only the region's columns of the scratch grid are read (as band_sweep is told).
-        for (int y = 0; y < owner.height(); ++y) {
-          for (int x = within.x_lo; x <= within.x_hi; ++x) scratch(x, y) = owner(x, y);
-        }
+        // The region less what the approach's footprints see.
         int length = 0;
+        std::array<LegBox, 3> seen;  // one box per leg
         for (std::size_t leg = 1; leg < path.size(); ++leg) {
           const grid::Cell a = path[leg - 1];
           const grid::Cell b = path[leg];
           length += grid::manhattan(a, b);
-          const LegBox box = leg_footprints(a, b, h, owner.width(), owner.height());
-          for (int y = box.y_lo; y <= box.y_hi; ++y) {
-            for (int x = box.x_lo; x <= box.x_hi; ++x) {
-              if (scratch(x, y) == request.uav) scratch(x, y) = -1;
-            }
-          }
+          seen[leg - 1] = leg_footprints(a, b, h, owner.width(), owner.height());
         }
-        auto sweep = plain_sweep(scratch, within, path.back());
+        auto sweep = sweep_bands(runs.bands(request.band, request.band_start, seen), request.band,
+                                 request.axis, request.trim_ends, path.back(), across_size);
+        nearer_end_first(sweep, path.back(), request.nearer_end);
         // The approach's legs and the flight to the first band are its reach.
         const PlanCost bands = manhattan_cost(path.back(), sweep);
         SweepCandidate candidate;

@@ -4,6 +4,8 @@
 #include "hullinspect/planners/sweep_inspect_planner.hpp"
 
 #include <algorithm>
+#include <array>
+#include <map>
 
 #include "hullinspect/core/errors.hpp"
 #include "hullinspect/planners/band_partition.hpp"
@@ -76,10 +78,21 @@ partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows
   const auto end_row = [&](int piece) {
     return piece == n - 1 ? rows.rows() : cuts[static_cast<std::size_t>(piece)];
   };
+  // A piece's planned end depends only on its rows (owner_ holds exactly them) and its UAV's
+  // start, and the passes try the same cuts again: each piece's end is planned once per rows.
+  std::map<std::array<std::size_t, 3>, double> planned;
   const auto planned_end = [&](int piece) {
+    const std::array<std::size_t, 3> key{static_cast<std::size_t>(piece), first_row(piece),
+                                         end_row(piece)};
+    const auto known = planned.find(key);
+    if (known != planned.end()) return known->second;
     const int k = rows.uav_of_piece(piece);
-    return planned_sweep_steps(k, context.starts[static_cast<std::size_t>(k)]) +
-           rows.extra(first_row(piece), end_row(piece)) / step;
+    piece_columns_ = rows.columns(first_row(piece), end_row(piece));
+    const double end = planned_sweep_steps(k, context.starts[static_cast<std::size_t>(k)]) +
+                       rows.extra(first_row(piece), end_row(piece)) / step;
+    piece_columns_ = {0, -1};
+    planned.emplace(key, end);
+    return end;
   };
   std::vector<double> ends(static_cast<std::size_t>(n));
   for (int piece = 0; piece < n; ++piece)
@@ -192,6 +205,9 @@ void SweepInspectPlanner::find_dense_columns(const PlannerContext& context) {
     if (cells == 0 || expected <= options_.low_sweep_above * cells) continue;
     for (int x = x_lo; x < x_hi; ++x) dense_column_[static_cast<std::size_t>(x)] = 1;
   }
+  // No dense column: empty, so that a sweep's planning does not read a column's flag per cell.
+  if (std::none_of(dense_column_.begin(), dense_column_.end(), [](char d) { return d != 0; }))
+    dense_column_.clear();
 }
 
 }  // namespace hullinspect::planners

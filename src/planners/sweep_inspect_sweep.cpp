@@ -48,8 +48,6 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
     const std::size_t chosen = choose_plan(candidates);
     axis = chosen == 0 ? BandAxis::kRows : BandAxis::kColumns;
     waypoints = std::move(candidates[chosen].plan.waypoints);
-  } else {
-    waypoints = band_sweep(owner, k, band, axis, true, from, band_start_);
   }
   uavs_[static_cast<std::size_t>(k)].approach_rest = 0;
   if (approach && reach_ == nullptr) {
@@ -58,11 +56,14 @@ std::vector<grid::Cell> SweepInspectPlanner::boustrophedon_from(
     SweepRequest request{k, band, axis, true, band_start_, true};
     request.edge_approach = true;
     request.own_band_first = true;
+    request.x_lo = piece_columns_.first;
+    request.x_hi = piece_columns_.second;
     SweepPlan plan = approach_and_sweep(owner, request, from, sweep_scratch_);
     if (plan.approach > 0)
       uavs_[static_cast<std::size_t>(k)].approach_rest = plan.waypoints.size() - plan.approach;
     return std::move(plan.waypoints);
   }
+  if (!auto_axis) waypoints = band_sweep(owner, k, band, axis, true, from, band_start_);
   if (reach_ != nullptr) {
     // A strip end on a no-fly position is replaced by its nearest flyable viewpoint (or dropped);
     // the flight between waypoints goes around no-fly positions, and whatever the strips then

@@ -254,6 +254,36 @@ TEST(BandPartition, RefusesAPieceThatIsNotConnected) {
       Error);
 }
 
+// BandPieces::columns of any rows [lo, hi) are the first and last column of the cells that
+// assign_rows gives for them.
+TEST(BandPartition, ColumnsOfRowsAreThoseOfTheirCells) {
+  const auto& hull = world::default_hull();
+  for (int s : {5, 7, 11}) {
+    const std::vector<int> band_start = column_band_starts(std::vector<int>(hull.width(), s));
+    const BandPieces rows(hull, {}, band_start, sweep_coverage::spread_starts(hull.width(), 2), s,
+                          s);
+    std::mt19937 random(static_cast<unsigned>(s));
+    std::uniform_int_distribution<std::size_t> row(0, rows.rows() - 1);
+    for (int trial = 0; trial < 50; ++trial) {
+      std::size_t lo = row(random);
+      std::size_t hi = row(random);
+      if (lo > hi) std::swap(lo, hi);
+      ++hi;
+      grid::Grid<std::int16_t> owner(hull.width(), hull.height(), -1);
+      rows.assign_rows(owner, lo, hi, 0);
+      int first = hull.width();
+      int last = -1;
+      for (int i : hull.cells()) {
+        if (owner[i] != 0) continue;
+        first = std::min(first, i % hull.width());
+        last = std::max(last, i % hull.width());
+      }
+      EXPECT_EQ(rows.columns(lo, hi), std::make_pair(first, last))
+          << "s " << s << " rows " << lo << "-" << hi;
+    }
+  }
+}
+
 // On the default hull, for s ∈ {5, 7, 9, 11} and n ∈ {2, 4, 8}: the pieces are 4-connected and
 // balanced within one row's work, and each UAV's sweep of its piece on the shared band grid sees
 // every cell of it (band_sweep with band_start) from no more bands than the piece touches.

@@ -57,6 +57,8 @@ class BandPieces {
                            std::span<const double> offset = {}) const;
   /// Sets the owner of the cells of rows [lo, hi) to k.
   void assign_rows(grid::Grid<std::int16_t>& owner, std::size_t lo, std::size_t hi, int k) const;
+  /// The first and last column of the cells of rows [lo, hi) (rows of [lo, hi) must exist).
+  std::pair<int, int> columns(std::size_t lo, std::size_t hi) const;
   /// The work of rows [lo, hi), and the `extra` part of it.
   double work(std::size_t lo, std::size_t hi) const;
   double extra(std::size_t lo, std::size_t hi) const {

@@ -48,7 +48,7 @@ class PriorTourSplitter {
   grid::Cell cell(int index) const { return {index % width_, index / width_}; }
   int width_ = 1;
   int half_ = 0;
-  std::vector<int> left_;  // cells not yet seen by the estimated tour
+  std::vector<grid::Cell> left_;  // cells not yet seen by the estimated tour, in their order
 };
 
 }  // namespace hullinspect::planners

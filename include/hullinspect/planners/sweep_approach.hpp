@@ -11,6 +11,7 @@
 
 #include "hullinspect/grid/grid.hpp"
 #include "hullinspect/planners/band_sweep.hpp"
+#include "hullinspect/planners/owned_runs.hpp"
 #include "hullinspect/planners/sweep_chooser.hpp"
 
 namespace hullinspect::planners {
@@ -30,9 +31,9 @@ struct SweepRequest {
   bool own_band_first = false;  ///< consider sweeps that begin at the UAV's band
 };
 
-/// Reused between plans: the owner grid less an approach's cells, and the bands' cells along.
+/// Reused between plans: the region's runs, and the bands' cells along.
 struct SweepScratch {
-  grid::Grid<std::int16_t> owner;
+  OwnedRuns runs;
   std::vector<int> last_upto;   ///< per band and along: the last cell at or before it (−1)
   std::vector<int> first_from;  ///< per band and along: the first cell at or after it
   RegionBands first;

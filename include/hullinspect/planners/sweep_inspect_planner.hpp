@@ -300,9 +300,12 @@ class SweepInspectPlanner final : public Planner {
   // Per cell: detected and not yet inspected at a failure's re-split, which gave it to the share
   // whose sweep is to pass abreast of it (its finder may be the failed UAV).
   grid::Grid<std::uint8_t> resplit_detection_;
-  std::vector<char> dense_column_;         // per column: swept at z = 1 (empty: none is)
-  grid::Grid<std::int16_t> part_owner_;    // owner_ restricted to one part of a UAV's cells
-  SweepScratch sweep_scratch_;             // scratch of approach_and_sweep
+  std::vector<char> dense_column_;       // per column: swept at z = 1 (empty: none is)
+  grid::Grid<std::int16_t> part_owner_;  // owner_ restricted to one part of a UAV's cells
+  SweepScratch sweep_scratch_;           // scratch of approach_and_sweep
+  // While the band partition's cuts are balanced: the columns that hold the cells of the piece
+  // being planned, so that its sweep reads only those ({0, -1}: every column).
+  std::pair<int, int> piece_columns_{0, -1};
   PriorTourSplitter tours_;                // the prior tours' estimates and splits
   std::vector<grid::Cell> tour_points_;    // scratch of next_of_tour
   std::vector<std::size_t> tour_touched_;  // scratch of next_of_tour: nodes where a tour changed
