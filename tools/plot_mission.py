@@ -64,8 +64,8 @@ def read_trace(path):
         raise TraceError(f"{path}:{e.lineno}: not a JSON trace: {e.msg}") from None
     if not isinstance(trace, dict) or trace.get("format") != "hullinspect-trace":
         raise TraceError(f'{path}: format: expected "hullinspect-trace" (not a hullinspect trace?)')
-    if trace.get("version") not in (1, 2, 3):
-        raise TraceError(f"{path}: version: {trace.get('version')} is not supported (this script reads versions 1 to 3)")
+    if trace.get("version") not in (1, 2, 3, 4):
+        raise TraceError(f"{path}: version: {trace.get('version')} is not supported (this script reads versions 1 to 4)")
     for key in ("grid", "initial_map", "frames", "footprint", "result"):
         if key not in trace:
             raise TraceError(f"{path}: {key}: missing")

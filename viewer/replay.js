@@ -27,8 +27,9 @@
   class Replay {
     constructor(trace) {
       if (!trace || trace.format !== 'hullinspect-trace') throw new Error('not a hullinspect trace');
-      // Version 1 is version 2 without layer changes; version 2 is version 3 of the paper's model.
-      if (trace.version !== 1 && trace.version !== 2 && trace.version !== 3) {
+      // Version 1 is version 2 without layer changes; version 2 is version 3 of the paper's model;
+      // version 3 is version 4 with a flight home's climb recorded one step late.
+      if (![1, 2, 3, 4].includes(trace.version)) {
         throw new Error(`trace version ${trace.version} is not supported`);
       }
       this.trace = trace;

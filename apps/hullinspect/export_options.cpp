@@ -337,7 +337,7 @@ std::optional<ExportRequest> resolve_export(const ExportArgs& a, const std::stri
     } else if (firmware != "px4") {
       throw ParameterError("firmware", fmt::format("'{}' is not a firmware (expected px4 or "
                                                    "ardupilot)",
-                                                   firmware));
+                                                   escape_for_message(firmware, 200)));
     }
     auto& list = r.settings.firmwares;
     if (std::find(list.begin(), list.end(), f) == list.end()) list.push_back(f);

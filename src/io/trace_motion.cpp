@@ -141,6 +141,9 @@ TraceMission trace_mission(const TraceChecker& check, const json& trace, int ver
     m.away_unrecorded = trace["parameters"].contains("launch");
     return m;
   }
+  // Version 3 recorded the climb before a flight home on the plane climbed from until the first
+  // move away.
+  m.climb_recorded_at_move = version < 4;
   if (physical) read_launch(check, trace["launch"], m);
   if (auto battery = trace.find("battery"); battery != trace.end()) {
     if (!physical) check.fail("battery", "a battery needs launch sites (\"launch\")");
@@ -201,10 +204,11 @@ TraceCounts check_motion(const TraceChecker& check, const json& frames, const Tr
         } else if (!away && grid::adjacent(b.pos, s.pos, m.flights.plane[0])) {
           s.flight_left = m.flights.between(b.pos, s.pos, b.z) - 1;
         }
-        // Version 2 recorded the climb before a flight home on the plane climbed from until the
-        // first move: the plane is not checked across a move away.
+        // Versions 2 and 3 recorded the climb before a flight home on the plane climbed from until
+        // the first move: the plane is not checked across a move away.
         sim::UavState flown = s;
-        if (m.away_unrecorded && flown.pos != b.pos) flown.z = b.z;
+        if (flown.pos != b.pos && (m.away_unrecorded || (m.climb_recorded_at_move && away)))
+          flown.z = b.z;
         if (auto broken = sim::step_violation(b, flown, m.plane_change_steps, m.flights)) {
           check.fail(where, fmt::format("UAV {} {} (from frame {})", k, *broken, i - 1));
         }

@@ -26,6 +26,8 @@ struct TraceMission {
   const nlohmann::json* no_fly = nullptr;  ///< the `no_fly` rows, or null
   /// A version 2 trace of a mission with launch sites: it does not record when a UAV is away.
   bool away_unrecorded = false;
+  /// Version 3: a UAV sent home from plane 1 is recorded on plane 1 until its first move away.
+  bool climb_recorded_at_move = false;
   grid::FlightSteps flights;
   std::vector<grid::Cell> sites;  ///< empty: the paper's model (no launch site)
   std::vector<int> site_of;       ///< per UAV, an index into sites

@@ -88,9 +88,14 @@ partition::Partition SweepInspectPlanner::balance_flights(const BandPieces& rows
     if (known != planned.end()) return known->second;
     const int k = rows.uav_of_piece(piece);
     piece_columns_ = rows.columns(first_row(piece), end_row(piece));
+    // The narrowed columns hold only for this plan, also when it throws (the partition then
+    // falls back and the mission's sweeps read every column).
+    struct WholeColumnsAfter {
+      decltype(piece_columns_)& columns;
+      ~WholeColumnsAfter() { columns = {0, -1}; }
+    } whole_columns_after{piece_columns_};
     const double end = planned_sweep_steps(k, context.starts[static_cast<std::size_t>(k)]) +
                        rows.extra(first_row(piece), end_row(piece)) / step;
-    piece_columns_ = {0, -1};
     planned.emplace(key, end);
     return end;
   };

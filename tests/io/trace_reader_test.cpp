@@ -138,10 +138,10 @@ TEST(TraceReader, ReadsAFileAndNamesItOnFailure) {
 TEST(TraceReader, NamesTheDamagedField) {
   EXPECT_EQ(problem_after([](json& t) { t["format"] = "something-else"; }),
             "mission.json: format: expected \"hullinspect-trace\" (not a hullinspect trace?)");
-  EXPECT_EQ(problem_after([](json& t) { t["version"] = 4; }),
-            "mission.json: version: 4 is not supported (this hullinspect reads versions 1 to 3)");
+  EXPECT_EQ(problem_after([](json& t) { t["version"] = 5; }),
+            "mission.json: version: 5 is not supported (this hullinspect reads versions 1 to 4)");
   EXPECT_EQ(problem_after([](json& t) { t["version"] = 0; }),
-            "mission.json: version: 0 is not supported (this hullinspect reads versions 1 to 3)");
+            "mission.json: version: 0 is not supported (this hullinspect reads versions 1 to 4)");
   EXPECT_EQ(problem_after([](json& t) { t.erase("frames"); }), "mission.json: frames: missing");
   EXPECT_EQ(problem_after([](json& t) { t["grid"]["width"] = 0; }),
             "mission.json: grid.width: 0 is outside [1, 32768]");

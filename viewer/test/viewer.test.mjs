@@ -327,7 +327,7 @@ test('a 16-UAV Coop-Frontier trace of a 700 × 70 hull opens in a few seconds', 
                    '--trace', tracePath, '--html', html]);
   assert.equal(run.status, 0, run.stderr);
   const trace = JSON.parse(fs.readFileSync(tracePath, 'utf8'));
-  assert.equal(trace.version, 3);
+  assert.equal(trace.version, 4);
   measurements.coop16_trace_mb = Number((fs.statSync(tracePath).size / 1e6).toFixed(2));
   measurements.coop16_steps = trace.frames.length - 1;
   const {page, openMs} = await open(html);

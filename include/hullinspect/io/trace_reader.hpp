@@ -16,7 +16,7 @@ inline constexpr const char* kTraceFormat = "hullinspect-trace";
 /// its steps away; the sites, battery and separation), so every rule of the physical mission is
 /// checked from the trace. Version 2 (no such fields) and 1 (version 2 without layer changes) are
 /// still read.
-inline constexpr int kTraceVersion = 3;
+inline constexpr int kTraceVersion = 4;
 
 /// `uav_fields` of the paper's model (no launch site): the values of one UAV in a frame's `u`.
 inline constexpr std::array<const char*, 5> kPaperUavFields = {"x", "y", "z", "transit_left",
