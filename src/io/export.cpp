@@ -152,6 +152,16 @@ ExportPlan export_plan(const nlohmann::json& trace, const std::string& source) {
     plan.site_of = launch->at("site_of").get<std::vector<int>>();
   }
   plan.battery_limited = trace.contains("battery");
+  if (auto result = trace.find("result");
+      result != trace.end() && result->value("complete", false)) {
+    const auto& known = trace.at("series").at("known");
+    for (std::size_t t = 0; t < known.size(); ++t) {
+      if (known[t] == known.back()) {
+        plan.homing_frame = static_cast<int>(t);
+        break;
+      }
+    }
+  }
   return plan;
 }
 

@@ -164,8 +164,8 @@ Flight compress_flight(const ExportPlan& plan, std::span<const GridState> states
   while (states[w1].away) --w1;
   // The step in which the mission's last cell became known ends with the UAV turned home, so the
   // trace shows it away; but it made that step's move at work and sensed on arrival. A UAV sent
-  // home for its battery starts its flight home where it stood.
-  if (w1 + 1 < end) {
+  // home for its battery is away from the step it was sent: that step is the flight home's.
+  if (w1 + 1 < end && t0 + static_cast<int>(w1) + 1 == plan.homing_frame) {
     const auto& a = states[w1];
     const auto& b = states[w1 + 1];
     if (b.airborne && !b.in_transit && (b.pos != a.pos || b.z != a.z)) ++w1;

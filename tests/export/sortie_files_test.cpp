@@ -367,12 +367,21 @@ std::vector<bool> dji_photos(const std::string& kmz_path, std::size_t waypoints)
   return out;
 }
 
-// Whether UAV k senses in frame t (docs/model.md §12): at work, and in the frame its flight home
-// begins when it moved into it (the step that made the mission's last cell known ends with every
-// UAV turned home after it sensed).
-bool senses(const std::vector<io::GridState>& states, std::size_t t) {
+// The frame in which the mission's last cell became known: the first with the last `known`.
+std::size_t homing_frame(const nlohmann::json& trace) {
+  const auto& known = trace["series"]["known"];
+  std::size_t t = 0;
+  while (known[t] != known.back()) ++t;
+  return t;
+}
+
+// Whether UAV k senses in frame t (docs/model.md §12): at work, and in the frame in which the
+// mission's last cell became known when it moved into it (that step ends with every UAV turned
+// home after it sensed). A UAV sent home for its battery senses nothing from the step it is sent.
+bool senses(const std::vector<io::GridState>& states, std::size_t t, std::size_t homing) {
   if (!states[t].away) return true;
-  if (t == 0 || states[t - 1].away || !states[t].airborne || states[t].in_transit) return false;
+  if (t != homing || t == 0 || states[t - 1].away || !states[t].airborne || states[t].in_transit)
+    return false;
   return states[t].pos != states[t - 1].pos || states[t].z != states[t - 1].z;
 }
 
@@ -380,6 +389,7 @@ TEST_F(SortieFiles, OnlyTheLegsAtWorkTakePhotos) {
   // The flight out from the site and home senses nothing (docs/model.md §12): no format takes
   // photos there, and every leg at work does.
   const auto states = io::trace_states(trace_);
+  const std::size_t homing = homing_frame(trace_);
   for (std::size_t k = 0; k < 2; ++k) {
     for (std::size_t n = 1; n <= sorties(k).size(); ++n) {
       const auto stem = fmt::format("uav{}_sortie{}", k, n);
@@ -389,7 +399,7 @@ TEST_F(SortieFiles, OnlyTheLegsAtWorkTakePhotos) {
         bool work = true;
         for (auto t = static_cast<std::size_t>(rows.waypoints[i].t);
              t <= static_cast<std::size_t>(rows.waypoints[i + 1].t); ++t) {
-          work = work && senses(states[k], t);
+          work = work && senses(states[k], t, homing);
         }
         want.push_back(work);
       }

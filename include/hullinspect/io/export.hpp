@@ -85,6 +85,9 @@ struct ExportPlan {
   std::vector<grid::Cell> launch_sites{};
   std::vector<int> site_of{};
   bool battery_limited = false;  ///< the mission had an endurance (the trace's `battery`)
+  /// The frame in which the hull became known and every UAV was turned home (a complete
+  /// mission's first frame with its last `series.known`); -1 for an incomplete mission.
+  int homing_frame = -1;
   /// A waypoint's time or duration in steps, in seconds.
   double seconds(int steps) const { return steps * step_seconds; }
   bool is_hull(grid::Cell c) const;
