@@ -58,7 +58,7 @@ double literal_real(const std::string& key, const std::string& text) {
   double value{};
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || text.empty()) {
-    throw ParameterError(key, fmt::format("'{}' is not a valid value", escape_for_message(text)));
+    throw ParameterError(key, fmt::format("must be a number (got '{}')", escape_for_message(text)));
   }
   return value;
 }
