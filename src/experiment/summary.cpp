@@ -82,13 +82,16 @@ std::string table(const std::vector<std::vector<std::string>>& rows) {
 // mean bound of the same missions, not of every mission of the cell.
 struct BoundOfReached {
   double sum = 0;
+  double time_sum = 0;
   int count = 0;
   void add(std::optional<double> time, std::optional<double> bound) {
     if (!time || !bound) return;
     sum += *bound;
+    time_sum += *time;
     ++count;
   }
   double mean_bound() const { return count == 0 ? 0 : sum / count; }
+  double mean_time() const { return count == 0 ? 0 : time_sum / count; }
 };
 
 struct Paired {
@@ -232,6 +235,8 @@ std::vector<SummaryRow> summarize_runs(const CsvTable& runs, const std::string& 
     rows[i].bound_t_m = stats(btm[i]);
     rows[i].t_c_bound = paired[i].t_c.mean_bound();
     rows[i].t_m_bound = paired[i].t_m.mean_bound();
+    rows[i].t_c_paired = paired[i].t_c.mean_time();
+    rows[i].t_m_paired = paired[i].t_m.mean_time();
     auto& s = rows[i].sorties;
     if (s.runs > 0) {
       s.per_uav /= s.runs;
@@ -373,8 +378,11 @@ std::string summary_markdown(const std::vector<SummaryRow>& rows) {
           const TimeStats& time = mission ? r.t_m : r.t_c;
           std::string text = mean_std(time);
           const double paired_bound = mission ? r.t_m_bound : r.t_c_bound;
-          if (bound > 0 && time.count > 0 && paired_bound > 0)
-            text += fmt::format(" (×{:.2f})", time.mean / paired_bound);
+          const double paired_time = mission ? r.t_m_paired : r.t_c_paired;
+          if (bound > 0 && time.count > 0 && paired_bound > 0) {
+            text += fmt::format(" (×{:.2f})",
+                                (paired_time > 0 ? paired_time : time.mean) / paired_bound);
+          }
           if (r.incomplete > 0) text += fmt::format(" [{} incomplete]", r.incomplete);
           line.push_back(text);
         }

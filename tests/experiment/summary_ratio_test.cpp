@@ -66,6 +66,17 @@ TEST(SummaryRatio, PairsEachTimeWithTheBoundOfTheSameMissions) {
   EXPECT_NE(md.find("(×2.07)"), std::string::npos) << md;  // T_c 103.3 over 50
 }
 
+// A merged runs.csv may hold missions without a bound: the ratio is over the missions with both.
+TEST(SummaryRatio, LeavesOutTheTimesOfMissionsWithoutABound) {
+  const auto rows =
+      summarize_runs(runs("lawnmower", {"1,100,300,40,100", "1,200,500,,"}), "runs.csv");
+  ASSERT_EQ(rows.size(), 1U);
+  EXPECT_DOUBLE_EQ(rows[0].t_m.mean, 400);
+  const std::string md = summary_markdown(rows);
+  EXPECT_NE(md.find("400.0 ± 141.4 (×3.00)"), std::string::npos) << md;  // 300 over 100
+  EXPECT_NE(md.find("150.0 ± 70.7 (×2.50)"), std::string::npos) << md;   // 100 over 40
+}
+
 TEST(SummaryRatio, NoRatioWhenNoMissionHasBothATimeAndABound) {
   const auto rows = summarize_runs(runs("lawnmower", {"0,,,40,100", "1,80,200,,"}), "runs.csv");
   ASSERT_EQ(rows.size(), 1U);

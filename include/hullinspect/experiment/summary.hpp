@@ -32,6 +32,9 @@ struct SummaryRow {
   /// The mean lower bound over only the missions that reached T_c (T_m), 0 when none has both:
   /// the ratio "(×r)" pairs each mean with the bound of the same missions.
   double t_c_bound = 0, t_m_bound = 0;
+  /// The mean T_c (T_m) of those same missions, which "(×r)" divides; 0: the mean over every
+  /// mission that reached it (every one of them has a bound).
+  double t_c_paired = 0, t_m_paired = 0;
   /// Sorties (docs/model.md, "Batteries and sorties"), from the runs that flew any (launch sites):
   /// per UAV the mean sorties and flight seconds, the smallest battery margin flown (seconds left
   /// while airborne, over every UAV of every run; unset with unlimited flight) and the crashes.
