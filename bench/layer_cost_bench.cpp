@@ -35,6 +35,7 @@
 #include "hullinspect/planners/partition_cache.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/scenario.hpp"
+#include "paper_grid_mission.hpp"
 
 #include "bench_support.hpp"
 
@@ -107,19 +108,12 @@ struct Flown {
 planners::MissionSpec mission(const std::string& algorithm, const Options& o, bool physical,
                               const char* scenario, int s2, int n, int seed,
                               const world::HullMask& hull) {
-  planners::MissionSpec spec;
-  spec.algorithm = algorithm;
-  if (algorithm == "part-tsp" || algorithm == "part-tsp0")
-    spec.planner_options = {{"r1", "2"}, {"r2", "0"}};
-  spec.params.uavs = n;
-  spec.params.s2 = s2;
+  planners::MissionSpec spec = bench::paper_grid_mission(algorithm, scenario, s2, n, seed, hull);
   if (physical) {
     spec.params.launch_sites = {{115, 0}};
     spec.params.endurance_s = o.endurance;
     spec.params.separation = o.separation;
   }
-  spec.corrosion = world::scenario(scenario).corrosion(hull.width());
-  spec.seed = static_cast<std::uint64_t>(seed);
   return spec;
 }
 

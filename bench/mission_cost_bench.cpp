@@ -22,6 +22,7 @@
 #include "hullinspect/planners/partition_cache.hpp"
 #include "hullinspect/world/hull.hpp"
 #include "hullinspect/world/scenario.hpp"
+#include "paper_grid_mission.hpp"
 
 #include "bench_support.hpp"
 
@@ -84,14 +85,7 @@ Cost measure(const std::string& algorithm, const Options& o, const world::HullMa
     for (const int s2 : {7, 9, 11}) {
       for (const int n : o.uavs) {
         for (int seed = 1; seed <= o.seeds; ++seed) {
-          planners::MissionSpec spec;
-          spec.algorithm = algorithm;
-          if (algorithm == "part-tsp" || algorithm == "part-tsp0")
-            spec.planner_options = {{"r1", "2"}, {"r2", "0"}};
-          spec.params.uavs = n;
-          spec.params.s2 = s2;
-          spec.corrosion = world::scenario(scenario).corrosion(hull.width());
-          spec.seed = static_cast<std::uint64_t>(seed);
+          const auto spec = bench::paper_grid_mission(algorithm, scenario, s2, n, seed, hull);
           const double start = thread_cpu_seconds();
           const sim::MissionResult r = planners::run_mission(spec, hull, options);
           cost.seconds.push_back(thread_cpu_seconds() - start);
